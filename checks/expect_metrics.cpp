@@ -1,0 +1,160 @@
+// Runs one test program headless and checks its metrics against stated
+// bounds, so every CTest scene check reads as a physical claim:
+//
+//   expect_metrics [--status N] [--stdout-contains TEXT] NAME<OP>VALUE ... -- PROGRAM ARGS...
+//
+// OP is one of < <= > >= ==. The program gets "--metrics-json FILE" appended
+// and must exit with status 0, or with the --status given (then
+// the check is that the program failed with exactly that status; for status
+// 2, a refused option, it also checks that no metrics file was written).
+// Every measured value is printed beside its bound.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Metrics.h"
+
+namespace {
+
+struct Expectation {
+  std::string name, op;
+  double bound;
+};
+
+bool parseExpectation(const std::string& text, Expectation& e) {
+  static const char* ops[] = {"<=", ">=", "==", "<", ">"};
+  for (const char* op : ops) {
+    const auto at = text.find(op);
+    if (at == std::string::npos || at == 0) continue;
+    e.name = text.substr(0, at);
+    e.op = op;
+    char* end = nullptr;
+    const std::string value = text.substr(at + std::string(op).size());
+    e.bound = std::strtod(value.c_str(), &end);
+    return end && *end == '\0' && !value.empty();
+  }
+  return false;
+}
+
+bool holds(double v, const Expectation& e) {
+  if (e.op == "<") return v < e.bound;
+  if (e.op == "<=") return v <= e.bound;
+  if (e.op == ">") return v > e.bound;
+  if (e.op == ">=") return v >= e.bound;
+  return v == e.bound;
+}
+
+int runProgram(const std::vector<std::string>& args, std::string& output) {
+  int pipeFds[2];
+  if (pipe(pipeFds) != 0) return -1;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(pipeFds[1], STDOUT_FILENO);
+    close(pipeFds[0]);
+    close(pipeFds[1]);
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    std::perror(argv[0]);
+    _exit(127);
+  }
+  close(pipeFds[1]);
+  char buffer[4096];
+  ssize_t n;
+  while ((n = read(pipeFds[0], buffer, sizeof buffer)) > 0) {
+    output.append(buffer, static_cast<size_t>(n));
+    std::cout.write(buffer, n);
+  }
+  close(pipeFds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<Expectation> expectations;
+  std::vector<std::string> program;
+  std::vector<std::string> mustContain;
+  int expectedStatus = 0;
+  int i = 1;
+  for (; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--") break;
+    if (arg == "--status" && i + 1 < argc) {
+      expectedStatus = std::atoi(argv[++i]);
+    } else if (arg == "--stdout-contains" && i + 1 < argc) {
+      mustContain.emplace_back(argv[++i]);
+    } else {
+      Expectation e;
+      if (!parseExpectation(arg, e)) {
+        std::cerr << "expect_metrics: cannot read expectation '" << arg << "'\n";
+        return 2;
+      }
+      expectations.push_back(e);
+    }
+  }
+  for (++i; i < argc; ++i) program.emplace_back(argv[i]);
+  if (program.empty()) {
+    std::cerr << "expect_metrics: no program after --\n";
+    return 2;
+  }
+
+  const std::string json = "expect_metrics_" + std::to_string(getpid()) + ".json";
+  std::remove(json.c_str());
+  program.push_back("--metrics-json");
+  program.push_back(json);
+  std::string output;
+  const int status = runProgram(program, output);
+  bool ok = true;
+  if (status != expectedStatus) {
+    std::cout << "FAIL: exit status " << status << ", expected " << expectedStatus << '\n';
+    ok = false;
+  }
+  for (const auto& text : mustContain)
+    if (output.find(text) == std::string::npos) {
+      std::cout << "FAIL: output lacks '" << text << "'\n";
+      ok = false;
+    }
+  std::ifstream in(json);
+  if (expectedStatus == 2) {
+    // A usage error must leave nothing behind.
+    if (in) {
+      std::cout << "FAIL: a metrics file was written although the options were refused\n";
+      ok = false;
+    }
+  } else if (!in) {
+    if (!expectations.empty()) {
+      std::cout << "FAIL: no metrics file written\n";
+      ok = false;
+    }
+  } else {
+    std::stringstream text;
+    text << in.rdbuf();
+    try {
+      const odelab::Metrics metrics = odelab::parseMetricsJson(text.str());
+      for (const auto& e : expectations) {
+        const double v = metrics.get(e.name);
+        const bool pass = metrics.has(e.name) && holds(v, e);
+        std::cout << (pass ? "ok:   " : "FAIL: ") << e.name << " = " << v << " (expected " << e.op << ' ' << e.bound
+                  << ")\n";
+        ok = ok && pass;
+      }
+    } catch (const std::exception& error) {
+      std::cout << "FAIL: " << error.what() << '\n';
+      ok = false;
+    }
+  }
+  std::remove(json.c_str());
+  return ok ? 0 : 1;
+}

@@ -1,0 +1,153 @@
+// test0 - Box & Sphere (thesis 5.1): boxes and spheres of random size dropped
+// onto a static platform. Shows auto-disable (disabled bodies draw grey) and
+// its side effect: a disabled body whose support expires can hang in the air.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "AbstractWindow.h"
+#include "Box.h"
+#include "CommandLine.h"
+#include "Sphere.h"
+#include "TestMain.h"
+
+namespace {
+
+using namespace odelab;
+
+constexpr double SPAWN_HEIGHT = 10.0;
+constexpr double DENSITY = 500.0;          // kg/m^3, about that of wood (proposed)
+constexpr double LIFETIME_SECONDS = 30.0;  // (proposed)
+constexpr double BOUNDARY_XZ = 50.0;       // (proposed) |x| or |z| beyond this is removed
+constexpr double BOUNDARY_Y = -20.0;       // (proposed) below this is removed
+constexpr double PLATFORM_HALF = 5.0;
+constexpr double REST_SPEED = 0.05;        // m/s: below this a body counts as at rest
+
+class BoxAndSphere : public AbstractWindow {
+ public:
+  BoxAndSphere() : AbstractWindow("test0 - Box & Sphere", WorldSettings{}) {
+    bindKey(SDLK_b, "B", "spawn a box of random size at [0, 10, 0]", [this](int) { spawn(true); });
+    bindKey(SDLK_n, "N", "spawn a sphere of random size at [0, 10, 0]", [this](int) { spawn(false); });
+  }
+
+  void addOptions(CLI::App& app) override {
+    app.add_option("--spawn-interval", spawnInterval_,
+                   "spawn a box, then a sphere, ... every S simulated seconds (default: 1 headless, off in the window)")
+        ->check(cli::positive(1e6));
+    app.add_option("--spawn-count", spawnLimit_, "stop spawning after N objects (0 = no limit)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    app.add_option("--spawn-shapes", spawnShapes_,
+                   "what timed spawning drops: both (alternately), box or sphere. Spheres have no rolling "
+                   "resistance in ODE and may roll off the platform")
+        ->check(CLI::IsMember({"both", "box", "sphere"}))
+        ->capture_default_str();
+  }
+
+ protected:
+  void configureWorld() override { dWorldSetAutoDisableFlag(world(), 1); }
+
+  void buildScene() override {
+    Box& platform = add<Box>(world(), space(), 2 * PLATFORM_HALF, 0.2, 2 * PLATFORM_HALF, 1.0);
+    platform.setAsFixedGeom();
+    platform.setPosition(0.0, -0.1, 0.0);
+    platform.color = Color{0.45f, 0.5f, 0.55f};
+    platform_ = &platform;
+    bornAt_.clear();
+    spawned_ = removed_ = 0;
+    nextSpawn_ = 0.0;
+  }
+
+  void afterStep() override {
+    const double interval = spawnInterval();
+    if (interval > 0 && (spawnLimit_ == 0 || spawned_ < spawnLimit_) && simulatedTime() >= nextSpawn_) {
+      spawn(spawnShapes_ == "box" || (spawnShapes_ == "both" && spawned_ % 2 == 0));
+      nextSpawn_ += interval;
+    }
+    removeExpired();
+  }
+
+  void addHudLines(std::vector<std::string>& lines) const override {
+    std::ostringstream s;
+    s << "spawned " << spawned_ << "   removed " << removed_ << " (lifetime " << LIFETIME_SECONDS
+      << " s, or outside the boundary)   B box, N sphere";
+    lines.push_back(s.str());
+  }
+
+  void addMetrics(Metrics& m) const override {
+    m.set("spawned", spawned_);
+    m.set("removed_bodies", removed_);
+    int resting = 0;
+    double maxSpeed = 0.0;
+    for (const auto& object : objects()) {
+      if (object->isFixed()) continue;
+      const dReal* v = dBodyGetLinearVel(object->getBody());
+      const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      maxSpeed = std::max(maxSpeed, speed);
+      const dReal* p = object->getPosition();
+      const bool abovePlatform = std::fabs(p[0]) < PLATFORM_HALF && std::fabs(p[2]) < PLATFORM_HALF && p[1] > 0.0;
+      if (abovePlatform && speed < REST_SPEED) ++resting;
+    }
+    m.set("bodies_resting_on_platform", resting);
+    m.set("max_speed", maxSpeed);
+  }
+
+ private:
+  double spawnInterval() const {
+    if (spawnInterval_ > 0) return spawnInterval_;
+    return options().headless ? 1.0 : 0.0;
+  }
+
+  double uniform(double low, double high) { return std::uniform_real_distribution<double>(low, high)(random()); }
+
+  void spawn(bool box) {
+    AbstractObject* object;
+    if (box) {
+      const double w = uniform(0.2, 1.0), h = uniform(0.2, 1.0), d = uniform(0.2, 1.0);
+      object = &add<Box>(world(), space(), w, h, d, DENSITY * w * h * d);
+    } else {
+      const double r = uniform(0.1, 0.5);
+      object = &add<Sphere>(world(), space(), r, DENSITY * 4.0 / 3.0 * M_PI * r * r * r);
+    }
+    object->setPosition(0.0, SPAWN_HEIGHT, 0.0);
+    dMatrix3 rotation;
+    dRFromAxisAndAngle(rotation, uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(0, M_PI));
+    dBodySetRotation(object->getBody(), rotation);
+    object->color = Color{static_cast<float>(uniform(0.3, 1.0)), static_cast<float>(uniform(0.3, 1.0)),
+                          static_cast<float>(uniform(0.3, 1.0))};
+    bornAt_[object] = simulatedTime();
+    ++spawned_;
+  }
+
+  void removeExpired() {
+    const double now = simulatedTime();
+    removeIf([&](const AbstractObject& object) {
+      auto born = bornAt_.find(&object);
+      if (born == bornAt_.end()) return false;  // the platform
+      const dReal* p = object.getPosition();
+      const bool outside = std::fabs(p[0]) > BOUNDARY_XZ || std::fabs(p[2]) > BOUNDARY_XZ || p[1] < BOUNDARY_Y;
+      if (!outside && now - born->second < LIFETIME_SECONDS) return false;
+      bornAt_.erase(born);
+      ++removed_;
+      return true;
+    });
+  }
+
+  Box* platform_ = nullptr;
+  std::map<const AbstractObject*, double> bornAt_;
+  int spawned_ = 0;
+  int removed_ = 0;
+  double nextSpawn_ = 0.0;
+  double spawnInterval_ = 0.0;
+  int spawnLimit_ = 0;
+  std::string spawnShapes_ = "both";
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return odelab::runTest<BoxAndSphere>(argc, argv,
+                                       "Boxes and spheres of random size fall onto a platform; auto-disable on.");
+}

@@ -1,0 +1,396 @@
+#include "AbstractWindow.h"
+
+#include <ode/version.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "ExitCodes.h"
+#include "OdeMessages.h"
+
+namespace odelab {
+
+namespace {
+
+// The thesis asks dCollide for at least 8 contacts per pair; box-box pairs
+// can produce more, so allow a few extra.
+constexpr int MAX_CONTACTS = 16;
+constexpr double NOTICE_SECONDS = 4.0;
+
+std::string formatValue(double value) {
+  std::ostringstream out;
+  out << std::setprecision(6) << value;
+  return out.str();
+}
+
+}  // namespace
+
+const char* spaceKindName(SpaceKind kind) {
+  switch (kind) {
+    case SpaceKind::Simple: return "simple";
+    case SpaceKind::Hash: return "hash";
+    case SpaceKind::SweepAndPrune: return "sap";
+    case SpaceKind::QuadTree: return "quadtree";
+  }
+  return "?";
+}
+
+bool parseSpaceKind(const std::string& text, SpaceKind& kind) {
+  for (SpaceKind candidate : {SpaceKind::Simple, SpaceKind::Hash, SpaceKind::SweepAndPrune, SpaceKind::QuadTree})
+    if (text == spaceKindName(candidate)) {
+      kind = candidate;
+      return true;
+    }
+  return false;
+}
+
+AbstractWindow::AbstractWindow(std::string title, WorldSettings defaults)
+    : title_(std::move(title)), settings_(defaults) {
+  bindSharedKeys();
+}
+
+AbstractWindow::~AbstractWindow() { destroyWorld(); }
+
+void AbstractWindow::addOptions(CLI::App& app) { (void)app; }
+
+void AbstractWindow::initialize(const RunOptions& options) {
+  options_ = options;
+  initialCamera(camera_);
+  createWorld();
+}
+
+void AbstractWindow::reset() {
+  destroyWorld();
+  createWorld();
+}
+
+void AbstractWindow::shutdown() { destroyWorld(); }
+
+void AbstractWindow::createWorld() {
+  // Everything random in a run derives from --seed, so a run is reproducible.
+  random_.seed(options_.seed);
+  dRandSetSeed(options_.seed);
+  world_ = dWorldCreate();
+  contactGroup_ = dJointGroupCreate(0);
+  space_ = nullptr;
+  setSpaceKind(spaceKind_);
+  settings_.applyTo(world_);
+  simulatedTime_ = 0.0;
+  steps_ = 0;
+  contactsLastStep_ = 0;
+  wallSeconds_ = 0.0;
+  blowUpReason_.clear();
+  clock_.reset();
+  configureWorld();
+  buildScene();
+}
+
+void AbstractWindow::destroyWorld() {
+  objects_.clear();
+  if (contactGroup_) dJointGroupDestroy(contactGroup_);
+  if (space_) dSpaceDestroy(space_);
+  if (world_) dWorldDestroy(world_);
+  contactGroup_ = nullptr;
+  space_ = nullptr;
+  world_ = nullptr;
+}
+
+void AbstractWindow::setSpaceKind(SpaceKind kind) {
+  dSpaceID next = nullptr;
+  switch (kind) {
+    case SpaceKind::Simple: next = dSimpleSpaceCreate(nullptr); break;
+    case SpaceKind::Hash: next = dHashSpaceCreate(nullptr); break;
+    case SpaceKind::SweepAndPrune: next = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XZY); break;
+    case SpaceKind::QuadTree: {
+      // Centred on the scene, covering its bounds; y is up so the tree splits x and z.
+      const SceneBounds b = bounds();
+      const dVector3 centre{b.centre[0], b.centre[1], b.centre[2], 0};
+      const dVector3 extents{4 * b.radius, 4 * b.radius, 4 * b.radius, 0};
+      next = dQuadTreeSpaceCreate(nullptr, centre, extents, 6);
+      break;
+    }
+  }
+  // Space cleanup is off: geoms belong to their objects, not to the space.
+  dSpaceSetCleanup(next, 0);
+  if (space_) {
+    while (dSpaceGetNumGeoms(space_) > 0) {
+      dGeomID geom = dSpaceGetGeom(space_, 0);
+      dSpaceRemove(space_, geom);
+      dSpaceAdd(next, geom);
+    }
+    dSpaceDestroy(space_);
+  }
+  space_ = next;
+  spaceKind_ = kind;
+}
+
+void AbstractWindow::nearCallback(void* data, dGeomID o1, dGeomID o2) {
+  auto* self = static_cast<AbstractWindow*>(data);
+  const dBodyID b1 = dGeomGetBody(o1);
+  const dBodyID b2 = dGeomGetBody(o2);
+  // Static against static, parts of one composite body, and bodies already
+  // joined by a non-contact joint never collide.
+  if (!b1 && !b2) return;
+  if (b1 == b2) return;
+  if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;
+
+  dContact contact[MAX_CONTACTS];
+  const int count = dCollide(o1, o2, MAX_CONTACTS, &contact[0].geom, sizeof(dContact));
+  if (count <= 0) return;
+  dSurfaceParameters surface{};
+  self->setContactSurface(o1, o2, surface);
+  for (int i = 0; i < count; ++i) {
+    contact[i].surface = surface;
+    dJointID joint = dJointCreateContact(self->world_, self->contactGroup_, &contact[i]);
+    dJointAttach(joint, b1, b2);
+  }
+  self->contactsThisStep_ += count;
+}
+
+void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) {
+  surface.mode = 0;
+  surface.mu = dInfinity;
+}
+
+bool AbstractWindow::stepOnce() {
+  const auto start = std::chrono::steady_clock::now();
+  contactsThisStep_ = 0;
+  dSpaceCollide(space_, this, &AbstractWindow::nearCallback);
+  if (settings_.solver == Solver::QuickStep)
+    dWorldQuickStep(world_, settings_.step);
+  else
+    dWorldStep(world_, settings_.step);
+  dJointGroupEmpty(contactGroup_);
+  contactsLastStep_ = contactsThisStep_;
+  simulatedTime_ += settings_.step;
+  ++steps_;
+  lastStepWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  afterStep();
+  if (!stateIsFinite()) {
+    std::ostringstream reason;
+    reason << "simulation blew up: non-finite body state at t=" << formatValue(simulatedTime_) << " s (step "
+           << formatValue(settings_.step) << ", ERP " << formatValue(settings_.erp) << ", CFM "
+           << formatValue(settings_.cfm) << ", solver " << solverName(settings_.solver) << ", "
+           << settings_.iterations << " iterations)";
+    blowUpReason_ = reason.str();
+    return false;
+  }
+  return true;
+}
+
+bool AbstractWindow::stateIsFinite() const {
+  for (const auto& object : objects_) {
+    const dBodyID body = object->getBody();
+    if (!body) continue;
+    const dReal* vectors[] = {dBodyGetPosition(body), dBodyGetLinearVel(body), dBodyGetAngularVel(body)};
+    for (const dReal* v : vectors)
+      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return false;
+  }
+  return true;
+}
+
+void AbstractWindow::advanceFrame(double elapsedSeconds) {
+  wallSeconds_ += elapsedSeconds;
+  const int stepsNow = clock_.advance(elapsedSeconds, settings_.step);
+  const double simBefore = simulatedTime_;
+  for (int i = 0; i < stepsNow; ++i) {
+    if (!stepOnce()) {
+      const std::string reason = blowUpReason_;
+      reset();
+      notify(reason + "; scene reset");
+      return;
+    }
+  }
+  // Real-time factor over roughly the last second of frames.
+  rateWindowReal_ += elapsedSeconds;
+  rateWindowSim_ += simulatedTime_ - simBefore;
+  if (rateWindowReal_ >= 1.0) {
+    realTimeFactor_ = rateWindowSim_ / rateWindowReal_;
+    rateWindowReal_ = rateWindowSim_ = 0.0;
+  }
+  if (options_.seconds > 0 && simulatedTime_ >= options_.seconds) quitRequested_ = true;
+}
+
+int AbstractWindow::runHeadless() {
+  const double seconds = options_.seconds > 0 ? options_.seconds : defaultHeadlessSeconds();
+  const long long total = std::llround(seconds / settings_.step);
+  const auto start = std::chrono::steady_clock::now();
+  bool finite = true;
+  while (steps_ < total && finite) finite = stepOnce();
+  wallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  realTimeFactor_ = wallSeconds_ > 0 ? simulatedTime_ / wallSeconds_ : 0.0;
+
+  const Metrics result = metrics();
+  std::cout << title_ << ": " << formatValue(simulatedTime_) << " simulated seconds\n";
+  result.print(std::cout);
+  if (!options_.metricsJson.empty()) result.writeJsonAtomically(options_.metricsJson);
+  if (!finite) {
+    std::cerr << "error: " << blowUpReason_ << '\n';
+    return exit_code::BLEW_UP;
+  }
+  return exit_code::OK;
+}
+
+int AbstractWindow::bodyCount() const {
+  int count = 0;
+  for (const auto& object : objects_)
+    if (object->getBody() && !object->isFixed()) ++count;
+  return count;
+}
+
+int AbstractWindow::disabledBodyCount() const {
+  int count = 0;
+  for (const auto& object : objects_)
+    if (object->getBody() && !object->isEnabled()) ++count;
+  return count;
+}
+
+Metrics AbstractWindow::metrics() const {
+  Metrics m;
+  m.set("steps", static_cast<double>(steps_));
+  m.set("sim_seconds", simulatedTime_);
+  m.set("wall_seconds", wallSeconds_);
+  m.set("real_time_factor", realTimeFactor_);
+  m.set("bodies", bodyCount());
+  m.set("disabled_bodies", disabledBodyCount());
+  m.set("contacts", contactsLastStep_);
+  m.set("non_finite", blowUpReason_.empty() ? 0 : 1);
+  addMetrics(m);
+  return m;
+}
+
+std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescription() const {
+  return {
+      {"test", title_},
+      {"ode_version", dODE_VERSION},
+      {"ode_precision", dCheckConfiguration("ODE_double_precision") ? "double" : "single"},
+      {"step_seconds", formatValue(settings_.step)},
+      {"erp", formatValue(settings_.erp)},
+      {"cfm", formatValue(settings_.cfm)},
+      {"solver", solverName(settings_.solver) == std::string("quick") ? "quick (dWorldQuickStep)"
+                                                                       : "step (dWorldStep)"},
+      {"iterations", std::to_string(settings_.iterations)},
+      {"sor_w", formatValue(settings_.sor)},
+      {"gravity", formatValue(settings_.gravity)},
+      {"space", spaceKindName(spaceKind_)},
+      {"seed", std::to_string(options_.seed)},
+  };
+}
+
+void AbstractWindow::applySettings(const std::string& change) {
+  settings_.applyTo(world_);
+  std::ostringstream line;
+  line << "t=" << formatValue(simulatedTime_) << " s: " << change;
+  notify(line.str());
+  onSettingChanged(change);
+}
+
+void AbstractWindow::notify(const std::string& message) {
+  std::cerr << message << '\n';
+  notice_ = message;
+  noticeUntil_ = wallSeconds_ + NOTICE_SECONDS;
+}
+
+void AbstractWindow::initialCamera(Camera& camera) const { camera.lookAt({0, 6, 16}, {0, 1, 0}); }
+
+void AbstractWindow::bindKey(SDL_Keycode key, std::string keyName, std::string description,
+                             std::function<void(int)> action) {
+  // A scene binding replaces a shared one on the same key.
+  keyBindings_.erase(std::remove_if(keyBindings_.begin(), keyBindings_.end(),
+                                    [key](const KeyBinding& b) { return b.key == key; }),
+                     keyBindings_.end());
+  keyBindings_.push_back({key, std::move(keyName), std::move(description), std::move(action)});
+}
+
+bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
+  for (const auto& binding : keyBindings_)
+    if (binding.key == key) {
+      binding.action(shift ? -1 : +1);
+      return true;
+    }
+  return false;
+}
+
+void AbstractWindow::stepSetting(const char* what, const std::function<void()>& change) {
+  const WorldSettings before = settings_;
+  change();
+  std::ostringstream text;
+  auto describe = [&](double from, double to) { text << what << ' ' << formatValue(from) << " -> " << formatValue(to); };
+  const std::string name = what;
+  if (name == "ERP") describe(before.erp, settings_.erp);
+  else if (name == "CFM") describe(before.cfm, settings_.cfm);
+  else if (name == "iterations") describe(before.iterations, settings_.iterations);
+  else if (name == "SOR w") describe(before.sor, settings_.sor);
+  else if (name == "step") describe(before.step, settings_.step);
+  else if (name == "solver") text << "solver " << solverName(before.solver) << " -> " << solverName(settings_.solver);
+  applySettings(text.str());
+}
+
+void AbstractWindow::bindSharedKeys() {
+  bindKey(SDLK_ESCAPE, "Esc", "quit", [this](int) { quitRequested_ = true; });
+  bindKey(SDLK_r, "R", "reset the scene to its initial state", [this](int) {
+    reset();
+    notify("scene reset");
+  });
+  bindKey(SDLK_F1, "F1", "HUD on / off", [this](int) { hudVisible_ = !hudVisible_; });
+  bindKey(SDLK_F2, "F2", "choose the increment used by F3 / F4 (1e-6 ... 0.1)", [this](int d) {
+    stepper_.cycleIncrement(d);
+    notify("F2 increment " + formatValue(stepper_.increment()));
+  });
+  bindKey(SDLK_F3, "F3", "ERP up by the increment (Shift: down), within [0, 1]",
+          [this](int d) { stepSetting("ERP", [&] { stepper_.stepErp(settings_, d); }); });
+  bindKey(SDLK_F4, "F4", "CFM up by the increment (Shift: down), within [0, 1]",
+          [this](int d) { stepSetting("CFM", [&] { stepper_.stepCfm(settings_, d); }); });
+  bindKey(SDLK_F6, "F6", "QuickStep iterations up (Shift: down): 1, 2, 3, 5, 8, 10, 15, 20, 30, 50 ... 1000",
+          [this](int d) { stepSetting("iterations", [&] { ParameterStepper::stepIterations(settings_, d); }); });
+  bindKey(SDLK_F7, "F7", "SOR relaxation w up by 0.05 (Shift: down), within [0.05, 1.95]",
+          [this](int d) { stepSetting("SOR w", [&] { ParameterStepper::stepSor(settings_, d); }); });
+  bindKey(SDLK_F8, "F8", "step size up (Shift: down): 1e-5, 2e-5, 5e-5 ... 0.1 s",
+          [this](int d) { stepSetting("step", [&] { ParameterStepper::stepStepSize(settings_, d); }); });
+  bindKey(SDLK_F9, "F9", "switch solver: dWorldQuickStep / dWorldStep", [this](int) {
+    stepSetting("solver", [&] {
+      settings_.solver = settings_.solver == Solver::QuickStep ? Solver::WorldStep : Solver::QuickStep;
+    });
+  });
+}
+
+void AbstractWindow::remove(const AbstractObject* object) {
+  removeIf([object](const AbstractObject& o) { return &o == object; });
+}
+
+void AbstractWindow::removeIf(const std::function<bool(const AbstractObject&)>& predicate) {
+  objects_.erase(std::remove_if(objects_.begin(), objects_.end(),
+                                [&](const std::unique_ptr<AbstractObject>& o) { return predicate(*o); }),
+                 objects_.end());
+}
+
+std::vector<std::string> AbstractWindow::hudLines() const {
+  std::vector<std::string> lines;
+  std::ostringstream s;
+  s << title_;
+  lines.push_back(s.str());
+  s.str("");
+  s << "ERP " << formatValue(settings_.erp) << "   CFM " << formatValue(settings_.cfm) << "   step "
+    << formatValue(settings_.step) << " s   F2 increment " << formatValue(stepper_.increment());
+  lines.push_back(s.str());
+  s.str("");
+  s << "solver " << (settings_.solver == Solver::QuickStep ? "dWorldQuickStep" : "dWorldStep") << "   iterations "
+    << settings_.iterations << "   SOR w " << formatValue(settings_.sor) << "   space " << spaceKindName(spaceKind_);
+  lines.push_back(s.str());
+  s.str("");
+  s << std::fixed << std::setprecision(0) << "FPS " << framesPerSecond_ << std::setprecision(2) << "   sim "
+    << simulatedTime_ << " s   real-time x" << realTimeFactor_;
+  lines.push_back(s.str());
+  s.str("");
+  s << "bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << contactsLastStep_;
+  lines.push_back(s.str());
+  addHudLines(lines);
+  if (!notice_.empty() && wallSeconds_ < noticeUntil_) lines.push_back(notice_);
+  for (const auto& message : OdeMessages::recent()) lines.push_back(message);
+  return lines;
+}
+
+}  // namespace odelab

@@ -1,0 +1,133 @@
+#include "CommandLine.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace odelab::cli {
+
+namespace {
+
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+bool isWritableDirectory(const std::string& path) {
+  struct stat info {};
+  return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode) && access(path.c_str(), W_OK) == 0;
+}
+
+std::string directoryOf(const std::string& file) {
+  const auto slash = file.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : file.substr(0, slash);
+}
+
+void requireWritableFolderOf(const char* option, const std::string& file) {
+  if (file.empty()) return;
+  const std::string folder = directoryOf(file);
+  if (!isWritableDirectory(folder))
+    throw UsageError(std::string(option) + ": cannot write '" + file + "': folder '" + folder +
+                     "' does not exist or is not writable");
+}
+
+}  // namespace
+
+CLI::Validator finiteRange(double min, double max) {
+  const std::string range = "[" + formatNumber(min) + ", " + formatNumber(max) + "]";
+  return CLI::Validator(
+      [min, max, range](std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+        if (!std::isfinite(value)) return "'" + text + "' is not a finite number";
+        if (value < min || value > max) return "'" + text + "' is outside " + range;
+        return {};
+      },
+      "in " + range);
+}
+
+CLI::Validator positive(double max) {
+  return CLI::Validator(
+      [max](std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+        if (!std::isfinite(value)) return "'" + text + "' is not a finite number";
+        if (value <= 0 || value > max) return "'" + text + "' must be above 0 and at most " + formatNumber(max);
+        return {};
+      },
+      "> 0");
+}
+
+void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& settings) {
+  app.add_flag("--headless", options.headless, "run with no window and no GL calls; print metrics and exit");
+  app.add_option("--seconds", options.seconds,
+                 "simulated seconds to run (headless default: the scene's; window: quit after, default never)")
+      ->check(positive(1e7));
+  app.add_option("--step", settings.step, "simulation step size in seconds")
+      ->check(finiteRange(ranges::STEP.min, ranges::STEP.max))
+      ->capture_default_str();
+  app.add_option("--erp", settings.erp, "global error reduction parameter")
+      ->check(finiteRange(ranges::ERP.min, ranges::ERP.max))
+      ->capture_default_str();
+  app.add_option("--cfm", settings.cfm, "global constraint force mixing")
+      ->check(finiteRange(ranges::CFM.min, ranges::CFM.max))
+      ->capture_default_str();
+  app.add_option("--iterations", settings.iterations, "QuickStep iterations")
+      ->check(CLI::Range(static_cast<int>(ranges::ITERATIONS.min), static_cast<int>(ranges::ITERATIONS.max)))
+      ->capture_default_str();
+  app.add_option("--sor", settings.sor, "QuickStep SOR over-relaxation w")
+      ->check(finiteRange(ranges::SOR.min, ranges::SOR.max))
+      ->capture_default_str();
+  app.add_option_function<std::string>(
+         "--solver",
+         [&settings](const std::string& value) {
+           settings.solver = value == "step" ? Solver::WorldStep : Solver::QuickStep;
+         },
+         "quick (dWorldQuickStep) or step (dWorldStep)")
+      ->check(CLI::IsMember({"quick", "step"}))
+      ->default_str(solverName(settings.solver));
+  app.add_option("--seed", options.seed, "seed for every random choice of the scene and for ODE's dRandSetSeed")
+      ->capture_default_str();
+  app.add_option("--out-dir", options.outDir, "folder for output files such as Test2_output.txt")
+      ->capture_default_str();
+  app.add_option("--metrics-json", options.metricsJson,
+                 "write the metrics as a flat JSON object to FILE (atomically: FILE.tmp, then renamed)");
+  app.add_option("--screenshot", options.screenshot, "window: render --frames frames, save a PNG to FILE, exit");
+  app.add_option("--frames", options.frames, "frames to render before --screenshot")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  app.add_option("--shader-dir", options.shaderDir, "folder holding the GLSL shaders (see doc/manual.md)");
+  app.add_option("--font", options.fontPath, "TTF font for the HUD (see doc/manual.md)");
+  app.add_option("--width", options.width, "window width in pixels")->check(CLI::Range(64, 16384))->capture_default_str();
+  app.add_option("--height", options.height, "window height in pixels")
+      ->check(CLI::Range(64, 16384))
+      ->capture_default_str();
+}
+
+void validateRunOptions(const RunOptions& options) {
+  if (!isWritableDirectory(options.outDir))
+    throw UsageError("--out-dir: '" + options.outDir + "' does not exist or is not a writable folder");
+  requireWritableFolderOf("--metrics-json", options.metricsJson);
+  requireWritableFolderOf("--screenshot", options.screenshot);
+  if (options.headless && !options.screenshot.empty())
+    throw UsageError("--screenshot: needs a window; it cannot be combined with --headless");
+}
+
+std::string keysHelp(const AbstractWindow& scene) {
+  std::ostringstream out;
+  out << "Keys (in the window; Shift reverses every F-key):\n"
+      << "  left mouse   toggle camera mouse-look (cursor hidden, mouse turns the view)\n"
+      << "  W/S/A/D      move the camera forward / back / left / right along the view\n";
+  for (const auto& binding : scene.keyBindings()) {
+    std::string name = binding.keyName;
+    name.resize(std::max<size_t>(name.size(), 12), ' ');
+    out << "  " << name << ' ' << binding.description << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace odelab::cli

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <stdexcept>
+#include <string>
+
+#include "AbstractWindow.h"
+
+namespace odelab {
+
+// A bad option value found after parsing (e.g. an unwritable --out-dir).
+// Like CLI11's own errors it ends the run with exit_code::USAGE before
+// anything is written.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+namespace cli {
+
+// Accepts finite numbers within [min, max]; rejects NaN, inf and text, with
+// a message that names the allowed range. (CLI::Range lets NaN through.)
+CLI::Validator finiteRange(double min, double max);
+// Finite and strictly above zero, at most `max`.
+CLI::Validator positive(double max = 1e12);
+
+// Adds --headless, --seconds, --step, --erp, --cfm, --iterations, --sor,
+// --solver, --seed, --out-dir, --metrics-json, --screenshot, --frames,
+// --shader-dir, --font, --width, --height.
+void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& settings);
+
+// Checks that need the file system: --out-dir is a writable directory, the
+// folders of --metrics-json and --screenshot exist and are writable, and the
+// window-only options are not combined with --headless. Throws UsageError.
+void validateRunOptions(const RunOptions& options);
+
+// "Keys:" section for --help, from the scene's key table plus the camera keys.
+std::string keysHelp(const AbstractWindow& scene);
+
+}  // namespace cli
+}  // namespace odelab

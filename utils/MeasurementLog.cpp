@@ -1,0 +1,55 @@
+#include "MeasurementLog.h"
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace odelab {
+
+MeasurementLog::~MeasurementLog() { close(); }
+
+void MeasurementLog::open(const std::string& path, const std::string& title,
+                          const std::vector<std::pair<std::string, std::string>>& settings,
+                          const std::vector<std::string>& columns) {
+  close();
+  path_ = path;
+  rows_ = 0;
+  file_ = std::fopen(path.c_str(), "w");
+  if (!file_) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  check(std::fprintf(file_, "# %s\n", title.c_str()));
+  for (const auto& [key, value] : settings) check(std::fprintf(file_, "# %s: %s\n", key.c_str(), value.c_str()));
+  std::string header = "# columns:";
+  for (const auto& column : columns) header += " " + column;
+  check(std::fprintf(file_, "%s\n", header.c_str()));
+  check(std::fflush(file_));
+}
+
+void MeasurementLog::row(const std::vector<double>& values) {
+  if (!file_) return;
+  for (size_t i = 0; i < values.size(); ++i) check(std::fprintf(file_, i ? "\t%.10g" : "%.10g", values[i]));
+  check(std::fputc('\n', file_));
+  check(std::fflush(file_));
+  ++rows_;
+}
+
+void MeasurementLog::comment(double time, const std::string& text) {
+  if (!file_) return;
+  check(std::fprintf(file_, "# t=%.6g s: %s\n", time, text.c_str()));
+  check(std::fflush(file_));
+}
+
+void MeasurementLog::close() {
+  if (file_) std::fclose(file_);
+  file_ = nullptr;
+}
+
+void MeasurementLog::check(int result) {
+  if (result < 0) throw std::runtime_error("cannot write '" + path_ + "': " + std::strerror(errno));
+}
+
+std::string joinPath(const std::string& folder, const std::string& name) {
+  if (folder.empty() || folder == ".") return name;
+  return folder.back() == '/' ? folder + name : folder + "/" + name;
+}
+
+}  // namespace odelab

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace odelab {
+
+// A scene's output file (Test2_output.txt, Test8_output.txt): a header of
+// "# key: value" lines naming every setting in force, a "# columns:" line,
+// then tab-separated rows. Every row and comment is flushed at once, so a
+// crash or kill loses at most the row being written.
+class MeasurementLog {
+ public:
+  MeasurementLog() = default;
+  MeasurementLog(const MeasurementLog&) = delete;
+  MeasurementLog& operator=(const MeasurementLog&) = delete;
+  ~MeasurementLog();
+
+  // Creates or truncates `path` and writes the header. Throws
+  // std::runtime_error naming the path when it cannot be written.
+  void open(const std::string& path, const std::string& title,
+            const std::vector<std::pair<std::string, std::string>>& settings, const std::vector<std::string>& columns);
+  void row(const std::vector<double>& values);
+  // A "# t=<time> s: text" line, e.g. an F-key change.
+  void comment(double time, const std::string& text);
+  void close();
+  bool isOpen() const { return file_ != nullptr; }
+  const std::string& path() const { return path_; }
+  long rows() const { return rows_; }
+
+ private:
+  void check(int result);
+
+  std::FILE* file_ = nullptr;
+  std::string path_;
+  long rows_ = 0;
+};
+
+// Joins a folder and a file name.
+std::string joinPath(const std::string& folder, const std::string& name);
+
+}  // namespace odelab

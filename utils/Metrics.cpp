@@ -1,0 +1,121 @@
+#include "Metrics.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace odelab {
+
+void Metrics::set(const std::string& name, double value) {
+  for (auto& entry : entries_)
+    if (entry.first == name) {
+      entry.second = value;
+      return;
+    }
+  entries_.emplace_back(name, value);
+}
+
+bool Metrics::has(const std::string& name) const {
+  for (const auto& entry : entries_)
+    if (entry.first == name) return true;
+  return false;
+}
+
+double Metrics::get(const std::string& name) const {
+  for (const auto& entry : entries_)
+    if (entry.first == name) return entry.second;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+namespace {
+// JSON has no NaN or infinity; such a metric is written as null.
+std::string formatNumber(double value) {
+  if (!std::isfinite(value)) return "null";
+  std::ostringstream out;
+  out << std::setprecision(10) << value;
+  return out.str();
+}
+}  // namespace
+
+void Metrics::print(std::ostream& out) const {
+  for (const auto& [name, value] : entries_) out << name << " = " << formatNumber(value) << '\n';
+}
+
+std::string Metrics::toJson() const {
+  std::string json = "{";
+  for (size_t i = 0; i < entries_.size(); ++i) {
+    json += (i ? ",\n  \"" : "\n  \"") + entries_[i].first + "\": " + formatNumber(entries_[i].second);
+  }
+  json += "\n}\n";
+  return json;
+}
+
+void Metrics::writeJsonAtomically(const std::string& path) const {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::trunc);
+    out << toJson();
+    out.flush();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw std::runtime_error("cannot write metrics to '" + temporary + "'");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot rename '" + temporary + "' to '" + path + "'");
+  }
+}
+
+Metrics parseMetricsJson(const std::string& text) {
+  Metrics metrics;
+  size_t pos = 0;
+  auto fail = [&](const char* what) {
+    throw std::runtime_error(std::string("metrics JSON: ") + what + " at offset " + std::to_string(pos));
+  };
+  auto skipSpace = [&] {
+    while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+  };
+  skipSpace();
+  if (pos >= text.size() || text[pos] != '{') fail("expected '{'");
+  ++pos;
+  skipSpace();
+  if (pos < text.size() && text[pos] == '}') return metrics;
+  while (true) {
+    skipSpace();
+    if (pos >= text.size() || text[pos] != '"') fail("expected a quoted name");
+    const size_t end = text.find('"', pos + 1);
+    if (end == std::string::npos) fail("unterminated name");
+    const std::string name = text.substr(pos + 1, end - pos - 1);
+    pos = end + 1;
+    skipSpace();
+    if (pos >= text.size() || text[pos] != ':') fail("expected ':'");
+    ++pos;
+    skipSpace();
+    double value;
+    if (text.compare(pos, 4, "null") == 0) {
+      value = std::numeric_limits<double>::quiet_NaN();
+      pos += 4;
+    } else {
+      const char* begin = text.c_str() + pos;
+      char* stop = nullptr;
+      value = std::strtod(begin, &stop);
+      if (stop == begin) fail("expected a number");
+      pos += static_cast<size_t>(stop - begin);
+    }
+    metrics.set(name, value);
+    skipSpace();
+    if (pos < text.size() && text[pos] == ',') {
+      ++pos;
+      continue;
+    }
+    if (pos < text.size() && text[pos] == '}') return metrics;
+    fail("expected ',' or '}'");
+  }
+}
+
+}  // namespace odelab

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace odelab {
+
+// A flat, ordered set of named numbers: what a run measured. Printed as
+// "name = value" lines and written as a flat JSON object of numbers.
+class Metrics {
+ public:
+  void set(const std::string& name, double value);  // replaces an existing entry
+  bool has(const std::string& name) const;
+  double get(const std::string& name) const;  // NaN when absent
+  const std::vector<std::pair<std::string, double>>& entries() const { return entries_; }
+
+  void print(std::ostream& out) const;
+  std::string toJson() const;
+  // Writes to "<path>.tmp" and renames it over `path`, so a reader never sees
+  // a half-written file. Throws std::runtime_error naming the path on failure.
+  void writeJsonAtomically(const std::string& path) const;
+
+ private:
+  std::vector<std::pair<std::string, double>> entries_;
+};
+
+// Parses a flat JSON object of numbers (as written by Metrics::toJson); throws
+// std::runtime_error with the offending position on malformed input.
+Metrics parseMetricsJson(const std::string& text);
+
+}  // namespace odelab

@@ -1,0 +1,74 @@
+#include "TestMain.h"
+
+#include <iostream>
+
+#include "CommandLine.h"
+#include "ExitCodes.h"
+#include "OdeMessages.h"
+#include "render/WindowFrontend.h"
+
+namespace odelab {
+
+namespace {
+
+// dInitODE2 / dCloseODE around everything that touches ODE.
+class OdeLibrary {
+ public:
+  OdeLibrary() {
+    dInitODE2(0);
+    dAllocateODEDataForThread(dAllocateMaskAll);
+    OdeMessages::install();
+  }
+  ~OdeLibrary() { dCloseODE(); }
+};
+
+int run(AbstractWindow& scene, const RunOptions& options) {
+  scene.initialize(options);
+  return options.headless ? scene.runHeadless() : runWindow(scene, options);
+}
+
+}  // namespace
+
+int runScene(AbstractWindow& scene, const char* description, int argc, char** argv) {
+  RunOptions options;
+  CLI::App app{std::string(scene.title()) + "\n" + description};
+  app.get_formatter()->column_width(34);
+  cli::addCommonOptions(app, options, scene.settings());
+  scene.addOptions(app);
+  app.footer(cli::keysHelp(scene));
+  try {
+    app.parse(argc, argv);
+    cli::validateRunOptions(options);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
+    return exit_code::USAGE;
+  } catch (const UsageError& error) {
+    std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
+    return exit_code::USAGE;
+  }
+
+  OdeLibrary ode;
+  if (!dCheckConfiguration("ODE_double_precision")) {
+    std::cerr << "error: this ODE library is not built in double precision\n";
+    return exit_code::RUNTIME_ERROR;
+  }
+  int status = exit_code::OK;
+  try {
+    status = run(scene, options);
+  } catch (const OdeError& error) {
+    std::cerr << "error: " << error.what() << '\n';
+    status = exit_code::ODE_ERROR;
+  } catch (const UsageError& error) {
+    std::cerr << "error: " << error.what() << '\n';
+    status = exit_code::USAGE;
+  } catch (const std::exception& error) {
+    std::cerr << "error: " << error.what() << '\n';
+    status = exit_code::RUNTIME_ERROR;
+  }
+  scene.shutdown();
+  return status;
+}
+
+}  // namespace odelab
