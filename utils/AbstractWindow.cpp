@@ -215,19 +215,26 @@ void AbstractWindow::advanceFrame(double elapsedSeconds) {
 }
 
 int AbstractWindow::runHeadless() {
-  const double seconds = options_.seconds > 0 ? options_.seconds : defaultHeadlessSeconds();
-  const long long total = std::llround(seconds / settings_.step);
-  const auto start = std::chrono::steady_clock::now();
-  bool finite = true;
-  while (steps_ < total && finite) finite = stepOnce();
-  wallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  realTimeFactor_ = wallSeconds_ > 0 ? simulatedTime_ / wallSeconds_ : 0.0;
+  runFor(options_.seconds > 0 ? options_.seconds : defaultHeadlessSeconds());
+  return reportHeadless();
+}
 
+bool AbstractWindow::runFor(double seconds) {
+  const long long total = steps_ + std::llround(seconds / settings_.step);
+  const auto start = std::chrono::steady_clock::now();
+  bool finite = blowUpReason_.empty();
+  while (steps_ < total && finite) finite = stepOnce();
+  wallSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  realTimeFactor_ = wallSeconds_ > 0 ? simulatedTime_ / wallSeconds_ : 0.0;
+  return finite;
+}
+
+int AbstractWindow::reportHeadless() {
   const Metrics result = metrics();
   std::cout << title_ << ": " << formatValue(simulatedTime_) << " simulated seconds\n";
   result.print(std::cout);
   if (!options_.metricsJson.empty()) result.writeJsonAtomically(options_.metricsJson);
-  if (!finite) {
+  if (!blowUpReason_.empty()) {
     std::cerr << "error: " << blowUpReason_ << '\n';
     return exit_code::BLEW_UP;
   }

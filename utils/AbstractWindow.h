@@ -70,6 +70,9 @@ class AbstractWindow {
   // ---- driven by the runner ----------------------------------------------
   // Scene-specific command-line options; called before parsing.
   virtual void addOptions(CLI::App& app);
+  // Checks between options after parsing; throw UsageError (CommandLine.h)
+  // naming the option. Runs before anything is written.
+  virtual void checkOptions() const {}
   // Builds the world and the scene. Call once after options are parsed.
   void initialize(const RunOptions& options);
   // R: tears everything down and builds the scene again; settings persist.
@@ -83,7 +86,9 @@ class AbstractWindow {
   // Returns false when the state became non-finite (see blowUpReason()).
   bool stepOnce();
   // Headless path: runs for options.seconds (or defaultHeadlessSeconds()),
-  // prints the metrics, writes --metrics-json; returns the exit status.
+  // then reportHeadless(). Scenes with their own experiment (several
+  // launches, a search) override it with runFor() calls and end with
+  // reportHeadless().
   virtual int runHeadless();
 
   // ---- read by the front end -----------------------------------------------
@@ -163,6 +168,12 @@ class AbstractWindow {
   void remove(const AbstractObject* object);
   // Removes every object for which `predicate` is true.
   void removeIf(const std::function<bool(const AbstractObject&)>& predicate);
+
+  // Steps for `seconds` of simulated time (wall time is added to the run's
+  // total); false if the state blew up (blowUpReason() says how).
+  bool runFor(double seconds);
+  // Prints the metrics, writes --metrics-json, and returns OK or BLEW_UP.
+  int reportHeadless();
 
   std::mt19937& random() { return random_; }
   const RunOptions& options() const { return options_; }

@@ -39,6 +39,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   try {
     app.parse(argc, argv);
     cli::validateRunOptions(options);
+    scene.checkOptions();
   } catch (const CLI::CallForHelp& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
