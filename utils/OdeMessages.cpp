@@ -13,8 +13,13 @@ namespace {
 
 constexpr int MESSAGES_PER_SECOND = 5;
 constexpr size_t RECENT_KEPT = 4;
+constexpr auto RECENT_SHOWN_FOR = std::chrono::seconds(5);
 
-std::deque<std::string> recentMessages;
+struct TimedMessage {
+  std::chrono::steady_clock::time_point when;
+  std::string text;
+};
+std::deque<TimedMessage> recentMessages;
 long suppressed = 0;
 int printedThisSecond = 0;
 std::chrono::steady_clock::time_point windowStart;
@@ -47,10 +52,10 @@ void OdeMessages::install() {
 
 void OdeMessages::handleMessage(int number, const std::string& text) {
   const std::string line = "ODE message " + std::to_string(number) + ": " + text;
-  recentMessages.push_back(line);
+  const auto now = std::chrono::steady_clock::now();
+  recentMessages.push_back({now, line});
   while (recentMessages.size() > RECENT_KEPT) recentMessages.pop_front();
 
-  const auto now = std::chrono::steady_clock::now();
   if (now - windowStart >= std::chrono::seconds(1)) {
     if (suppressed > 0) std::cerr << "(" << suppressed << " more ODE messages suppressed)\n";
     suppressed = 0;
@@ -65,7 +70,13 @@ void OdeMessages::handleMessage(int number, const std::string& text) {
   }
 }
 
-const std::deque<std::string>& OdeMessages::recent() { return recentMessages; }
+std::deque<std::string> OdeMessages::recent() {
+  std::deque<std::string> lines;
+  const auto oldest = std::chrono::steady_clock::now() - RECENT_SHOWN_FOR;
+  for (const auto& message : recentMessages)
+    if (message.when >= oldest) lines.push_back(message.text);
+  return lines;
+}
 long OdeMessages::suppressedCount() { return suppressed; }
 void OdeMessages::clear() {
   recentMessages.clear();

@@ -20,7 +20,8 @@ class OdeMessages {
  public:
   static void install();
 
-  static const std::deque<std::string>& recent();  // newest last, at most 4
+  // The latest messages (newest last, at most 4) of the last few seconds.
+  static std::deque<std::string> recent();
   static long suppressedCount();
   static void clear();
 
