@@ -49,6 +49,8 @@ class BoxAndSphere : public AbstractWindow {
  protected:
   void configureWorld() override { dWorldSetAutoDisableFlag(world(), 1); }
 
+  void initialCamera(Camera& camera) const override { camera.lookAt({0.0f, 7.0f, 12.0f}, {0.0f, 2.5f, 0.0f}); }
+
   void buildScene() override {
     Box& platform = add<Box>(world(), space(), 2 * PLATFORM_HALF, 0.2, 2 * PLATFORM_HALF, 1.0);
     platform.setAsFixedGeom();

@@ -1,0 +1,168 @@
+// The search order for shaders and the HUD font (utils/ResourcePaths.h):
+// explicit choices shadow everything, then the executable's directory, the
+// source tree and (fonts only) the system font; every place tried is listed.
+
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "ResourcePaths.h"
+
+using odelab::ResourceLookup;
+using odelab::ResourceSearch;
+
+namespace {
+
+const std::string SYSTEM_FONT = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
+
+// A fresh directory under /tmp, removed with everything in it at the end.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    char pattern[] = "/tmp/odelab_paths_XXXXXX";
+    path_ = ::mkdtemp(pattern);
+  }
+  ~TemporaryDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::string& path() const { return path_; }
+  // Creates a small file (and its directories) under this one; returns its path.
+  std::string make(const std::string& relativeFile) const {
+    const std::filesystem::path full = std::filesystem::path(path_) / relativeFile;
+    std::filesystem::create_directories(full.parent_path());
+    std::ofstream(full) << "x";
+    return full.string();
+  }
+
+ private:
+  std::string path_;
+};
+
+// Sets (or, given nullptr, unsets) an environment variable for one test and
+// restores it afterwards.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const char* value) : name_(name) {
+    const char* old = std::getenv(name);
+    hadValue_ = old != nullptr;
+    if (old) old_ = old;
+    if (value)
+      ::setenv(name, value, 1);
+    else
+      ::unsetenv(name);
+  }
+  ~ScopedEnvironment() {
+    if (hadValue_)
+      ::setenv(name_, old_.c_str(), 1);
+    else
+      ::unsetenv(name_);
+  }
+
+ private:
+  const char* name_;
+  bool hadValue_ = false;
+  std::string old_;
+};
+
+}  // namespace
+
+TEST(ResourcePaths, ShaderOrderWithoutExplicitChoice) {
+  const ResourceSearch search{"", "", "/opt/bin", "/src/odelab"};
+  EXPECT_EQ(odelab::shaderDirCandidates(search), (std::vector<std::string>{"/opt/bin/shaders", "/src/odelab/shaders"}));
+}
+
+TEST(ResourcePaths, ShaderOptionIsTheOnlyPlaceTried) {
+  const ResourceSearch search{"/mine", "/from/env", "/opt/bin", "/src/odelab"};
+  EXPECT_EQ(odelab::shaderDirCandidates(search), (std::vector<std::string>{"/mine"}));
+}
+
+TEST(ResourcePaths, ShaderEnvironmentShadowsDefaults) {
+  const ResourceSearch search{"", "/from/env", "/opt/bin", "/src/odelab"};
+  EXPECT_EQ(odelab::shaderDirCandidates(search), (std::vector<std::string>{"/from/env"}));
+}
+
+TEST(ResourcePaths, UnknownDirectoriesAreSkipped) {
+  const ResourceSearch search{"", "", "", ""};
+  EXPECT_TRUE(odelab::shaderDirCandidates(search).empty());
+  EXPECT_EQ(odelab::fontCandidates(search), (std::vector<std::string>{SYSTEM_FONT}));
+}
+
+TEST(ResourcePaths, FontOrderEndsWithSystemFont) {
+  const ResourceSearch search{"", "", "/opt/bin/", "/src/odelab"};
+  EXPECT_EQ(odelab::fontCandidates(search),
+            (std::vector<std::string>{"/opt/bin/fonts/DejaVuSansMono.ttf", "/src/odelab/fonts/DejaVuSansMono.ttf",
+                                      SYSTEM_FONT}));
+}
+
+TEST(ResourcePaths, FontOptionIsTheOnlyPlaceTried) {
+  const ResourceSearch search{"/my/font.ttf", "/env/font.ttf", "/opt/bin", "/src/odelab"};
+  EXPECT_EQ(odelab::fontCandidates(search), (std::vector<std::string>{"/my/font.ttf"}));
+}
+
+TEST(ResourcePaths, FindFirstStopsAtFirstAcceptedAndRecordsTried) {
+  TemporaryDirectory first, second, third;
+  second.make("scene.vert");
+  third.make("scene.vert");
+  const ResourceLookup lookup =
+      odelab::findFirst({first.path(), second.path(), third.path()}, odelab::isShaderDir);
+  EXPECT_EQ(lookup.found, second.path());
+  EXPECT_EQ(lookup.tried, (std::vector<std::string>{first.path(), second.path()}));
+}
+
+TEST(ResourcePaths, NothingFoundListsEveryPlace) {
+  const ResourceLookup lookup = odelab::findFirst({"/nonexistent/a", "/nonexistent/b"}, odelab::isShaderDir);
+  EXPECT_FALSE(lookup.ok());
+  EXPECT_EQ(lookup.triedList(), "/nonexistent/a, /nonexistent/b");
+}
+
+TEST(ResourcePaths, DirectoryWithoutSceneVertDoesNotCount) {
+  TemporaryDirectory directory;
+  directory.make("depth.vert");
+  EXPECT_FALSE(odelab::isShaderDir(directory.path()));
+  EXPECT_FALSE(odelab::isReadableFile(directory.path()));  // a directory is not a font
+}
+
+TEST(ResourcePaths, WrongShaderOptionIsReportedNotBypassed) {
+  const ResourceLookup lookup = odelab::findShaderDir("/nonexistent/shaders");
+  EXPECT_FALSE(lookup.ok());
+  EXPECT_EQ(lookup.tried, (std::vector<std::string>{"/nonexistent/shaders"}));
+}
+
+TEST(ResourcePaths, ShaderEnvironmentVariableIsUsed) {
+  TemporaryDirectory directory;
+  directory.make("scene.vert");
+  const ScopedEnvironment environment("ODELAB_SHADER_DIR", directory.path().c_str());
+  EXPECT_EQ(odelab::findShaderDir("").found, directory.path());
+  // The option still wins over the environment.
+  EXPECT_FALSE(odelab::findShaderDir("/nonexistent/shaders").ok());
+}
+
+TEST(ResourcePaths, FontEnvironmentVariableIsUsed) {
+  TemporaryDirectory directory;
+  const std::string font = directory.make("some.ttf");
+  const ScopedEnvironment environment("ODELAB_FONT", font.c_str());
+  EXPECT_EQ(odelab::findFont("").found, font);
+  const ResourceLookup wrong = odelab::findFont(directory.path() + "/missing.ttf");
+  EXPECT_FALSE(wrong.ok());
+  EXPECT_EQ(wrong.tried.size(), 1u);
+}
+
+TEST(ResourcePaths, RealSearchStartsNextToTheExecutable) {
+  const ScopedEnvironment environment("ODELAB_SHADER_DIR", nullptr);
+  const std::string executableDir = odelab::executableDirectory();
+  ASSERT_FALSE(executableDir.empty());
+  const ResourceLookup lookup = odelab::findShaderDir("");
+  ASSERT_FALSE(lookup.tried.empty());
+  EXPECT_EQ(lookup.tried.front(), executableDir + "/shaders");
+}
+
+TEST(ResourcePaths, DefaultSearchFindsTheRepositoryShaders) {
+  // The build defines ODELAB_SOURCE_DIR; the repository's shaders/ qualifies.
+  const ScopedEnvironment environment("ODELAB_SHADER_DIR", nullptr);
+  EXPECT_TRUE(odelab::findShaderDir("").ok());
+}

@@ -1,0 +1,113 @@
+#include "HudText.h"
+
+#include <algorithm>
+
+#include "RenderError.h"
+
+namespace odelab {
+
+namespace {
+
+const int FONT_POINTS = 15;
+const int PADDING = 8;          // pixels between the box's edge and the text
+const int MARGIN = 10;          // pixels between the window's corner and the box
+const SDL_Color TEXT_COLOR{235, 238, 242, 255};
+const Uint8 BOX_ALPHA = 170;    // dark enough to read over a bright sky
+
+TTF_Font* openFont(const std::string& path) {
+  TTF_Font* font = TTF_OpenFont(path.c_str(), FONT_POINTS);
+  if (!font) throw RenderError("cannot open font " + path + ": " + TTF_GetError());
+  return font;
+}
+
+struct SurfaceFreer {
+  void operator()(SDL_Surface* surface) const { SDL_FreeSurface(surface); }
+};
+using SurfacePtr = std::unique_ptr<SDL_Surface, SurfaceFreer>;
+
+}  // namespace
+
+HudText::TtfLibrary::TtfLibrary() {
+  if (TTF_Init() != 0) throw RenderError(std::string("cannot initialise SDL_ttf: ") + TTF_GetError());
+}
+
+HudText::TtfLibrary::~TtfLibrary() { TTF_Quit(); }
+
+HudText::HudText(const std::string& fontPath, const std::string& shaderDir)
+    : font_(openFont(fontPath)), program_(shaderDir + "/hud.vert", shaderDir + "/hud.frag") {
+  rectUniform_ = program_.uniform("uRect");
+  viewportUniform_ = program_.uniform("uViewport");
+  textUniform_ = program_.uniform("uText");
+  glGenTextures(1, &texture_);
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  // Drawn at exactly one texel per pixel: no filtering wanted.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glGenVertexArrays(1, &emptyVertexArray_);
+}
+
+HudText::~HudText() {
+  glDeleteVertexArrays(1, &emptyVertexArray_);
+  glDeleteTextures(1, &texture_);
+}
+
+void HudText::upload(const std::vector<std::string>& lines) {
+  // Render each line, then compose them onto one RGBA image whose bytes are
+  // in R, G, B, A order whatever the machine's endianness (SDL_PIXELFORMAT_RGBA32).
+  std::vector<SurfacePtr> rendered;
+  int width = 0;
+  const int lineSkip = TTF_FontLineSkip(font_.get());
+  for (const std::string& line : lines) {
+    // TTF refuses empty strings; a blank line still takes its height.
+    SurfacePtr surface(line.empty() ? nullptr : TTF_RenderUTF8_Blended(font_.get(), line.c_str(), TEXT_COLOR));
+    if (surface) width = std::max(width, surface->w);
+    rendered.push_back(std::move(surface));
+  }
+  width += 2 * PADDING;
+  const int height = lineSkip * static_cast<int>(lines.size()) + 2 * PADDING;
+
+  SurfacePtr image(SDL_CreateRGBSurfaceWithFormat(0, width, height, 32, SDL_PIXELFORMAT_RGBA32));
+  if (!image) throw RenderError(std::string("cannot create HUD image: ") + SDL_GetError());
+  SDL_FillRect(image.get(), nullptr, SDL_MapRGBA(image->format, 12, 14, 18, BOX_ALPHA));
+  for (std::size_t i = 0; i < rendered.size(); ++i) {
+    if (!rendered[i]) continue;
+    SDL_Rect at{PADDING, PADDING + static_cast<int>(i) * lineSkip, rendered[i]->w, rendered[i]->h};
+    SDL_SetSurfaceBlendMode(rendered[i].get(), SDL_BLENDMODE_BLEND);
+    SDL_BlitSurface(rendered[i].get(), nullptr, image.get(), &at);
+  }
+
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, image->pitch / 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image->pixels);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  textureWidth_ = width;
+  textureHeight_ = height;
+  shownLines_ = lines;
+}
+
+void HudText::draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight) {
+  if (lines.empty()) return;
+  if (lines != shownLines_) upload(lines);
+
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  program_.use();
+  glUniform4f(rectUniform_, static_cast<float>(MARGIN), static_cast<float>(MARGIN),
+              static_cast<float>(textureWidth_), static_cast<float>(textureHeight_));
+  glUniform2f(viewportUniform_, static_cast<float>(viewportWidth), static_cast<float>(viewportHeight));
+  glUniform1i(textUniform_, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  glBindVertexArray(emptyVertexArray_);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glBindVertexArray(0);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace odelab

@@ -1,0 +1,15 @@
+#pragma once
+
+#include <stdexcept>
+
+namespace odelab {
+
+// A failure in setting up or drawing the window (shader, font, file): its own
+// type so runWindow can report it without also catching odelab::OdeError,
+// which must reach the caller to be mapped to its exit status.
+class RenderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace odelab

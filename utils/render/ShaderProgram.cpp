@@ -1,0 +1,82 @@
+#include "ShaderProgram.h"
+
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "RenderError.h"
+
+namespace odelab {
+
+namespace {
+
+std::string readFile(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw RenderError("cannot read shader " + path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+std::string shaderLog(GLuint shader) {
+  GLint length = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
+  glGetShaderInfoLog(shader, length, nullptr, log.data());
+  return log.data();
+}
+
+std::string programLog(GLuint program) {
+  GLint length = 0;
+  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
+  glGetProgramInfoLog(program, length, nullptr, log.data());
+  return log.data();
+}
+
+GLuint compile(GLenum type, const std::string& path) {
+  const std::string source = readFile(path);
+  const char* text = source.c_str();
+  const GLuint shader = glCreateShader(type);
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint compiled = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+  if (compiled != GL_TRUE) {
+    const std::string log = shaderLog(shader);
+    glDeleteShader(shader);
+    throw RenderError("cannot compile shader " + path + ":\n" + log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+ShaderProgram::ShaderProgram(const std::string& vertexPath, const std::string& fragmentPath) {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertexPath);
+  GLuint fragment = 0;
+  try {
+    fragment = compile(GL_FRAGMENT_SHADER, fragmentPath);
+  } catch (...) {
+    glDeleteShader(vertex);
+    throw;
+  }
+  id_ = glCreateProgram();
+  glAttachShader(id_, vertex);
+  glAttachShader(id_, fragment);
+  glLinkProgram(id_);
+  // The program keeps what it needs; the shader objects can go now.
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint linked = GL_FALSE;
+  glGetProgramiv(id_, GL_LINK_STATUS, &linked);
+  if (linked != GL_TRUE) {
+    const std::string log = programLog(id_);
+    glDeleteProgram(id_);
+    throw RenderError("cannot link shaders " + vertexPath + " + " + fragmentPath + ":\n" + log);
+  }
+}
+
+ShaderProgram::~ShaderProgram() { glDeleteProgram(id_); }
+
+}  // namespace odelab
