@@ -241,6 +241,25 @@ int AbstractWindow::reportHeadless() {
   return exit_code::OK;
 }
 
+std::uint64_t AbstractWindow::stateHash() const {
+  // FNV-1a over the exact bytes of every body's position, orientation and
+  // velocities, in creation order; cut to 52 bits so JSON's doubles hold it.
+  std::uint64_t hash = 1469598103934665603ull;
+  auto mix = [&hash](const dReal* values, int count) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values);
+    for (size_t i = 0; i < count * sizeof(dReal); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+  };
+  for (const auto& object : objects_) {
+    const dBodyID body = object->getBody();
+    if (!body) continue;
+    mix(dBodyGetPosition(body), 3);
+    mix(dBodyGetQuaternion(body), 4);
+    mix(dBodyGetLinearVel(body), 3);
+    mix(dBodyGetAngularVel(body), 3);
+  }
+  return hash & ((1ull << 52) - 1);
+}
+
 int AbstractWindow::bodyCount() const {
   int count = 0;
   for (const auto& object : objects_)
@@ -265,6 +284,7 @@ Metrics AbstractWindow::metrics() const {
   m.set("disabled_bodies", disabledBodyCount());
   m.set("contacts", contactsLastStep_);
   m.set("non_finite", blowUpReason_.empty() ? 0 : 1);
+  m.set("state_hash", static_cast<double>(stateHash()));
   addMetrics(m);
   return m;
 }

@@ -4,6 +4,7 @@
 #include <ode/ode.h>
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <random>
@@ -121,6 +122,9 @@ class AbstractWindow {
   double lastStepWallSeconds() const { return lastStepWallSeconds_; }
   const std::string& blowUpReason() const { return blowUpReason_; }
   int bodyCount() const;
+  // A hash of every body's exact state: equal for two runs that followed the
+  // same trajectory bit for bit (the determinism check).
+  std::uint64_t stateHash() const;
   int disabledBodyCount() const;
   // Every metric: the framework's (steps, sim_seconds, ...) then the scene's.
   Metrics metrics() const;

@@ -1,6 +1,8 @@
 #include "Metrics.h"
 
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -36,7 +38,11 @@ namespace {
 std::string formatNumber(double value) {
   if (!std::isfinite(value)) return "null";
   std::ostringstream out;
-  out << std::setprecision(10) << value;
+  // Whole numbers (counts, hashes) print exactly; the rest to 10 digits.
+  if (value == std::floor(value) && std::fabs(value) < 9007199254740992.0)
+    out << std::fixed << std::setprecision(0) << value;
+  else
+    out << std::setprecision(10) << value;
   return out.str();
 }
 }  // namespace
