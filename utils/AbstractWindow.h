@@ -71,8 +71,10 @@ class AbstractWindow {
   // ---- driven by the runner ----------------------------------------------
   // Scene-specific command-line options; called before parsing.
   virtual void addOptions(CLI::App& app);
-  // Checks between options after parsing; throw UsageError (CommandLine.h)
-  // naming the option. Runs before anything is written.
+  // The parsed common options; options() returns them from here on.
+  void setRunOptions(const RunOptions& options) { options_ = options; }
+  // Checks between options after parsing (options() is set); throw
+  // UsageError (CommandLine.h) naming the option. Runs before anything is written.
   virtual void checkOptions() const {}
   // Builds the world and the scene. Call once after options are parsed.
   void initialize(const RunOptions& options);

@@ -1,5 +1,6 @@
 #include "TestMain.h"
 
+#include <cstdlib>
 #include <iostream>
 
 #include "CommandLine.h"
@@ -39,6 +40,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   try {
     app.parse(argc, argv);
     cli::validateRunOptions(options);
+    scene.setRunOptions(options);
     scene.checkOptions();
   } catch (const CLI::CallForHelp& help) {
     return app.exit(help);
@@ -59,8 +61,12 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   try {
     status = run(scene, options);
   } catch (const OdeError& error) {
+    // ODE's state is not to be trusted after its own error: tearing the
+    // world down can raise another one from a destructor. Leave without
+    // unwinding; output files are flushed row by row already.
     std::cerr << "error: " << error.what() << '\n';
-    status = exit_code::ODE_ERROR;
+    std::cout.flush();
+    std::exit(exit_code::ODE_ERROR);
   } catch (const UsageError& error) {
     std::cerr << "error: " << error.what() << '\n';
     status = exit_code::USAGE;

@@ -1,0 +1,302 @@
+// test7 - Axis system 2 (thesis 5.8): two cubes hang in a chain of ball
+// joints from a fixed point, a light one (the pivot) above a heavy one, and a
+// 100 kg test cube is thrown into the pivot at 30 m/s. The joints carry a
+// 1000:1 mass ratio and take the hits; the thesis found the chain naturally
+// stable, swinging faster with each throw, and tamed the pivot's spin after
+// glancing hits with dWorldSetMaxAngularSpeed(world, 10), which applies to
+// every body in the world.
+//
+// Measures: the largest joint error (distance between the two bodies' anchor
+// points, of either joint), the pivot's largest angular speed, and the
+// mechanical energy of the hanging pair after each throw, above its energy
+// hanging at rest (the joints sag a little under the 5000 kg load, so "at
+// rest" is measured before the first hit, not taken from the built pose).
+#include <CLI/CLI.hpp>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <iomanip>
+#include <sstream>
+
+#include "AbstractWindow.h"
+#include "Box.h"
+#include "CommandLine.h"
+#include "Plane.h"
+#include "Sphere.h"
+#include "TestMain.h"
+
+namespace {
+
+using namespace odelab;
+
+// From the thesis.
+constexpr double ANCHOR_HEIGHT = 10.0;  // ball joint to the static world
+constexpr double PIVOT_MASS = 5.0;
+constexpr double BIG_MASS = 5000.0;
+constexpr double TEST_CUBE_MASS = 100.0;
+constexpr double THROW_SPEED = 30.0;
+constexpr double THESIS_MAX_ANGULAR_SPEED = 10.0;  // rad/s
+
+// Sizes and the throw (proposed).
+constexpr double PIVOT_SIDE = 1.0;
+constexpr double BIG_SIDE = 5.0;
+constexpr double TEST_CUBE_SIDE = 1.0;
+constexpr double THROW_DISTANCE = 10.0;  // from the pivot's centre, level with it
+
+// The pivot hangs with its top-face centre on the fixed anchor; the big cube
+// hangs with its top-face centre on the pivot's bottom-face centre.
+constexpr double PIVOT_CENTRE_Y = ANCHOR_HEIGHT - PIVOT_SIDE / 2;
+constexpr double LOWER_ANCHOR_Y = ANCHOR_HEIGHT - PIVOT_SIDE;
+constexpr double BIG_CENTRE_Y = LOWER_ANCHOR_Y - BIG_SIDE / 2;
+
+constexpr int DEFAULT_THROWS = 3;               // headless (proposed)
+constexpr double DEFAULT_THROW_INTERVAL = 5.0;  // s between throws, headless (proposed)
+constexpr int THROWS_ON_HUD = 5;
+constexpr double ANCHOR_MARKER_RADIUS = 0.15;  // drawn only: it collides with nothing
+// The pair's resting energy is averaged while the first throw is in the air
+// (it reaches the pivot after about 0.30 s).
+constexpr double REST_FROM_SECONDS = 0.05, REST_TO_SECONDS = 0.25;
+// The energy after a throw is a mean over the last second before the next
+// throw: the test cube may lie on the big cube and trade energy with it.
+constexpr double ENERGY_MEAN_SECONDS = 1.0;
+// F5 walks the max angular speed limit through these (0: no limit).
+const std::vector<double> ANGULAR_SPEED_LADDER{0.0, 1.0, 3.0, 10.0, 30.0, 100.0};
+
+std::string format(double value, int precision = 4) {
+  std::ostringstream out;
+  out << std::setprecision(precision) << value;
+  return out.str();
+}
+
+double length(const dReal* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+// Kinetic (linear and rotational) plus potential energy of a body, with the
+// potential taken from the height `restY` it was built at.
+double mechanicalEnergy(dBodyID body, double gravity, double restY) {
+  dMass m;
+  dBodyGetMass(body, &m);
+  const dReal* v = dBodyGetLinearVel(body);
+  const dReal* w = dBodyGetAngularVel(body);
+  dVector3 wBody, Iw;
+  dMultiply1_331(wBody, dBodyGetRotation(body), w);  // R^T w: spin in body axes
+  dMultiply0_331(Iw, m.I, wBody);
+  const double rotational = 0.5 * (wBody[0] * Iw[0] + wBody[1] * Iw[1] + wBody[2] * Iw[2]);
+  const double linear = 0.5 * m.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return linear + rotational + m.mass * gravity * (dBodyGetPosition(body)[1] - restY);
+}
+
+// Distance between where each of the two joined bodies holds the anchor.
+double ballJointError(dJointID joint) {
+  dVector3 a1, a2;
+  dJointGetBallAnchor(joint, a1);
+  dJointGetBallAnchor2(joint, a2);
+  const dReal d[3] = {a1[0] - a2[0], a1[1] - a2[1], a1[2] - a2[2]};
+  return length(d);
+}
+
+class AxisSystem2 : public AbstractWindow {
+ public:
+  AxisSystem2() : AbstractWindow("test7 - Axis system 2", WorldSettings{}) {
+    bindKey(SDLK_r, "R", "throw the test cube again at the pivot (Shift+R: reset the whole scene to its initial state)",
+            [this](int direction) {
+              if (direction > 0) {
+                throwTestCube();
+                return;
+              }
+              reset();
+              notify("scene reset");
+            });
+    bindKey(SDLK_F5, "F5", "max angular speed of every body up (Shift: down): off, 1, 3, 10, 30, 100 rad/s",
+            [this](int direction) { stepAngularSpeedLimit(direction); });
+  }
+
+  void addOptions(CLI::App& app) override {
+    app.add_option("--max-angular-speed", maxAngularSpeed_,
+                   "dWorldSetMaxAngularSpeed(world, W) in rad/s for every body (the thesis's 10); 0: no limit")
+        ->check(cli::finiteRange(0.0, 1e6))
+        ->capture_default_str();
+    app.add_option("--throws", throws_, "headless: how many times the test cube is thrown")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    app.add_option("--throw-interval", throwInterval_, "headless: simulated seconds between throws")
+        ->check(cli::positive(1e4))
+        ->capture_default_str();
+  }
+
+ protected:
+  void configureWorld() override {
+    // Every body copies the world's limit when it is created, so set it first.
+    if (maxAngularSpeed_ > 0) dWorldSetMaxAngularSpeed(world(), maxAngularSpeed_);
+  }
+
+  void buildScene() override {
+    add<Plane>(space());
+    addAnchorMarker();
+    pivot_ = &add<Box>(world(), space(), PIVOT_SIDE, PIVOT_SIDE, PIVOT_SIDE, PIVOT_MASS);
+    pivot_->setPosition(0.0, PIVOT_CENTRE_Y, 0.0);
+    pivot_->color = Color{0.85f, 0.55f, 0.2f};
+    big_ = &add<Box>(world(), space(), BIG_SIDE, BIG_SIDE, BIG_SIDE, BIG_MASS);
+    big_->setPosition(0.0, BIG_CENTRE_Y, 0.0);
+    big_->color = Color{0.3f, 0.5f, 0.8f};
+
+    joints_[0] = dJointCreateBall(world(), 0);
+    dJointAttach(joints_[0], pivot_->getBody(), 0);
+    dJointSetBallAnchor(joints_[0], 0.0, ANCHOR_HEIGHT, 0.0);
+    joints_[1] = dJointCreateBall(world(), 0);
+    dJointAttach(joints_[1], pivot_->getBody(), big_->getBody());
+    dJointSetBallAnchor(joints_[1], 0.0, LOWER_ANCHOR_Y, 0.0);
+
+    testCube_ = &add<Box>(world(), space(), TEST_CUBE_SIDE, TEST_CUBE_SIDE, TEST_CUBE_SIDE, TEST_CUBE_MASS);
+    testCube_->color = Color{0.8f, 0.25f, 0.25f};
+
+    jointError_ = maxJointError_ = 0.0;
+    pivotSpeed_ = maxPivotSpeed_ = 0.0;
+    throwCount_ = 0;
+    energyAfterThrow_.clear();
+    restSum_ = 0.0;
+    restSamples_ = 0;
+    throwTestCube();  // the scene starts with the first throw
+  }
+
+  void afterStep() override {
+    jointError_ = std::max(ballJointError(joints_[0]), ballJointError(joints_[1]));
+    maxJointError_ = std::max(maxJointError_, jointError_);
+    pivotSpeed_ = length(dBodyGetAngularVel(pivot_->getBody()));
+    maxPivotSpeed_ = std::max(maxPivotSpeed_, pivotSpeed_);
+    const double energy = pairEnergy();
+    if (throwCount_ == 1 && simulatedTime() >= REST_FROM_SECONDS && simulatedTime() <= REST_TO_SECONDS) {
+      restSum_ += energy;
+      ++restSamples_;
+    }
+    recentEnergy_.push_back(energy);
+    const size_t samples = std::max<long long>(1, std::llround(ENERGY_MEAN_SECONDS / settings().step));
+    while (recentEnergy_.size() > samples) recentEnergy_.pop_front();
+  }
+
+  void addHudLines(std::vector<std::string>& lines) const override {
+    lines.push_back("throws " + std::to_string(throwCount_) + " (R throws, Shift+R resets)   max angular speed " +
+                    (maxAngularSpeed_ > 0 ? format(maxAngularSpeed_) + " rad/s" : std::string("off")) + " (F5)");
+    lines.push_back("joint error " + format(jointError_) + " m (max " + format(maxJointError_) +
+                    ")   pivot angular speed " + format(pivotSpeed_) + " rad/s (max " + format(maxPivotSpeed_) + ")");
+    std::string energies = "swing energy of the hanging pair " + format(pairEnergy() - restingEnergy(), 6) +
+                           " J (1 s mean " + format(swingEnergy(), 6) + ")";
+    const size_t first = energyAfterThrow_.size() > THROWS_ON_HUD ? energyAfterThrow_.size() - THROWS_ON_HUD : 0;
+    if (!energyAfterThrow_.empty()) energies += "; after throw";
+    for (size_t i = first; i < energyAfterThrow_.size(); ++i)
+      energies += " " + std::to_string(i + 1) + ": " + format(energyAfterThrow_[i], 6);
+    lines.push_back(energies);
+  }
+
+  void addMetrics(Metrics& m) const override {
+    m.set("max_joint_error", maxJointError_);
+    m.set("max_angular_speed", maxPivotSpeed_);
+    m.set("max_angular_speed_limit", maxAngularSpeed_);
+    m.set("throws", throwCount_);
+    m.set("resting_energy_offset", restingEnergy());
+    for (size_t i = 0; i < energyAfterThrow_.size(); ++i)
+      m.set("energy_after_throw_" + std::to_string(i + 1), energyAfterThrow_[i]);
+  }
+
+  void initialCamera(Camera& camera) const override { camera.lookAt({-7.0, 10.0, 14.0}, {-2.0, 7.5, 0.0}); }
+  SceneBounds bounds() const override { return {{-3.0, 6.0, 0.0}, 10.0}; }
+
+  // Throws at 0 (as built), S, 2S, ...; the pair's energy after each throw is
+  // taken just before the next one (and at the end for the last). A longer
+  // --seconds runs on after the last interval.
+  int runHeadless() override {
+    bool finite = runFor(throwInterval_);
+    for (int i = 1; i < throws_ && finite; ++i) {
+      throwTestCube();
+      finite = runFor(throwInterval_);
+    }
+    if (finite) {
+      recordEnergyOfLastThrow();
+      if (options().seconds > simulatedTime()) runFor(options().seconds - simulatedTime());
+    }
+    return reportHeadless();
+  }
+
+ private:
+  // A small static ball where the chain hangs from the world, so the window
+  // shows the fixed point; its category and collide bits are 0, so no pair
+  // with it ever reaches the near callback.
+  void addAnchorMarker() {
+    Sphere& marker = add<Sphere>(world(), space(), ANCHOR_MARKER_RADIUS, 1.0);
+    marker.setAsFixedGeom();
+    marker.setPosition(0.0, ANCHOR_HEIGHT, 0.0);
+    dGeomSetCategoryBits(marker.getGeom(), 0);
+    dGeomSetCollideBits(marker.getGeom(), 0);
+    marker.color = Color{0.2f, 0.2f, 0.2f};
+  }
+
+  // Energy of the pivot and the big cube, zero when they hang as built.
+  double pairEnergy() const {
+    return mechanicalEnergy(pivot_->getBody(), settings().gravity, PIVOT_CENTRE_Y) +
+           mechanicalEnergy(big_->getBody(), settings().gravity, BIG_CENTRE_Y);
+  }
+
+  // The pair's energy hanging at rest, relative to the built pose (negative:
+  // the joints' sag), averaged before the first hit; 0 until measured.
+  double restingEnergy() const { return restSamples_ ? restSum_ / restSamples_ : 0.0; }
+
+  // Mean energy above rest over the last ENERGY_MEAN_SECONDS since the last throw.
+  double swingEnergy() const {
+    if (recentEnergy_.empty()) return 0.0;
+    double sum = 0.0;
+    for (double e : recentEnergy_) sum += e;
+    return sum / recentEnergy_.size() - restingEnergy();
+  }
+
+  void recordEnergyOfLastThrow() {
+    if (static_cast<int>(energyAfterThrow_.size()) < throwCount_) energyAfterThrow_.push_back(swingEnergy());
+    recentEnergy_.clear();
+  }
+
+  // From THROW_DISTANCE away, level with the pivot's rest position, unturned,
+  // at THROW_SPEED, aimed up just enough (sin 2a = g d / v^2, about 3.1
+  // degrees) that its arc comes back to that level at the pivot.
+  void throwTestCube() {
+    recordEnergyOfLastThrow();
+    const dBodyID body = testCube_->getBody();
+    testCube_->setPosition(-THROW_DISTANCE, PIVOT_CENTRE_Y, 0.0);
+    dMatrix3 unturned;
+    dRSetIdentity(unturned);
+    dBodySetRotation(body, unturned);
+    dBodySetAngularVel(body, 0, 0, 0);
+    const double elevation = 0.5 * std::asin(settings().gravity * THROW_DISTANCE / (THROW_SPEED * THROW_SPEED));
+    testCube_->setLinearVelocity(THROW_SPEED * std::cos(elevation), THROW_SPEED * std::sin(elevation), 0.0);
+    dBodyEnable(body);
+    ++throwCount_;
+  }
+
+  void stepAngularSpeedLimit(int direction) {
+    maxAngularSpeed_ = ParameterStepper::nextOnLadder(ANGULAR_SPEED_LADDER, maxAngularSpeed_, direction);
+    for (const auto& object : objects())
+      if (const dBodyID body = object->getBody())
+        dBodySetMaxAngularSpeed(body, maxAngularSpeed_ > 0 ? maxAngularSpeed_ : dInfinity);
+    notify("max angular speed " + (maxAngularSpeed_ > 0 ? format(maxAngularSpeed_) + " rad/s" : std::string("off")));
+  }
+
+  double maxAngularSpeed_ = THESIS_MAX_ANGULAR_SPEED;
+  int throws_ = DEFAULT_THROWS;
+  double throwInterval_ = DEFAULT_THROW_INTERVAL;
+
+  Box* pivot_ = nullptr;
+  Box* big_ = nullptr;
+  Box* testCube_ = nullptr;
+  std::array<dJointID, 2> joints_{};
+  double jointError_ = 0.0, maxJointError_ = 0.0;
+  double pivotSpeed_ = 0.0, maxPivotSpeed_ = 0.0;
+  int throwCount_ = 0;
+  std::vector<double> energyAfterThrow_;
+  std::deque<double> recentEnergy_;  // the pair's energy at each step since the last throw, up to 1 s
+  double restSum_ = 0.0;
+  int restSamples_ = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return odelab::runTest<AxisSystem2>(
+      argc, argv, "Two cubes hang on ball joints; a 100 kg cube is thrown into the upper one at 30 m/s.");
+}
