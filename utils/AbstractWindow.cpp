@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 #include "ExitCodes.h"
@@ -260,17 +261,22 @@ std::uint64_t AbstractWindow::stateHash() const {
   return hash & ((1ull << 52) - 1);
 }
 
-int AbstractWindow::bodyCount() const {
-  int count = 0;
-  for (const auto& object : objects_)
-    if (object->getBody() && !object->isFixed()) ++count;
-  return count;
+namespace {
+// Distinct bodies: the geoms of a composite body share one.
+std::set<dBodyID> bodiesOf(const std::vector<std::unique_ptr<AbstractObject>>& objects) {
+  std::set<dBodyID> bodies;
+  for (const auto& object : objects)
+    if (const dBodyID body = object->getBody()) bodies.insert(body);
+  return bodies;
 }
+}  // namespace
+
+int AbstractWindow::bodyCount() const { return static_cast<int>(bodiesOf(objects_).size()); }
 
 int AbstractWindow::disabledBodyCount() const {
   int count = 0;
-  for (const auto& object : objects_)
-    if (object->getBody() && !object->isEnabled()) ++count;
+  for (const dBodyID body : bodiesOf(objects_))
+    if (!dBodyIsEnabled(body)) ++count;
   return count;
 }
 
@@ -365,7 +371,7 @@ void AbstractWindow::bindSharedKeys() {
   bindKey(SDLK_F1, "F1", "HUD on / off", [this](int) { hudVisible_ = !hudVisible_; });
   bindKey(SDLK_F2, "F2", "choose the increment used by F3 / F4 (1e-6 ... 0.1)", [this](int d) {
     stepper_.cycleIncrement(d);
-    notify("F2 increment " + formatValue(stepper_.increment()));
+    applySettings("F2 increment " + formatValue(stepper_.increment()));
   });
   bindKey(SDLK_F3, "F3", "ERP up by the increment (Shift: down), within [0, 1]",
           [this](int d) { stepSetting("ERP", [&] { stepper_.stepErp(settings_, d); }); });

@@ -1,0 +1,137 @@
+// Checks an output file of test2 / test8 (Test2_output.txt, Test8_output.txt)
+// independently of the program that wrote it:
+//
+//   check_output_file FILE --columns NAME,NAME,... --interval SECONDS --rows N
+//
+// It must start with "# key: value" header lines naming every setting in
+// force (ode_version, ode_precision, step_seconds, erp, cfm, solver,
+// iterations at least), then a "# columns:" line with exactly the given
+// names, then tab-separated rows of that many finite numbers. Row i must be
+// at time i * SECONDS within half a step (the step is read from the header),
+// and there must be exactly N rows. Lines starting with "# t=" (F-key changes)
+// may appear between rows. Exit status 0 when all holds, 1 otherwise.
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  return parts;
+}
+
+bool parseNumber(const std::string& text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end && *end == '\0' && std::isfinite(value);
+}
+
+struct Expected {
+  std::string file;
+  std::vector<std::string> columns;
+  double interval = 0;
+  long rows = -1;
+};
+
+bool parseArguments(int argc, char** argv, Expected& e) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--columns" && hasValue) e.columns = split(argv[++i], ',');
+    else if (arg == "--interval" && hasValue) e.interval = std::atof(argv[++i]);
+    else if (arg == "--rows" && hasValue) e.rows = std::atol(argv[++i]);
+    else if (e.file.empty() && arg.rfind("--", 0) != 0) e.file = arg;
+    else return false;
+  }
+  return !e.file.empty() && !e.columns.empty() && e.interval > 0 && e.rows >= 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Expected expected;
+  if (!parseArguments(argc, argv, expected)) {
+    std::cerr << "usage: check_output_file FILE --columns A,B,... --interval SECONDS --rows N\n";
+    return 2;
+  }
+  std::ifstream in(expected.file);
+  if (!in) {
+    std::cout << "FAIL: cannot read " << expected.file << '\n';
+    return 1;
+  }
+
+  std::map<std::string, std::string> header;
+  std::vector<std::string> columns;
+  std::vector<std::string> failures;
+  long rows = 0, comments = 0, lineNumber = 0;
+  double step = NAN;
+  std::string line;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    const std::string where = "line " + std::to_string(lineNumber) + ": ";
+    if (line.rfind("# t=", 0) == 0 && !columns.empty()) {
+      ++comments;  // an F-key change between rows
+      continue;
+    }
+    if (line.rfind("# ", 0) == 0) {
+      if (rows > 0) failures.push_back(where + "header line after the first row: " + line);
+      if (line.rfind("# columns:", 0) == 0) {
+        for (const auto& name : split(line.substr(10), ' '))
+          if (!name.empty()) columns.push_back(name);
+        continue;
+      }
+      const auto colon = line.find(": ");
+      if (colon != std::string::npos) header[line.substr(2, colon - 2)] = line.substr(colon + 2);
+      if (header.count("step_seconds")) parseNumber(header["step_seconds"], step);
+      continue;
+    }
+    if (columns.empty()) {
+      failures.push_back(where + "row before the '# columns:' line");
+      break;
+    }
+    const auto fields = split(line, '\t');
+    if (fields.size() != columns.size()) {
+      failures.push_back(where + std::to_string(fields.size()) + " fields, expected " + std::to_string(columns.size()));
+      continue;
+    }
+    std::vector<double> values(fields.size());
+    bool numeric = true;
+    for (size_t i = 0; i < fields.size(); ++i) numeric = numeric && parseNumber(fields[i], values[i]);
+    if (!numeric) {
+      failures.push_back(where + "not all fields are finite numbers: " + line);
+      continue;
+    }
+    const double due = rows * expected.interval;
+    // Rows are written when the simulated time (a sum of steps) reaches the
+    // grid point within half a step; without a step in the header nothing fits.
+    if (!(std::fabs(values[0] - due) <= 0.5 * step + 1e-12))
+      failures.push_back(where + "time " + fields[0] + " is not the grid point " + std::to_string(due));
+    ++rows;
+    if (failures.size() > 10) break;
+  }
+
+  for (const char* key : {"ode_version", "ode_precision", "step_seconds", "erp", "cfm", "solver", "iterations"})
+    if (!header.count(key)) failures.push_back(std::string("header lacks '# ") + key + ": ...'");
+  if (columns != expected.columns) {
+    std::string got;
+    for (const auto& c : columns) got += c + " ";
+    failures.push_back("columns are '" + got + "'");
+  }
+  if (rows != expected.rows)
+    failures.push_back(std::to_string(rows) + " rows, expected " + std::to_string(expected.rows));
+
+  std::cout << expected.file << ": " << header.size() << " header entries, " << rows << " rows, " << comments
+            << " comment lines\n";
+  for (const auto& failure : failures) std::cout << "FAIL: " << failure << '\n';
+  if (failures.empty()) std::cout << "ok: header, columns, " << rows << " rows on the " << expected.interval << " s grid\n";
+  return failures.empty() ? 0 : 1;
+}
