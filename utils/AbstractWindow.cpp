@@ -10,7 +10,9 @@
 #include <sstream>
 
 #include "ExitCodes.h"
+#include "MeasurementLog.h"
 #include "OdeMessages.h"
+#include "SpringDamper.h"
 
 namespace odelab {
 
@@ -20,6 +22,13 @@ namespace {
 // can produce more, so allow a few extra.
 constexpr int MAX_CONTACTS = 16;
 constexpr double NOTICE_SECONDS = 4.0;
+// Rewind marks every quarter simulated second; the live plot samples every
+// hundredth. Contact markers are capped so a huge pile cannot flood the renderer.
+constexpr double SNAPSHOT_INTERVAL = 0.25;
+constexpr double CHART_INTERVAL = 0.01;
+constexpr size_t MAX_CONTACT_MARKERS = 4096;
+constexpr double MIN_TIME_SCALE = 1.0 / 32.0;
+constexpr double MAX_TIME_SCALE = 8.0;
 
 std::string formatValue(double value) {
   std::ostringstream out;
@@ -51,9 +60,13 @@ bool parseSpaceKind(const std::string& text, SpaceKind& kind) {
 AbstractWindow::AbstractWindow(std::string title, WorldSettings defaults)
     : title_(std::move(title)), settings_(defaults) {
   bindSharedKeys();
+  bindTimeAndViewKeys();
 }
 
-AbstractWindow::~AbstractWindow() { destroyWorld(); }
+AbstractWindow::~AbstractWindow() {
+  destroyWorld();
+  if (runLog_) std::fclose(runLog_);
+}
 
 void AbstractWindow::addOptions(CLI::App& app) { (void)app; }
 
@@ -61,11 +74,38 @@ void AbstractWindow::initialize(const RunOptions& options) {
   options_ = options;
   initialCamera(camera_);
   createWorld();
+  startEpoch();
 }
 
 void AbstractWindow::reset() {
+  ++epoch_;
   destroyWorld();
   createWorld();
+  startEpoch();
+}
+
+// A new run begins: what the timeline replays starts from here.
+void AbstractWindow::startEpoch() {
+  timeline_.clear();
+  epochSettings_ = settings_;
+  epochSpace_ = spaceKind_;
+  epochStepper_ = stepper_;
+  for (auto& kept : keptValues_) kept.save();
+}
+
+void AbstractWindow::replayTo(long long step) {
+  replaying_ = true;
+  settings_ = epochSettings_;
+  spaceKind_ = epochSpace_;
+  stepper_ = epochStepper_;
+  for (auto& kept : keptValues_) kept.restore();
+  destroyWorld();
+  createWorld();
+  timeline_.rewindCursor();
+  while (steps_ < step && stepOnce()) {
+  }
+  replaying_ = false;
+  paused_ = true;
 }
 
 void AbstractWindow::shutdown() { destroyWorld(); }
@@ -85,6 +125,12 @@ void AbstractWindow::createWorld() {
   wallSeconds_ = 0.0;
   blowUpReason_.clear();
   clock_.reset();
+  dragIndex_ = -1;
+  contactMarkers_.clear();
+  chart_.clear();
+  chart_.label = plotLabel();
+  nextChartTime_ = 0.0;
+  nextSnapshotTime_ = SNAPSHOT_INTERVAL;
   configureWorld();
   buildScene();
 }
@@ -149,6 +195,13 @@ void AbstractWindow::nearCallback(void* data, dGeomID o1, dGeomID o2) {
     dJointAttach(joint, b1, b2);
   }
   self->contactsThisStep_ += count;
+  if (self->viewFlags_.contacts)
+    for (int i = 0; i < count && self->contactMarkers_.size() < MAX_CONTACT_MARKERS; ++i) {
+      const dContactGeom& g = contact[i].geom;
+      self->contactMarkers_.push_back({{float(g.pos[0]), float(g.pos[1]), float(g.pos[2])},
+                                       {float(g.normal[0]), float(g.normal[1]), float(g.normal[2])},
+                                       float(g.depth)});
+    }
 }
 
 void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) {
@@ -158,7 +211,12 @@ void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& sur
 
 bool AbstractWindow::stepOnce() {
   const auto start = std::chrono::steady_clock::now();
+  timeline_.applyDue(steps_, [this](const TimelineEvent& event) { applyEvent(event); });
+  if (dragIndex_ >= 0)
+    if (const dBodyID body = objects_[dragIndex_]->getBody())
+      DragSpring::apply(body, dragGrab_, dragTarget_, settings_.gravity);
   contactsThisStep_ = 0;
+  if (viewFlags_.contacts) contactMarkers_.clear();
   dSpaceCollide(space_, this, &AbstractWindow::nearCallback);
   if (settings_.solver == Solver::QuickStep)
     dWorldQuickStep(world_, settings_.step);
@@ -170,6 +228,16 @@ bool AbstractWindow::stepOnce() {
   ++steps_;
   lastStepWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   afterStep();
+  timeline_.extendHorizon(steps_);
+  if (simulatedTime_ >= nextSnapshotTime_) {
+    timeline_.markSnapshot(steps_);
+    nextSnapshotTime_ += SNAPSHOT_INTERVAL;
+  }
+  if (simulatedTime_ >= nextChartTime_) {
+    double value;
+    if (plotValue(value)) chart_.add(simulatedTime_, value);
+    nextChartTime_ += CHART_INTERVAL;
+  }
   if (!stateIsFinite()) {
     std::ostringstream reason;
     reason << "simulation blew up: non-finite body state at t=" << formatValue(simulatedTime_) << " s (step "
@@ -195,7 +263,7 @@ bool AbstractWindow::stateIsFinite() const {
 
 void AbstractWindow::advanceFrame(double elapsedSeconds) {
   wallSeconds_ += elapsedSeconds;
-  const int stepsNow = clock_.advance(elapsedSeconds, settings_.step);
+  const int stepsNow = paused_ ? 0 : clock_.advance(elapsedSeconds, settings_.step, timeScale_);
   const double simBefore = simulatedTime_;
   for (int i = 0; i < stepsNow; ++i) {
     if (!stepOnce()) {
@@ -292,6 +360,7 @@ Metrics AbstractWindow::metrics() const {
   m.set("non_finite", blowUpReason_.empty() ? 0 : 1);
   m.set("state_hash", static_cast<double>(stateHash()));
   addMetrics(m);
+  for (const auto& [name, value] : marks_.entries()) m.set(name, value);
   return m;
 }
 
@@ -315,6 +384,7 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
 
 void AbstractWindow::applySettings(const std::string& change) {
   settings_.applyTo(world_);
+  lastChange_ = change;
   std::ostringstream line;
   line << "t=" << formatValue(simulatedTime_) << " s: " << change;
   notify(line.str());
@@ -329,6 +399,12 @@ void AbstractWindow::notify(const std::string& message) {
 
 void AbstractWindow::initialCamera(Camera& camera) const { camera.lookAt({0, 6, 16}, {0, 1, 0}); }
 
+void AbstractWindow::bindViewKey(SDL_Keycode key, std::string keyName, std::string description,
+                                 std::function<void(int)> action) {
+  bindKey(key, std::move(keyName), std::move(description), std::move(action));
+  keyBindings_.back().recorded = false;
+}
+
 void AbstractWindow::bindKey(SDL_Keycode key, std::string keyName, std::string description,
                              std::function<void(int)> action) {
   // A scene binding replaces a shared one on the same key.
@@ -339,12 +415,74 @@ void AbstractWindow::bindKey(SDL_Keycode key, std::string keyName, std::string d
 }
 
 bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
-  for (const auto& binding : keyBindings_)
-    if (binding.key == key) {
+  for (const auto& binding : keyBindings_) {
+    if (binding.key != key) continue;
+    if (!binding.recorded || replaying_) {
       binding.action(shift ? -1 : +1);
       return true;
     }
+    // A recorded key goes on the timeline, unless it began a new run (R).
+    const long long epochBefore = epoch_;
+    lastChange_.clear();
+    binding.action(shift ? -1 : +1);
+    if (epoch_ == epochBefore) {
+      TimelineEvent event;
+      event.step = steps_;
+      event.kind = TimelineEvent::Kind::Key;
+      event.key = key;
+      event.shift = shift;
+      recordEvent(event);
+    }
+    logAction((shift ? "Shift+" : "") + binding.keyName + ": " +
+              (lastChange_.empty() ? binding.description : lastChange_));
+    return true;
+  }
   return false;
+}
+
+void AbstractWindow::runBinding(SDL_Keycode key, bool shift) {
+  for (const auto& binding : keyBindings_)
+    if (binding.key == key) {
+      binding.action(shift ? -1 : +1);
+      return;
+    }
+}
+
+void AbstractWindow::recordEvent(TimelineEvent event) {
+  if (!replaying_) timeline_.record(event);
+}
+
+void AbstractWindow::applyEvent(const TimelineEvent& event) {
+  switch (event.kind) {
+    case TimelineEvent::Kind::Key:
+      runBinding(event.key, event.shift);
+      break;
+    case TimelineEvent::Kind::Drag:
+      dragIndex_ = event.objectIndex < static_cast<int>(objects_.size()) ? event.objectIndex : -1;
+      std::copy(event.grab, event.grab + 3, dragGrab_);
+      std::copy(event.target, event.target + 3, dragTarget_);
+      break;
+    case TimelineEvent::Kind::Release:
+      dragIndex_ = -1;
+      break;
+  }
+}
+
+void AbstractWindow::logAction(const std::string& text) {
+  // The run log exists for windowed sessions, where a person presses keys.
+  if (options_.headless || runLogFailed_) return;
+  if (!runLog_) {
+    const std::string path = joinPath(options_.outDir, programName() + "_run_log.txt");
+    runLog_ = std::fopen(path.c_str(), "w");
+    if (!runLog_) {
+      runLogFailed_ = true;
+      notify("cannot write the run log '" + path + "'");
+      return;
+    }
+    std::fprintf(runLog_, "# %s: inputs that changed the simulation, with their simulated time\n", title_.c_str());
+  }
+  std::fprintf(runLog_, "t=%.6g s (step %lld): %s\n", simulatedTime_, steps_, text.c_str());
+  std::fflush(runLog_);
 }
 
 void AbstractWindow::stepSetting(const char* what, const std::function<void()>& change) {
@@ -390,14 +528,162 @@ void AbstractWindow::bindSharedKeys() {
   });
 }
 
+PickHit AbstractWindow::pickAt(const double origin[3], const double direction[3]) const {
+  return pickObject(objects_, origin, direction);
+}
+
+void AbstractWindow::beginDrag(const PickHit& hit, const double target[3]) {
+  if (hit.objectIndex < 0 || hit.objectIndex >= static_cast<int>(objects_.size())) return;
+  const dBodyID body = objects_[hit.objectIndex]->getBody();
+  if (!body) return;
+  dVector3 local;
+  dBodyGetPosRelPoint(body, hit.point[0], hit.point[1], hit.point[2], local);
+  TimelineEvent event;
+  event.step = steps_;
+  event.kind = TimelineEvent::Kind::Drag;
+  event.objectIndex = hit.objectIndex;
+  std::copy(local, local + 3, event.grab);
+  std::copy(target, target + 3, event.target);
+  applyEvent(event);
+  recordEvent(event);
+  marks_.set("drag_start_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
+  logAction("drag " + std::to_string(hit.objectIndex));
+}
+
+void AbstractWindow::moveDrag(const double target[3]) {
+  if (dragIndex_ < 0) return;
+  TimelineEvent event;
+  event.step = steps_;
+  event.kind = TimelineEvent::Kind::Drag;
+  event.objectIndex = dragIndex_;
+  std::copy(dragGrab_, dragGrab_ + 3, event.grab);
+  std::copy(target, target + 3, event.target);
+  applyEvent(event);
+  recordEvent(event);
+}
+
+void AbstractWindow::endDrag() {
+  if (dragIndex_ < 0) return;
+  if (const dBodyID body = objects_[dragIndex_]->getBody())
+    marks_.set("drag_end_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
+  TimelineEvent event;
+  event.step = steps_;
+  event.kind = TimelineEvent::Kind::Release;
+  applyEvent(event);
+  recordEvent(event);
+  logAction("release");
+}
+
+const AbstractObject* AbstractWindow::draggedObject() const {
+  return dragIndex_ >= 0 ? objects_[dragIndex_].get() : nullptr;
+}
+
+bool AbstractWindow::takeScreenshotRequest() {
+  const bool requested = screenshotRequested_;
+  screenshotRequested_ = false;
+  return requested;
+}
+
+std::string AbstractWindow::programName() const { return title_.substr(0, title_.find(' ')); }
+
+void AbstractWindow::mark(const std::string& label) {
+  marks_.set("mark_" + label + "_steps", static_cast<double>(steps_));
+  marks_.set("mark_" + label + "_sim_seconds", simulatedTime_);
+  marks_.set("mark_" + label + "_hash", static_cast<double>(stateHash()));
+}
+
+bool AbstractWindow::plotValue(double& value) const {
+  value = contactsLastStep_;
+  return true;
+}
+
+void AbstractWindow::bindTimeAndViewKeys() {
+  bindViewKey(SDLK_p, "P", "pause / resume", [this](int) { paused_ = !paused_; });
+  bindViewKey(SDLK_o, "O", "advance exactly one step (pauses first)", [this](int) {
+    paused_ = true;
+    if (!stepOnce()) {
+      const std::string reason = blowUpReason_;
+      reset();
+      notify(reason + "; scene reset");
+    }
+  });
+  bindViewKey(SDLK_MINUS, "-", "slower: halve the time scale (down to 1/32)",
+              [this](int) { timeScale_ = std::max(MIN_TIME_SCALE, timeScale_ * 0.5); });
+  bindViewKey(SDLK_EQUALS, "=", "faster: double the time scale (up to 8x, as far as the machine keeps up)",
+              [this](int) { timeScale_ = std::min(MAX_TIME_SCALE, timeScale_ * 2.0); });
+  bindViewKey(SDLK_COMMA, ",", "rewind to the previous snapshot (every 0.25 s of simulated time) and pause", [this](int) {
+    const long long target = std::max(0LL, timeline_.previousSnapshot(steps_));
+    replayTo(target);
+    notify("rewound to t=" + formatValue(simulatedTime_) + " s");
+  });
+  bindViewKey(SDLK_PERIOD, ".", "forward to the next snapshot, replaying what was recorded, and pause", [this](int) {
+    const long long target = timeline_.nextSnapshot(steps_);
+    paused_ = true;
+    if (target < 0) {
+      notify("no later snapshot: press P to run on");
+      return;
+    }
+    while (steps_ < target && stepOnce()) {
+    }
+    notify("forward to t=" + formatValue(simulatedTime_) + " s");
+  });
+  bindViewKey(SDLK_h, "H", "help: this key list on / off", [this](int) { viewFlags_.help = !viewFlags_.help; });
+  bindViewKey(SDLK_l, "L", "live plot of the scene's measurement on / off",
+              [this](int) { viewFlags_.plot = !viewFlags_.plot; });
+  bindViewKey(SDLK_c, "C", "contact points and normals on / off", [this](int) {
+    viewFlags_.contacts = !viewFlags_.contacts;
+    contactMarkers_.clear();
+  });
+  bindViewKey(SDLK_j, "J", "joint anchors and axes on / off", [this](int) { viewFlags_.joints = !viewFlags_.joints; });
+  bindViewKey(SDLK_x, "X", "bounding boxes on / off", [this](int) { viewFlags_.boxes = !viewFlags_.boxes; });
+  bindViewKey(SDLK_v, "V", "wireframe on / off", [this](int) { viewFlags_.wireframe = !viewFlags_.wireframe; });
+  bindViewKey(SDLK_F12, "F12", "save a screenshot (PNG named with the test and the simulated time) in --out-dir",
+              [this](int) { screenshotRequested_ = true; });
+}
+
+std::vector<std::string> AbstractWindow::helpLines() const {
+  std::vector<std::string> lines{
+      "left mouse   on a body: drag it with a spring; elsewhere: toggle mouse-look",
+      "W/S/A/D      move the camera forward / back / left / right along the view",
+      "Shift        reverses every F-key",
+  };
+  for (const auto& binding : keyBindings_) {
+    std::string name = binding.keyName;
+    name.resize(std::max<size_t>(name.size(), 12), ' ');
+    lines.push_back(name + " " + binding.description);
+  }
+  return lines;
+}
+
 void AbstractWindow::remove(const AbstractObject* object) {
   removeIf([object](const AbstractObject& o) { return &o == object; });
 }
 
 void AbstractWindow::removeIf(const std::function<bool(const AbstractObject&)>& predicate) {
+  const AbstractObject* dragged = draggedObject();
   objects_.erase(std::remove_if(objects_.begin(), objects_.end(),
                                 [&](const std::unique_ptr<AbstractObject>& o) { return predicate(*o); }),
                  objects_.end());
+  // The dragged object's index moves with the removal, or the drag ends.
+  dragIndex_ = -1;
+  for (size_t i = 0; dragged && i < objects_.size(); ++i)
+    if (objects_[i].get() == dragged) dragIndex_ = static_cast<int>(i);
+}
+
+// ERP and CFM as the spring and damper they mean at this step, and the ERP
+// and CFM that would keep that spring at the next step size (F8).
+std::string AbstractWindow::springLine() const {
+  const SpringDamper spring = springDamperOf(settings_.erp, settings_.cfm, settings_.step);
+  if (spring.rigid) return "constraints rigid (CFM 0): no spring; ERP corrects " + formatValue(settings_.erp) +
+                           " of the error per step";
+  WorldSettings next = settings_;
+  ParameterStepper::stepStepSize(next, +1);
+  const ErpCfm keep = erpCfmFor(spring, next.step);
+  std::ostringstream s;
+  s << "spring kp " << formatValue(spring.kp) << " N/m, damper kd " << formatValue(spring.kd)
+    << " N s/m; at step " << formatValue(next.step) << " keep them with ERP " << formatValue(keep.erp) << ", CFM "
+    << formatValue(keep.cfm);
+  return s.str();
 }
 
 std::vector<std::string> AbstractWindow::hudLines() const {
@@ -420,6 +706,19 @@ std::vector<std::string> AbstractWindow::hudLines() const {
   s.str("");
   s << "bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << contactsLastStep_;
   lines.push_back(s.str());
+  s.str("");
+  s << (paused_ ? "PAUSED (P runs, O steps)" : "running") << "   time scale x" << formatValue(timeScale_)
+    << "   rewind , .  (" << timeline_.snapshotCount() << " snapshots)   H help";
+  lines.push_back(s.str());
+  lines.push_back(springLine());
+  if (const AbstractObject* object = draggedObject()) {
+    const dReal* v = dBodyGetLinearVel(object->getBody());
+    s.str("");
+    s << "dragging object #" << dragIndex_ << " (" << (object->shape() == Shape::Box ? "box" : "sphere") << ", "
+      << formatValue(object->mass()) << " kg), speed "
+      << formatValue(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) << " m/s";
+    lines.push_back(s.str());
+  }
   addHudLines(lines);
   if (!notice_.empty() && wallSeconds_ < noticeUntil_) lines.push_back(notice_);
   for (const auto& message : OdeMessages::recent()) lines.push_back(message);

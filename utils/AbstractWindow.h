@@ -4,6 +4,7 @@
 #include <ode/ode.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -14,8 +15,12 @@
 
 #include "AbstractObject.h"
 #include "Camera.h"
+#include "DebugMarkers.h"
+#include "DragSpring.h"
 #include "FixedStepClock.h"
 #include "Metrics.h"
+#include "StripChart.h"
+#include "Timeline.h"
 #include "WorldSettings.h"
 
 namespace CLI {
@@ -41,6 +46,8 @@ struct RunOptions {
   std::string fontPath;
   int width = 1280;
   int height = 720;
+  std::string recordDir;   // window: save every frame as a numbered PNG here
+  std::string eventsFile;  // window: scripted input (see doc/manual.md, "Scripted input")
 };
 
 // One key of the scene: the same table drives dispatch, --help and doc/.
@@ -49,6 +56,19 @@ struct KeyBinding {
   std::string keyName;
   std::string description;
   std::function<void(int direction)> action;  // direction is -1 with Shift, else +1
+  // Whether the key changes the simulation: such presses are recorded on the
+  // timeline (rewind replays them) and in the run log. View keys are not.
+  bool recorded = true;
+};
+
+// What the debug drawing and overlays show; toggled by view keys.
+struct ViewFlags {
+  bool contacts = false;   // C: contact points and normals
+  bool joints = false;     // J: joint anchors and axes
+  bool boxes = false;      // X: axis-aligned bounding boxes
+  bool wireframe = false;  // V: wireframe
+  bool plot = false;       // L: live plot of the scene's measurement
+  bool help = false;       // H: the key list
 };
 
 // A sphere around what the scene shows, used to fit the shadow map.
@@ -112,6 +132,41 @@ class AbstractWindow {
   void setFramesPerSecond(double fps) { framesPerSecond_ = fps; }
   const RunOptions& runOptions() const { return options_; }
 
+  // ---- time: P pause, O one step, - / = slower / faster, , / . rewind ----
+  bool paused() const { return paused_; }
+  double timeScale() const { return timeScale_; }
+  const Timeline& timeline() const { return timeline_; }
+  // Rebuilds the state at `step` of this run by resetting and replaying the
+  // recorded inputs; leaves the simulation paused there.
+  void replayTo(long long step);
+
+  // ---- mouse drag ---------------------------------------------------------
+  PickHit pickAt(const double origin[3], const double direction[3]) const;
+  // Grabs the hit object at the hit point and pulls it toward `target`.
+  void beginDrag(const PickHit& hit, const double target[3]);
+  void moveDrag(const double target[3]);
+  void endDrag();
+  bool dragging() const { return dragIndex_ >= 0; }
+  const AbstractObject* draggedObject() const;
+  const double* dragTarget() const { return dragTarget_; }
+
+  // ---- debug drawing and overlays -------------------------------------------
+  const ViewFlags& viewFlags() const { return viewFlags_; }
+  const std::vector<ContactMarker>& contactMarkers() const { return contactMarkers_; }
+  std::vector<JointMarker> jointMarkers() const { return collectJointMarkers(objects_); }
+  const StripChart& chart() const { return chart_; }
+  // The key list: mouse and camera keys, then every binding of the table.
+  std::vector<std::string> helpLines() const;
+  // True once per F12 press.
+  bool takeScreenshotRequest();
+  // "test0" from "test0 - Box & Sphere": the stem of file names.
+  std::string programName() const;
+
+  // ---- scripted checks --------------------------------------------------------
+  // Records the current step, simulated time and state hash as metrics
+  // mark_<label>_steps, mark_<label>_sim_seconds, mark_<label>_hash.
+  void mark(const std::string& label);
+
   // ---- state, for scenes and tests -----------------------------------------
   dWorldID world() const { return world_; }
   dSpaceID space() const { return space_; }
@@ -158,10 +213,25 @@ class AbstractWindow {
   virtual double defaultHeadlessSeconds() const { return 10.0; }
   // Where the camera starts.
   virtual void initialCamera(Camera& camera) const;
+  // The live plot's value after a step and its label with unit; the default
+  // plots the contacts of the last step.
+  virtual bool plotValue(double& value) const;
+  virtual std::string plotLabel() const { return "contacts in the last step"; }
 
   // Scene keys. B / N / F5 are bound through these when the scene supports them.
   void bindKey(SDL_Keycode key, std::string keyName, std::string description,
                std::function<void(int direction)> action);
+  // A key that changes only the view (not recorded on the timeline).
+  void bindViewKey(SDL_Keycode key, std::string keyName, std::string description,
+                   std::function<void(int direction)> action);
+  // A scene value that keys change and that survives R (a launch velocity, a
+  // friction coefficient): rewind restores it to its value at the start of
+  // the run before replaying the recorded key presses.
+  template <class T>
+  void keepAcrossRewind(T& value) {
+    auto saved = std::make_shared<T>(value);
+    keptValues_.push_back({[&value, saved] { *saved = value; }, [&value, saved] { value = *saved; }});
+  }
 
   // Objects are owned here; scenes keep raw pointers, valid until the next reset.
   template <class T, class... Args>
@@ -190,7 +260,14 @@ class AbstractWindow {
   static void nearCallback(void* data, dGeomID o1, dGeomID o2);
   void createWorld();
   void destroyWorld();
+  void startEpoch();
+  void applyEvent(const TimelineEvent& event);
+  void runBinding(SDL_Keycode key, bool shift);
+  void recordEvent(TimelineEvent event);
+  void logAction(const std::string& text);
   void bindSharedKeys();
+  void bindTimeAndViewKeys();
+  std::string springLine() const;
   void stepSetting(const char* what, const std::function<void()>& change);
   bool stateIsFinite() const;
 
@@ -224,6 +301,36 @@ class AbstractWindow {
   double rateWindowReal_ = 0.0, rateWindowSim_ = 0.0;
   std::string notice_;
   double noticeUntil_ = 0.0;  // in real seconds of window time
+
+  // Time control and the timeline of recorded inputs.
+  bool paused_ = false;
+  double timeScale_ = 1.0;
+  Timeline timeline_;
+  bool replaying_ = false;
+  long long epoch_ = 0;  // counts resets that start a new run (R, not replays)
+  WorldSettings epochSettings_;
+  SpaceKind epochSpace_ = SpaceKind::Simple;
+  ParameterStepper epochStepper_;
+  struct KeptValue {
+    std::function<void()> save, restore;
+  };
+  std::vector<KeptValue> keptValues_;
+  double nextSnapshotTime_ = 0.0;
+
+  // Mouse drag: the object's index, the grabbed point in its body's frame.
+  int dragIndex_ = -1;
+  double dragGrab_[3] = {0, 0, 0};
+  double dragTarget_[3] = {0, 0, 0};
+
+  ViewFlags viewFlags_;
+  std::vector<ContactMarker> contactMarkers_;
+  StripChart chart_;
+  double nextChartTime_ = 0.0;
+  bool screenshotRequested_ = false;
+  Metrics marks_;
+  std::FILE* runLog_ = nullptr;
+  std::string lastChange_;  // what applySettings() reported during the last key
+  bool runLogFailed_ = false;
 };
 
 }  // namespace odelab

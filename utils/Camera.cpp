@@ -33,6 +33,13 @@ void Camera::turn(float yawDegrees, float pitchDegrees) {
   pitch_ = std::clamp(pitch_ + pitchDegrees, -PITCH_LIMIT, PITCH_LIMIT);
 }
 
+void Camera::rayThrough(float ndcX, float ndcY, float aspect, glm::vec3& origin, glm::vec3& direction) const {
+  const float halfHeight = std::tan(glm::radians(fieldOfViewDegrees()) * 0.5f);
+  const glm::vec3 f = forward(), r = right(), u = glm::cross(r, f);
+  origin = position_;
+  direction = glm::normalize(f + r * (ndcX * halfHeight * aspect) + u * (ndcY * halfHeight));
+}
+
 glm::mat4 Camera::viewMatrix() const { return glm::lookAt(position_, position_ + forward(), glm::vec3(0, 1, 0)); }
 
 }  // namespace odelab

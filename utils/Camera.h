@@ -19,6 +19,9 @@ class Camera {
   glm::vec3 forward() const;
   glm::vec3 right() const;
   glm::mat4 viewMatrix() const;
+  // The ray from the eye through a window point given in normalised device
+  // coordinates (x, y in [-1, 1], y up) for a window of the given aspect.
+  void rayThrough(float ndcX, float ndcY, float aspect, glm::vec3& origin, glm::vec3& direction) const;
   float yawDegrees() const { return yaw_; }
   float pitchDegrees() const { return pitch_; }
   float fieldOfViewDegrees() const { return 60.0f; }

@@ -100,6 +100,11 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
   app.add_option("--frames", options.frames, "frames to render before --screenshot")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
+  app.add_option("--record", options.recordDir,
+                 "window: save every frame as DIR/<test>_frame_000001.png ... (see doc/manual.md for a video)");
+  app.add_option("--events", options.eventsFile,
+                 "window: play scripted input from FILE (see doc/manual.md, \"Scripted input\")")
+      ->check(CLI::ExistingFile);
   app.add_option("--shader-dir", options.shaderDir, "folder holding the GLSL shaders (see doc/manual.md)");
   app.add_option("--font", options.fontPath, "TTF font for the HUD (see doc/manual.md)");
   app.add_option("--width", options.width, "window width in pixels")->check(CLI::Range(64, 16384))->capture_default_str();
@@ -113,21 +118,20 @@ void validateRunOptions(const RunOptions& options) {
     throw UsageError("--out-dir: '" + options.outDir + "' does not exist or is not a writable folder");
   requireWritableFolderOf("--metrics-json", options.metricsJson);
   requireWritableFolderOf("--screenshot", options.screenshot);
+  if (!options.recordDir.empty() && !isWritableDirectory(options.recordDir))
+    throw UsageError("--record: '" + options.recordDir + "' does not exist or is not a writable folder");
+  if (options.headless && !options.recordDir.empty())
+    throw UsageError("--record: needs a window; it cannot be combined with --headless");
+  if (options.headless && !options.eventsFile.empty())
+    throw UsageError("--events: needs a window; it cannot be combined with --headless");
   if (options.headless && !options.screenshot.empty())
     throw UsageError("--screenshot: needs a window; it cannot be combined with --headless");
 }
 
 std::string keysHelp(const AbstractWindow& scene) {
-  std::ostringstream out;
-  out << "Keys (in the window; Shift reverses every F-key):\n"
-      << "  left mouse   toggle camera mouse-look (cursor hidden, mouse turns the view)\n"
-      << "  W/S/A/D      move the camera forward / back / left / right along the view\n";
-  for (const auto& binding : scene.keyBindings()) {
-    std::string name = binding.keyName;
-    name.resize(std::max<size_t>(name.size(), 12), ' ');
-    out << "  " << name << ' ' << binding.description << '\n';
-  }
-  return out.str();
+  std::string text = "Keys (in the window):\n";
+  for (const auto& line : scene.helpLines()) text += "  " + line + "\n";
+  return text;
 }
 
 }  // namespace odelab::cli

@@ -4,8 +4,8 @@
 
 namespace odelab {
 
-int FixedStepClock::advance(double elapsedSeconds, double step) {
-  timeCache_ += std::min(std::max(elapsedSeconds, 0.0), MAXIMUM_ELAPSED_TIME);
+int FixedStepClock::advance(double elapsedSeconds, double step, double timeScale) {
+  timeCache_ += std::min(std::max(elapsedSeconds, 0.0), MAXIMUM_ELAPSED_TIME) * timeScale;
   int steps = 0;
   while (timeCache_ >= step) {
     timeCache_ -= step;

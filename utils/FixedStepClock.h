@@ -10,8 +10,9 @@ class FixedStepClock {
  public:
   static constexpr double MAXIMUM_ELAPSED_TIME = 1.0 / 100.0;
 
-  // Returns how many steps of `step` seconds to run for this frame.
-  int advance(double elapsedSeconds, double step);
+  // Returns how many steps of `step` seconds to run for this frame. The
+  // clamped frame time is multiplied by `timeScale` (slow motion below 1).
+  int advance(double elapsedSeconds, double step, double timeScale = 1.0);
 
   double timeCache() const { return timeCache_; }
   void reset() { timeCache_ = 0.0; }

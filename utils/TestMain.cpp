@@ -25,7 +25,11 @@ class OdeLibrary {
 
 int run(AbstractWindow& scene, const RunOptions& options) {
   scene.initialize(options);
-  return options.headless ? scene.runHeadless() : runWindow(scene, options);
+  if (options.headless) return scene.runHeadless();
+  const int status = runWindow(scene, options);
+  // A window run reports too, so scripted sessions can be checked.
+  if (status == exit_code::OK && !options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);
+  return status;
 }
 
 }  // namespace

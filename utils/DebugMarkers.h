@@ -1,0 +1,28 @@
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "AbstractObject.h"
+
+namespace odelab {
+
+// What the debug drawing shows, gathered on the physics side so the renderer
+// only draws: contact points with normals (recorded in the near callback
+// while shown) and the anchors and axes of every non-contact joint.
+struct ContactMarker {
+  float position[3];
+  float normal[3];
+  float depth;
+};
+
+struct JointMarker {
+  float anchor[3];   // on the first body
+  float anchor2[3];  // on the second body (equal to anchor when the joint holds)
+  float axis[3];
+  bool hasAxis;      // hinges have an axis; ball joints do not
+};
+
+std::vector<JointMarker> collectJointMarkers(const std::vector<std::unique_ptr<AbstractObject>>& objects);
+
+}  // namespace odelab

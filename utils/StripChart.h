@@ -1,0 +1,31 @@
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <string>
+
+namespace odelab {
+
+// The live plot's data: the scene's headline measurement against simulated
+// time, the latest CAPACITY samples.
+class StripChart {
+ public:
+  static constexpr std::size_t CAPACITY = 1000;
+  struct Sample {
+    double time;
+    double value;
+  };
+
+  void clear() { samples_.clear(); }
+  void add(double time, double value) {
+    samples_.push_back({time, value});
+    if (samples_.size() > CAPACITY) samples_.pop_front();
+  }
+  const std::deque<Sample>& samples() const { return samples_; }
+  std::string label;  // what is plotted, with its unit
+
+ private:
+  std::deque<Sample> samples_;
+};
+
+}  // namespace odelab
