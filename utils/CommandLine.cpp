@@ -29,6 +29,9 @@ std::string directoryOf(const std::string& file) {
 
 void requireWritableFolderOf(const char* option, const std::string& file) {
   if (file.empty()) return;
+  struct stat info {};
+  if (stat(file.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    throw UsageError(std::string(option) + ": '" + file + "' is a folder, not a file");
   const std::string folder = directoryOf(file);
   if (!isWritableDirectory(folder))
     throw UsageError(std::string(option) + ": cannot write '" + file + "': folder '" + folder +
@@ -111,6 +114,13 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
   app.add_option("--height", options.height, "window height in pixels")
       ->check(CLI::Range(64, 16384))
       ->capture_default_str();
+}
+
+void rejectEmptyValues(CLI::App& app) {
+  const CLI::Validator nonEmpty(
+      [](std::string& text) -> std::string { return text.empty() ? "an empty value is not allowed" : ""; }, "");
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_size() > 0) option->check(nonEmpty);
 }
 
 void validateRunOptions(const RunOptions& options) {

@@ -30,6 +30,10 @@ CLI::Validator positive(double max = 1e12);
 // --shader-dir, --font, --width, --height.
 void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& settings);
 
+// Makes every option that takes a value refuse an empty one ("--seed=").
+// Call after every option is added.
+void rejectEmptyValues(CLI::App& app);
+
 // Checks that need the file system: --out-dir is a writable directory, the
 // folders of --metrics-json and --screenshot exist and are writable, and the
 // window-only options are not combined with --headless. Throws UsageError.

@@ -19,6 +19,7 @@ Parsed parse(std::vector<std::string> args) {
   Parsed result;
   CLI::App app;
   odelab::cli::addCommonOptions(app, result.options, result.settings);
+  odelab::cli::rejectEmptyValues(app);
   args.insert(args.begin(), "test");
   std::vector<const char*> argv;
   for (const auto& a : args) argv.push_back(a.c_str());
@@ -68,7 +69,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadValue{"--iterations", "0"}, BadValue{"--iterations", "2.5"},
                       BadValue{"--iterations", "1e9"}, BadValue{"--sor", "2"}, BadValue{"--sor", "0"},
                       BadValue{"--solver", "fast"}, BadValue{"--seconds", "-1"}, BadValue{"--seconds", "0"},
-                      BadValue{"--seconds", "inf"}, BadValue{"--seed", "-3"}, BadValue{"--frames", "0"},
+                      BadValue{"--seconds", "inf"}, BadValue{"--seed", "-3"}, BadValue{"--seed", ""}, BadValue{"--font", ""},
+                      BadValue{"--metrics-json", "."}, BadValue{"--frames", "0"},
                       BadValue{"--out-dir", "/nonexistent-folder"},
                       BadValue{"--metrics-json", "/nonexistent-folder/m.json"}));
 
