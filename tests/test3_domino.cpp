@@ -1,0 +1,272 @@
+// test3 - Domino (thesis 5.4): plates standing one behind another along a
+// spiral, so that each falling plate knocks over the next: the chain reaction
+// passes kinetic energy on through contacts with Coulomb friction
+// (|Ft| <= mu |Fn|, contact mu 1.0 by default; F / G lower / raise it, up to
+// dInfinity). The thesis's lesson is about cost: the speed of the simulation
+// depends mainly on the number of active bodies, so auto-disable is on (with
+// linear and angular thresholds 0.1), QuickStep runs 8 iterations and the
+// step is 0.005 s; without auto-disable it is very slow, and some fallen
+// plates stay active even though they do not move.
+//
+// Measures the fraction of dominoes that fell, how long the chain took, how
+// many bodies are still active at the end, and the real-time factor.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "AbstractWindow.h"
+#include "Box.h"
+#include "CommandLine.h"
+#include "Plane.h"
+#include "TestMain.h"
+
+namespace {
+
+using namespace odelab;
+
+constexpr double DOMINO_THICKNESS = 0.2;  // along the path (proposed)
+constexpr double DOMINO_HEIGHT = 2.0;     // (proposed)
+constexpr double DOMINO_WIDTH = 1.0;      // across the path (proposed)
+constexpr double DOMINO_MASS = 1.0;       // (proposed)
+constexpr int DEFAULT_DOMINOES = 60;      // (proposed: 60 or more)
+constexpr double DOMINO_SPACING = 1.0;    // centre to centre along the path (proposed): half the height
+// Archimedean spiral r = SPIRAL_START_RADIUS + SPIRAL_PITCH * angle / 2 pi,
+// walked from the inside out, so any number of dominoes fits.
+constexpr double SPIRAL_START_RADIUS = 4.0;  // (proposed) tight enough to look like a spiral, loose
+                                             // enough that a 1 m wide plate still hits the next one
+constexpr double SPIRAL_PITCH = 2.5;         // m between turns (proposed): more than the plate width
+// The first domino starts leaning forward on its leading edge and is pushed:
+// without the push, a plate tipping from rest is slower than the 0.1
+// thresholds for the first 10 steps and auto-disable would freeze it.
+constexpr double FIRST_TILT_DEGREES = 10.0;  // (proposed) past the tipping angle atan(0.2 / 2) = 5.7 degrees
+constexpr double FIRST_PUSH = 1.0;           // rad/s about the leading edge (proposed): top moves at 2 m/s
+// A domino has fallen once it leans more than this from vertical: far past
+// the tipping angle (5.7 degrees), so it cannot stand up again; a fallen
+// domino rests on its successor at 50 degrees or more (see doc/tests/test3.md).
+constexpr double FALLEN_TILT_DEGREES = 30.0;
+constexpr double DEFAULT_MU = 1.0;  // the thesis's usual Coulomb coefficient
+constexpr double AUTO_DISABLE_THRESHOLD = 0.1;  // linear (m/s) and angular (rad/s), the thesis's
+// F / G walk through these friction coefficients; the last is dInfinity.
+const std::vector<double> MU_LADDER{0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 5.0, dInfinity};
+
+struct Placement {
+  double x, z;
+  double tangentX, tangentZ;  // unit direction of the path: the way this domino falls
+};
+
+// Positions along the spiral, DOMINO_SPACING apart (arc length), inside out.
+std::vector<Placement> spiralPlacements(int count) {
+  std::vector<Placement> placements;
+  const double growth = SPIRAL_PITCH / (2 * M_PI);  // dr / d(angle)
+  double angle = 0.0;
+  for (int i = 0; i < count; ++i) {
+    const double r = SPIRAL_START_RADIUS + growth * angle;
+    const double c = std::cos(angle), s = std::sin(angle);
+    // d/d(angle) of (r cos, r sin): the path's direction of travel.
+    const double dx = growth * c - r * s, dz = growth * s + r * c;
+    const double length = std::hypot(dx, dz);
+    placements.push_back({r * c, r * s, dx / length, dz / length});
+    angle += DOMINO_SPACING / length;  // arc length ds = |d/d(angle)| d(angle)
+  }
+  return placements;
+}
+
+double spiralOuterRadius(int count) {
+  const std::vector<Placement> p = spiralPlacements(count);
+  return std::hypot(p.back().x, p.back().z);
+}
+
+// Angle in degrees between a body's local y axis and the world's y axis.
+double tiltDegrees(dBodyID body) {
+  const dReal* r = dBodyGetRotation(body);  // row-major: r[5] is the y component of local y
+  return std::acos(std::clamp<double>(r[5], -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+std::string muText(double mu) {
+  if (std::isinf(mu)) return "dInfinity";
+  std::ostringstream s;
+  s << mu;
+  return s.str();
+}
+
+WorldSettings settingsForThisScene() {
+  WorldSettings settings;  // ERP 0.2, CFM 1e-6: the thesis's defaults
+  settings.iterations = 8;  // the thesis: +20% frame rate against 20
+  settings.step = 0.005;    // the thesis: further speed-up, no visible instability
+  return settings;
+}
+
+class Domino : public AbstractWindow {
+ public:
+  Domino() : AbstractWindow("test3 - Domino", settingsForThisScene()) {
+    bindKey(SDLK_f, "F", "lower the contact friction mu (ladder 0 ... 5, dInfinity)",
+            [this](int) { changeMu(-1); });
+    bindKey(SDLK_g, "G", "raise the contact friction mu (ladder 0 ... 5, dInfinity)",
+            [this](int) { changeMu(+1); });
+    keepAcrossRewind(mu_);
+  }
+
+  void addOptions(CLI::App& app) override {
+    app.add_option("--dominoes", dominoCount_, "number of dominoes along the spiral")
+        ->check(CLI::Range(2, 1000))
+        ->capture_default_str();
+    app.add_option_function<std::string>(
+           "--mu", [this](const std::string& text) { mu_ = parseMu(text); },
+           "contact friction coefficient: a number >= 0, or inf for dInfinity")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+              return std::isnan(parseMu(text)) ? "'" + text + "' is not a number >= 0 or inf" : std::string();
+            },
+            "MU"))
+        ->default_str(muText(DEFAULT_MU));
+    app.add_flag("--no-auto-disable", noAutoDisable_,
+                 "keep every body active (the thesis: very slow) instead of auto-disable with thresholds 0.1");
+  }
+
+ protected:
+  void configureWorld() override {
+    dWorldSetAutoDisableFlag(world(), noAutoDisable_ ? 0 : 1);
+    dWorldSetAutoDisableLinearThreshold(world(), AUTO_DISABLE_THRESHOLD);
+    dWorldSetAutoDisableAngularThreshold(world(), AUTO_DISABLE_THRESHOLD);
+  }
+
+  void buildScene() override {
+    add<Plane>(space());
+    dominoes_.clear();
+    fellAt_.assign(dominoCount_, -1.0);
+    const std::vector<Placement> placements = spiralPlacements(dominoCount_);
+    for (size_t i = 0; i < placements.size(); ++i)
+      dominoes_.push_back(&placeDomino(placements[i], i == 0 ? FIRST_TILT_DEGREES : 0.0, i));
+    push(*dominoes_.front(), placements.front());
+  }
+
+  void setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) override {
+    surface.mode = 0;  // Coulomb friction only
+    surface.mu = mu_;
+  }
+
+  void afterStep() override {
+    for (size_t i = 0; i < dominoes_.size(); ++i)
+      if (fellAt_[i] < 0 && tiltDegrees(dominoes_[i]->getBody()) > FALLEN_TILT_DEGREES) fellAt_[i] = simulatedTime();
+  }
+
+  void addHudLines(std::vector<std::string>& lines) const override {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(2) << "fallen " << fallenCount() << " / " << dominoes_.size() << " ("
+      << fallenFraction() << ")   chain " << chainSeconds() << " s   active bodies " << activeBodies();
+    lines.push_back(s.str());
+    s.str("");
+    s << "mu " << muText(mu_) << " (F lower, G raise)   auto-disable "
+      << (noAutoDisable_ ? "off" : "on, thresholds 0.1 / 0.1");
+    lines.push_back(s.str());
+  }
+
+  void addMetrics(Metrics& m) const override {
+    m.set("dominoes", static_cast<double>(dominoes_.size()));
+    m.set("fallen_fraction", fallenFraction());
+    m.set("chain_seconds", chainSeconds());
+    m.set("active_bodies", activeBodies());
+    m.set("mu", std::isinf(mu_) ? -1.0 : mu_);  // -1 stands for dInfinity (JSON has no infinity)
+    m.set("auto_disable", noAutoDisable_ ? 0 : 1);
+    m.set("min_fallen_tilt_degrees", minFallenTilt());
+  }
+
+  bool plotValue(double& value) const override {
+    value = fallenCount();
+    return true;
+  }
+  std::string plotLabel() const override { return "fallen dominoes"; }
+
+  double defaultHeadlessSeconds() const override { return 20.0; }  // the chain takes 8.5 s; all at rest by 15 s
+
+  void initialCamera(Camera& camera) const override {
+    const double r = spiralOuterRadius(dominoCount_);
+    camera.lookAt({0, 1.1 * r + 2, 1.5 * r + 4}, {0, 0, 0});
+  }
+
+  SceneBounds bounds() const override { return {{0, 1, 0}, spiralOuterRadius(dominoCount_) + 2.0}; }
+
+ private:
+  // A number >= 0, or inf / infinity / dInfinity; NaN when the text is neither.
+  static double parseMu(const std::string& text) {
+    if (text == "inf" || text == "infinity" || text == "dInfinity") return dInfinity;
+    double value = 0;
+    if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    return value;
+  }
+
+  // A domino standing at `at`, facing along the path; tilted forward by
+  // `tiltDegrees` about its leading bottom edge, which stays on the ground.
+  Box& placeDomino(const Placement& at, double tilt, size_t index) {
+    Box& domino = add<Box>(world(), space(), DOMINO_THICKNESS, DOMINO_HEIGHT, DOMINO_WIDTH, DOMINO_MASS);
+    // Yaw: local x (the thickness) along the path's tangent.
+    dMatrix3 yaw, lean, rotation;
+    dRFromAxisAndAngle(yaw, 0, 1, 0, std::atan2(-at.tangentZ, at.tangentX));
+    // Lean: turning local y toward the tangent is a rotation about up x tangent.
+    dRFromAxisAndAngle(lean, at.tangentZ, 0, -at.tangentX, tilt * M_PI / 180.0);
+    dMultiply0(rotation, lean, yaw, 3, 3, 3);
+    dBodySetRotation(domino.getBody(), rotation);
+    // Centre = pivot (leading bottom edge, on the ground) + R * (-t/2, h/2, 0).
+    const dVector3 local{-DOMINO_THICKNESS / 2, DOMINO_HEIGHT / 2, 0, 0};
+    dVector3 offset;
+    dMultiply0(offset, rotation, local, 3, 3, 1);
+    const double pivotX = at.x + at.tangentX * DOMINO_THICKNESS / 2;
+    const double pivotZ = at.z + at.tangentZ * DOMINO_THICKNESS / 2;
+    domino.setPosition(pivotX + offset[0], offset[1], pivotZ + offset[2]);
+    const float shade = 0.6f + 0.4f * static_cast<float>(index % 6) / 5.0f;
+    domino.color = Color{0.9f * shade, 0.25f + 0.2f * shade, 0.2f};
+    return domino;
+  }
+
+  // Sets the domino turning about its leading bottom edge at FIRST_PUSH, so
+  // the edge stays put: omega about up x tangent, v = omega x (centre - edge).
+  static void push(Box& domino, const Placement& at) {
+    const dVector3 omega{FIRST_PUSH * at.tangentZ, 0, -FIRST_PUSH * at.tangentX, 0};
+    const dReal* centre = domino.getPosition();
+    const dVector3 arm{centre[0] - (at.x + at.tangentX * DOMINO_THICKNESS / 2), centre[1],
+                       centre[2] - (at.z + at.tangentZ * DOMINO_THICKNESS / 2), 0};
+    dVector3 velocity;
+    dCalcVectorCross3(velocity, omega, arm);
+    dBodySetAngularVel(domino.getBody(), omega[0], omega[1], omega[2]);
+    dBodySetLinearVel(domino.getBody(), velocity[0], velocity[1], velocity[2]);
+  }
+
+  void changeMu(int direction) {
+    const double before = mu_;
+    mu_ = ParameterStepper::nextOnLadder(MU_LADDER, mu_, direction);
+    notify("t=" + std::to_string(simulatedTime()) + " s: mu " + muText(before) + " -> " + muText(mu_));
+  }
+
+  int fallenCount() const {
+    return static_cast<int>(std::count_if(fellAt_.begin(), fellAt_.end(), [](double t) { return t >= 0; }));
+  }
+  double fallenFraction() const { return dominoes_.empty() ? 0.0 : double(fallenCount()) / dominoes_.size(); }
+  // Time at which the last domino (so far) fell: the chain's duration.
+  double chainSeconds() const { return std::max(0.0, *std::max_element(fellAt_.begin(), fellAt_.end())); }
+  int activeBodies() const { return bodyCount() - disabledBodyCount(); }
+  // How far the fallen dominoes lean now; shows that the 30 degree threshold is safe.
+  double minFallenTilt() const {
+    double smallest = 180.0;
+    for (size_t i = 0; i < dominoes_.size(); ++i)
+      if (fellAt_[i] >= 0) smallest = std::min(smallest, tiltDegrees(dominoes_[i]->getBody()));
+    return fallenCount() > 0 ? smallest : 0.0;
+  }
+
+  std::vector<Box*> dominoes_;
+  std::vector<double> fellAt_;  // simulated time each domino fell; < 0 while standing
+  int dominoCount_ = DEFAULT_DOMINOES;
+  double mu_ = DEFAULT_MU;
+  bool noAutoDisable_ = false;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return odelab::runTest<Domino>(argc, argv, "A spiral of dominoes knocked over in a chain; auto-disable on.");
+}
