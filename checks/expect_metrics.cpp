@@ -1,20 +1,27 @@
-// Runs one test program headless and checks its metrics against stated
-// bounds, so every CTest scene check reads as a physical claim:
+// Runs one test program and checks its metrics against stated bounds, so
+// every CTest scene check reads as a physical claim:
 //
-//   expect_metrics [--status N] [--stdout-contains TEXT] NAME<OP>VALUE ... -- PROGRAM ARGS...
+//   expect_metrics [--status N] [--stdout-contains TEXT] NAME<OP>BOUND ... -- PROGRAM ARGS...
 //
-// OP is one of < <= > >= ==. The program gets "--metrics-json FILE" appended
-// and must exit with status 0, or with the --status given (then
-// the check is that the program failed with exactly that status; for status
-// 2, a refused option, it also checks that no metrics file was written).
-// Every measured value is printed beside its bound.
+// OP is one of < <= > >= ==. BOUND is a number, or another metric of the
+// same run written @NAME, optionally with one arithmetic step: @NAME+2,
+// @NAME-0.5, @NAME*1.1 (e.g. mark_b_steps==@mark_a_steps,
+// mark_d_steps==@mark_c_steps+1, drag_end_distance<@drag_start_distance*0.5).
+// The program gets "--metrics-json FILE" appended (headless runs and window
+// runs both write it at exit, so a window run under Xvfb with --events is
+// checked the same way) and must exit with status 0, or with the --status
+// given (then the check is that the program failed with exactly that status;
+// for status 2, a refused option, it also checks that no metrics file was
+// written). Every measured value is printed beside its bound.
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -26,8 +33,21 @@ namespace {
 
 struct Expectation {
   std::string name, op;
-  double bound;
+  double bound = 0.0;
+  // A bound taken from another metric: bound = metric <arithmetic> operand.
+  std::string boundMetric;
+  char arithmetic = 0;  // 0, '+', '-' or '*'
+  double operand = 0.0;
 };
+
+bool isNameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+bool parseNumber(const std::string& text, double& value) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end && *end == '\0';
+}
 
 bool parseExpectation(const std::string& text, Expectation& e) {
   static const char* ops[] = {"<=", ">=", "==", "<", ">"};
@@ -36,12 +56,42 @@ bool parseExpectation(const std::string& text, Expectation& e) {
     if (at == std::string::npos || at == 0) continue;
     e.name = text.substr(0, at);
     e.op = op;
-    char* end = nullptr;
-    const std::string value = text.substr(at + std::string(op).size());
-    e.bound = std::strtod(value.c_str(), &end);
-    return end && *end == '\0' && !value.empty();
+    const std::string bound = text.substr(at + std::string(op).size());
+    if (bound.empty() || bound[0] != '@') return parseNumber(bound, e.bound);
+    std::size_t end = 1;
+    while (end < bound.size() && isNameChar(bound[end])) ++end;
+    e.boundMetric = bound.substr(1, end - 1);
+    if (e.boundMetric.empty()) return false;
+    if (end == bound.size()) return true;
+    e.arithmetic = bound[end];
+    if (e.arithmetic != '+' && e.arithmetic != '-' && e.arithmetic != '*') return false;
+    return parseNumber(bound.substr(end + 1), e.operand);
   }
   return false;
+}
+
+// Resolves a bound that names another metric; false if that one is missing.
+bool resolveBound(const odelab::Metrics& metrics, Expectation& e) {
+  if (e.boundMetric.empty()) return true;
+  if (!metrics.has(e.boundMetric)) return false;
+  const double base = metrics.get(e.boundMetric);
+  switch (e.arithmetic) {
+    case '+': e.bound = base + e.operand; break;
+    case '-': e.bound = base - e.operand; break;
+    case '*': e.bound = base * e.operand; break;
+    default: e.bound = base; break;
+  }
+  return true;
+}
+
+std::string describeBound(const Expectation& e) {
+  std::ostringstream text;
+  text << std::setprecision(16) << e.op << ' ' << e.bound;
+  if (!e.boundMetric.empty()) {
+    text << " = " << e.boundMetric;
+    if (e.arithmetic) text << e.arithmetic << e.operand;
+  }
+  return text.str();
 }
 
 bool holds(double v, const Expectation& e) {
@@ -143,11 +193,21 @@ int main(int argc, char** argv) {
     text << in.rdbuf();
     try {
       const odelab::Metrics metrics = odelab::parseMetricsJson(text.str());
-      for (const auto& e : expectations) {
+      for (auto e : expectations) {
+        if (!resolveBound(metrics, e)) {
+          std::cout << "FAIL: " << e.name << ": the bound's metric " << e.boundMetric << " was not reported\n";
+          ok = false;
+          continue;
+        }
+        if (!metrics.has(e.name)) {
+          std::cout << "FAIL: " << e.name << " was not reported (expected " << describeBound(e) << ")\n";
+          ok = false;
+          continue;
+        }
         const double v = metrics.get(e.name);
-        const bool pass = metrics.has(e.name) && holds(v, e);
-        std::cout << (pass ? "ok:   " : "FAIL: ") << e.name << " = " << v << " (expected " << e.op << ' ' << e.bound
-                  << ")\n";
+        const bool pass = holds(v, e);
+        std::cout << (pass ? "ok:   " : "FAIL: ") << e.name << " = " << std::setprecision(16) << v << " (expected "
+                  << describeBound(e) << ")\n";
         ok = ok && pass;
       }
     } catch (const std::exception& error) {

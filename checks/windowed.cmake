@@ -1,6 +1,15 @@
 # ---- windowed checks: a real window under Xvfb with Mesa's software OpenGL ----
 add_executable(screenshot_check screenshot_check.cpp)
 target_link_libraries(screenshot_check PRIVATE PkgConfig::STB)
+# Compares two PNGs in a region (an overlay appearing, a paused scene not moving).
+add_executable(png_compare png_compare.cpp)
+target_link_libraries(png_compare PRIVATE PkgConfig::STB)
+
+# A script with a mistake stops the run with status 2 and a message naming
+# the file and the line, before any window opens (so no display is needed).
+add_test(NAME test0_window_events_script_error_exits_2
+         COMMAND sh -c "\"$<TARGET_FILE:test0>\" --events \"${CMAKE_CURRENT_SOURCE_DIR}/scripts/bad.events\" 2>err.txt; s=$?; cat err.txt; test $s -eq 2 && grep -q 'bad.events:3: key: unknown key name' err.txt"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 
 find_program(XVFB_RUN xvfb-run)
 if(NOT XVFB_RUN)
@@ -23,3 +32,64 @@ add_test(NAME test0_window_without_display_exits_6
 add_test(NAME test0_window_missing_shaders_exits_5
          COMMAND sh -c "\"${XVFB_RUN}\" -a \"$<TARGET_FILE:test0>\" --shader-dir /nonexistent-shaders --frames 1 --screenshot none.png 2>err.txt; s=$?; grep -q /nonexistent-shaders err.txt && test $s -eq 5"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+
+# ---- the interactive lab, driven by scripted input (--events) ----------------
+# Each check plays a script from checks/scripts/ (the script says what it
+# does and why) through SDL's event queue, the path real input takes, and
+# checks the metrics the window run writes at exit. Every run gets its own
+# folder for output files.
+#
+# odelab_window_check(NAME PROGRAM EVENTS <file in scripts/> EXPECT <name<op>bound>... ARGS <program args>...)
+function(odelab_window_check name program)
+  cmake_parse_arguments(C "" "EVENTS" "EXPECT;ARGS" ${ARGN})
+  set(dir ${CMAKE_CURRENT_BINARY_DIR}/window_runs/${name})
+  file(MAKE_DIRECTORY ${dir})
+  add_test(NAME ${name}
+           COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x800x24" $<TARGET_FILE:expect_metrics> ${C_EXPECT}
+                   -- $<TARGET_FILE:${program}> --events ${CMAKE_CURRENT_SOURCE_DIR}/scripts/${C_EVENTS}
+                   --out-dir ${dir} ${C_ARGS}
+           WORKING_DIRECTORY ${dir})
+  set_tests_properties(${name} PROPERTIES TIMEOUT 180)
+endfunction()
+
+# P stops simulated time: two marks 30 frames apart while paused see the same step.
+odelab_window_check(test2_window_pause_stops_time test2 EVENTS pause.events
+  EXPECT mark_b_steps==@mark_a_steps mark_b_sim_seconds==@mark_a_sim_seconds mark_a_steps>0)
+# One O press while paused advances exactly one step, over the following frames too.
+odelab_window_check(test2_window_one_step_per_o test2 EVENTS single_step.events
+  EXPECT mark_d_steps==@mark_c_steps+1)
+# Rewind then replay: ',' twice back to the start, '.' twice forward to the
+# snapshot where the first pass stopped; the state hash there equals the
+# first pass's bit for bit (so positions agree far better than 1e-9).
+odelab_window_check(test2_window_rewind_replay_reaches_same_state test2 EVENTS rewind_replay.events
+  EXPECT mark_e_steps==256 mark_g_steps==128 mark_h_steps==0 mark_f_steps==@mark_e_steps
+         mark_f_hash==@mark_e_hash
+  ARGS --step 0.001953125)
+# A drag pulls the picked body toward the cursor: the gap opened by moving
+# the cursor is at most half as wide when the button is released.
+odelab_window_check(test2_window_drag_pulls_body_to_cursor test2 EVENTS drag.events
+  EXPECT drag_start_distance>1 drag_end_distance<@drag_start_distance*0.5)
+
+# F12 saves the frame shown as test0_t<simulated seconds>.png in --out-dir and
+# prints its path; the PNG passes the screenshot check above.
+add_test(NAME test0_window_f12_saves_png
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_f12.sh ${XVFB_RUN} $<TARGET_FILE:test0>
+                 $<TARGET_FILE:screenshot_check> ${CMAKE_CURRENT_SOURCE_DIR}/scripts/f12.events
+                 ${CMAKE_CURRENT_BINARY_DIR}/window_runs/f12 --spawn-interval 0.05)
+# --record writes every frame as test0_frame_000001.png ...; the help overlay
+# (H) shows over the paused scene. (That the help lists every bound key is
+# checked by the unit test HelpLines.ListEveryBinding.)
+add_test(NAME test0_window_record_frames_and_help_overlay
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_help_record.sh ${XVFB_RUN} $<TARGET_FILE:test0>
+                 $<TARGET_FILE:png_compare> ${CMAKE_CURRENT_SOURCE_DIR}/scripts/help_record.events
+                 ${CMAKE_CURRENT_BINARY_DIR}/window_runs/help_record)
+set_tests_properties(test0_window_f12_saves_png test0_window_record_frames_and_help_overlay PROPERTIES TIMEOUT 180)
+
+# Benchmark (not a test): frame rate of test5 with 100 plates with the debug
+# drawing and the live plot on against off. Prints figures; see the script.
+if(TARGET test5)
+  add_custom_target(bench_debug_drawing
+                    COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/bench_debug_drawing.sh $<TARGET_FILE:test5>
+                    DEPENDS test5
+                    USES_TERMINAL)
+endif()

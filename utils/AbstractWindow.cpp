@@ -560,6 +560,10 @@ void AbstractWindow::moveDrag(const double target[3]) {
   std::copy(target, target + 3, event.target);
   applyEvent(event);
   recordEvent(event);
+  // The gap the spring now has to close (the renderer's beginDrag targets
+  // the grabbed point itself, so the gap opens with the first move).
+  if (const dBodyID body = objects_[dragIndex_]->getBody())
+    marks_.set("drag_start_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
 }
 
 void AbstractWindow::endDrag() {

@@ -24,8 +24,12 @@ class OdeLibrary {
 };
 
 int run(AbstractWindow& scene, const RunOptions& options) {
-  scene.initialize(options);
-  if (options.headless) return scene.runHeadless();
+  if (options.headless) {
+    scene.initialize(options);
+    return scene.runHeadless();
+  }
+  // The window builds the scene itself once the window, shaders, font and
+  // --events script are ready, so a missing resource leaves no output file.
   const int status = runWindow(scene, options);
   // A window run reports too, so scripted sessions can be checked.
   if (status == exit_code::OK && !options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);

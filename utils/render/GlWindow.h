@@ -30,6 +30,10 @@ class GlWindow {
   int width() const { return width_; }
   int height() const { return height_; }
   void swap() { SDL_GL_SwapWindow(window_); }
+  // Size in window coordinates, those of mouse events (differs from the
+  // drawable size on high-DPI screens).
+  void windowSize(int& width, int& height) const { SDL_GetWindowSize(window_, &width, &height); }
+  SDL_Window* sdlWindow() const { return window_; }
 
  private:
   struct VideoSubsystem {

@@ -9,14 +9,13 @@ namespace odelab {
 namespace {
 
 const int FONT_POINTS = 15;
-const int PADDING = 8;          // pixels between the box's edge and the text
-const int MARGIN = 10;          // pixels between the window's corner and the box
+const int PADDING = 8;          // pixels between a box's edge and its text
+const int MARGIN = 10;          // pixels between the window's corner and the HUD box
 const SDL_Color TEXT_COLOR{235, 238, 242, 255};
-const Uint8 BOX_ALPHA = 170;    // dark enough to read over a bright sky
 
 TTF_Font* openFont(const std::string& path) {
   TTF_Font* font = TTF_OpenFont(path.c_str(), FONT_POINTS);
-  if (!font) throw RenderError("cannot open font " + path + ": " + TTF_GetError());
+  if (!font) throw ResourceError("cannot open font " + path + ": " + TTF_GetError());
   return font;
 }
 
@@ -26,6 +25,10 @@ struct SurfaceFreer {
 using SurfacePtr = std::unique_ptr<SDL_Surface, SurfaceFreer>;
 
 }  // namespace
+
+TextBlock::~TextBlock() {
+  if (texture_) glDeleteTextures(1, &texture_);
+}
 
 HudText::TtfLibrary::TtfLibrary() {
   if (TTF_Init() != 0) throw RenderError(std::string("cannot initialise SDL_ttf: ") + TTF_GetError());
@@ -38,74 +41,85 @@ HudText::HudText(const std::string& fontPath, const std::string& shaderDir)
   rectUniform_ = program_.uniform("uRect");
   viewportUniform_ = program_.uniform("uViewport");
   textUniform_ = program_.uniform("uText");
-  glGenTextures(1, &texture_);
-  glBindTexture(GL_TEXTURE_2D, texture_);
-  // Drawn at exactly one texel per pixel: no filtering wanted.
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glGenVertexArrays(1, &emptyVertexArray_);
 }
 
-HudText::~HudText() {
-  glDeleteVertexArrays(1, &emptyVertexArray_);
-  glDeleteTextures(1, &texture_);
-}
+HudText::~HudText() { glDeleteVertexArrays(1, &emptyVertexArray_); }
 
-void HudText::upload(const std::vector<std::string>& lines) {
+void HudText::prepare(TextBlock& block, const std::vector<std::string>& lines) {
+  if (block.prepared_ && lines == block.lines_) return;
   // Render each line, then compose them onto one RGBA image whose bytes are
   // in R, G, B, A order whatever the machine's endianness (SDL_PIXELFORMAT_RGBA32).
+  const int padding = block.boxAlpha_ > 0 ? PADDING : 0;
   std::vector<SurfacePtr> rendered;
   int width = 0;
-  const int lineSkip = TTF_FontLineSkip(font_.get());
+  const int skip = lineSkip();
   for (const std::string& line : lines) {
     // TTF refuses empty strings; a blank line still takes its height.
     SurfacePtr surface(line.empty() ? nullptr : TTF_RenderUTF8_Blended(font_.get(), line.c_str(), TEXT_COLOR));
     if (surface) width = std::max(width, surface->w);
     rendered.push_back(std::move(surface));
   }
-  width += 2 * PADDING;
-  const int height = lineSkip * static_cast<int>(lines.size()) + 2 * PADDING;
+  width = std::max(width, 1) + 2 * padding;
+  const int height = std::max(skip * static_cast<int>(lines.size()), 1) + 2 * padding;
 
   SurfacePtr image(SDL_CreateRGBSurfaceWithFormat(0, width, height, 32, SDL_PIXELFORMAT_RGBA32));
-  if (!image) throw RenderError(std::string("cannot create HUD image: ") + SDL_GetError());
-  SDL_FillRect(image.get(), nullptr, SDL_MapRGBA(image->format, 12, 14, 18, BOX_ALPHA));
+  if (!image) throw RenderError(std::string("cannot create text image: ") + SDL_GetError());
+  SDL_FillRect(image.get(), nullptr, SDL_MapRGBA(image->format, 12, 14, 18, static_cast<Uint8>(block.boxAlpha_)));
   for (std::size_t i = 0; i < rendered.size(); ++i) {
     if (!rendered[i]) continue;
-    SDL_Rect at{PADDING, PADDING + static_cast<int>(i) * lineSkip, rendered[i]->w, rendered[i]->h};
-    SDL_SetSurfaceBlendMode(rendered[i].get(), SDL_BLENDMODE_BLEND);
+    SDL_Rect at{padding, padding + static_cast<int>(i) * skip, rendered[i]->w, rendered[i]->h};
+    // Over a box, blend; with no box, copy the glyphs' own alpha.
+    SDL_SetSurfaceBlendMode(rendered[i].get(), block.boxAlpha_ > 0 ? SDL_BLENDMODE_BLEND : SDL_BLENDMODE_NONE);
     SDL_BlitSurface(rendered[i].get(), nullptr, image.get(), &at);
   }
 
-  glBindTexture(GL_TEXTURE_2D, texture_);
+  if (!block.texture_) {
+    glGenTextures(1, &block.texture_);
+    glBindTexture(GL_TEXTURE_2D, block.texture_);
+    // Drawn at exactly one texel per pixel: no filtering wanted.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glBindTexture(GL_TEXTURE_2D, block.texture_);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, image->pitch / 4);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image->pixels);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-  textureWidth_ = width;
-  textureHeight_ = height;
-  shownLines_ = lines;
+  block.width_ = width;
+  block.height_ = height;
+  block.lines_ = lines;
+  block.prepared_ = true;
 }
 
-void HudText::draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight) {
-  if (lines.empty()) return;
-  if (lines != shownLines_) upload(lines);
-
+void HudText::drawAt(const TextBlock& block, int x, int y, int viewportWidth, int viewportHeight) {
+  if (!block.prepared_) return;
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   program_.use();
-  glUniform4f(rectUniform_, static_cast<float>(MARGIN), static_cast<float>(MARGIN),
-              static_cast<float>(textureWidth_), static_cast<float>(textureHeight_));
+  glUniform4f(rectUniform_, static_cast<float>(x), static_cast<float>(y), static_cast<float>(block.width_),
+              static_cast<float>(block.height_));
   glUniform2f(viewportUniform_, static_cast<float>(viewportWidth), static_cast<float>(viewportHeight));
   glUniform1i(textUniform_, 0);
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, texture_);
+  glBindTexture(GL_TEXTURE_2D, block.texture_);
   glBindVertexArray(emptyVertexArray_);
+  // A pixel-aligned quad has no edges to smooth; a software renderer would
+  // still store every sample.
+  glDisable(GL_MULTISAMPLE);
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glEnable(GL_MULTISAMPLE);
   glBindVertexArray(0);
+}
+
+void HudText::draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight) {
+  if (lines.empty()) return;
+  prepare(hud_, lines);
+  drawAt(hud_, MARGIN, MARGIN, viewportWidth, viewportHeight);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }

@@ -11,9 +11,32 @@
 
 namespace odelab {
 
-// The HUD: the scene's text lines rendered with SDL2_ttf over a dark
-// translucent box into one texture, drawn in the window's top-left corner.
-// The texture is rebuilt only when the text changes.
+// One block of text lines rendered into a texture: the HUD, the help panel,
+// a plot's labels. The texture is rebuilt only when the lines change, so a
+// block whose text stays the same costs one quad per frame.
+class TextBlock {
+ public:
+  // Alpha (0..255) of the dark backing box behind the text; 0: no box, no padding.
+  explicit TextBlock(int boxAlpha = 170) : boxAlpha_(boxAlpha) {}
+  ~TextBlock();
+  TextBlock(const TextBlock&) = delete;
+  TextBlock& operator=(const TextBlock&) = delete;
+
+  // Size in pixels once prepared (HudText::prepare).
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  friend class HudText;
+  int boxAlpha_;
+  GLuint texture_ = 0;
+  std::vector<std::string> lines_;
+  bool prepared_ = false;
+  int width_ = 0, height_ = 0;
+};
+
+// Text over the scene with SDL2_ttf: the font, the quad shader, and the HUD
+// block drawn in the window's top-left corner.
 class HudText {
  public:
   // Opens the font and loads hud.* from shaderDir; throws RenderError.
@@ -22,11 +45,19 @@ class HudText {
   HudText(const HudText&) = delete;
   HudText& operator=(const HudText&) = delete;
 
+  // The HUD: `lines` in a box in the top-left corner.
   void draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight);
 
- private:
-  void upload(const std::vector<std::string>& lines);
+  // Renders `lines` into `block` unless it already shows them; then
+  // block.width() / height() give its size for placing it.
+  void prepare(TextBlock& block, const std::vector<std::string>& lines);
+  // Draws a prepared block with its top-left corner at pixel (x, y) from
+  // the window's top-left corner. Leaves depth testing off and blending on.
+  void drawAt(const TextBlock& block, int x, int y, int viewportWidth, int viewportHeight);
 
+  int lineSkip() const { return TTF_FontLineSkip(font_.get()); }
+
+ private:
   // TTF_Init / TTF_Quit, reference-counted by SDL_ttf; first member so it
   // outlives the font.
   struct TtfLibrary {
@@ -40,10 +71,8 @@ class HudText {
   std::unique_ptr<TTF_Font, FontCloser> font_;
   ShaderProgram program_;
   GLint rectUniform_, viewportUniform_, textUniform_;
-  GLuint texture_ = 0;
   GLuint emptyVertexArray_ = 0;  // core profile needs one bound even without attributes
-  std::vector<std::string> shownLines_;
-  int textureWidth_ = 0, textureHeight_ = 0;
+  TextBlock hud_;
 };
 
 }  // namespace odelab

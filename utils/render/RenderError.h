@@ -12,4 +12,12 @@ class RenderError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A shader or font that was found but cannot be used (unreadable, not
+// GLSL that compiles and links, not a font): like one not found, a resource
+// problem, exit_code::MISSING_RESOURCE. The message names the file.
+class ResourceError : public RenderError {
+ public:
+  using RenderError::RenderError;
+};
+
 }  // namespace odelab

@@ -109,18 +109,18 @@ void Renderer::render(const AbstractWindow& scene, int width, int height) {
   sceneProgram_.use();
   setLitPassUniforms(scene, width, height);
   shadowMap_.bindTexture(GL_TEXTURE0);
-  drawScene(scene, sceneUniforms_);
+  drawScene(scene, sceneUniforms_, scene.viewFlags().wireframe);
   glBindVertexArray(0);
 }
 
-void Renderer::setLitPassUniforms(const AbstractWindow& scene, int width, int height) const {
+void Renderer::setLitPassUniforms(const AbstractWindow& scene, int width, int height) {
   const Camera& camera = scene.camera();
   const float aspect = height > 0 ? static_cast<float>(width) / static_cast<float>(height) : 1.0f;
   const glm::mat4 projection =
       glm::perspective(glm::radians(camera.fieldOfViewDegrees()), aspect, NEAR_PLANE, FAR_PLANE);
-  const glm::mat4 viewProjection = projection * camera.viewMatrix();
+  viewProjection_ = projection * camera.viewMatrix();
   const glm::vec3 eye = camera.position();
-  glUniformMatrix4fv(lit_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(lit_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection_));
   glUniformMatrix4fv(lit_.lightViewProjection, 1, GL_FALSE, glm::value_ptr(shadowMap_.lightViewProjection()));
   glUniform3fv(lit_.toLight, 1, glm::value_ptr(TO_LIGHT));
   glUniform3fv(lit_.cameraPosition, 1, glm::value_ptr(eye));
@@ -132,7 +132,7 @@ void Renderer::setLitPassUniforms(const AbstractWindow& scene, int width, int he
   glUniform1f(lit_.fogEnd, FOG_END);
 }
 
-void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& uniforms) const {
+void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& uniforms, bool wireframe) const {
   const glm::vec3 focus = scene.camera().position();
   for (const auto& object : scene.objects()) {
     if (!object->visible) continue;
@@ -167,7 +167,12 @@ void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& unif
     glUniform3fv(uniforms.color, 1, glm::value_ptr(color));
     // Static geometry (ground, platforms) gets the checker for depth cues.
     glUniform1i(uniforms.checker, object->isFixed() ? 1 : 0);
+    // Wireframe shows the bodies' triangles; the ground stays filled so the
+    // scene keeps its floor (its two huge triangles would say nothing).
+    const bool lines = wireframe && object->shape() != Shape::Plane;
+    if (lines) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     mesh->draw();
+    if (lines) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
 }
 

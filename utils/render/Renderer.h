@@ -20,8 +20,11 @@ class Renderer {
   // Loads scene.* and depth.* from shaderDir; throws RenderError.
   explicit Renderer(const std::string& shaderDir);
 
-  // Renders into the default framebuffer, sized width x height pixels.
+  // Renders into the default framebuffer, sized width x height pixels; in
+  // wireframe (V) the bodies' triangles are drawn as lines, the ground filled.
   void render(const AbstractWindow& scene, int width, int height);
+  // The camera's view-projection of the last render(), for the debug drawing.
+  const glm::mat4& viewProjection() const { return viewProjection_; }
 
  private:
   // Uniform locations drawScene() sets per object, looked up once per program.
@@ -33,8 +36,8 @@ class Renderer {
   };
   static ObjectUniforms objectUniformsOf(const ShaderProgram& program);
 
-  void drawScene(const AbstractWindow& scene, const ObjectUniforms& uniforms) const;
-  void setLitPassUniforms(const AbstractWindow& scene, int width, int height) const;
+  void drawScene(const AbstractWindow& scene, const ObjectUniforms& uniforms, bool wireframe = false) const;
+  void setLitPassUniforms(const AbstractWindow& scene, int width, int height);
 
   ShaderProgram depthProgram_;
   ShaderProgram sceneProgram_;
@@ -47,6 +50,7 @@ class Renderer {
   } lit_;
   Meshes meshes_;
   ShadowMap shadowMap_;
+  glm::mat4 viewProjection_{1.0f};
 };
 
 }  // namespace odelab

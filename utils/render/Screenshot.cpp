@@ -36,6 +36,10 @@ void saveScreenshot(const std::string& path, int width, int height) {
                 &pixels[static_cast<std::size_t>(height - 1 - row) * rowBytes], rowBytes);
   }
 
+  // stb tries five row filters per row and keeps the best; for rendered
+  // frames (flat sky, shaded faces) plain rows compress as well or better and
+  // take a fraction of the time, which --record pays every frame.
+  stbi_write_force_png_filter = 0;
   const std::string temporary = path + ".tmp";
   if (!stbi_write_png(temporary.c_str(), width, height, 3, flipped.data(), static_cast<int>(rowBytes))) {
     std::remove(temporary.c_str());

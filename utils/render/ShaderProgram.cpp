@@ -12,7 +12,7 @@ namespace {
 
 std::string readFile(const std::string& path) {
   std::ifstream file(path);
-  if (!file) throw RenderError("cannot read shader " + path);
+  if (!file) throw ResourceError("cannot read shader " + path);
   std::ostringstream text;
   text << file.rdbuf();
   return text.str();
@@ -45,7 +45,7 @@ GLuint compile(GLenum type, const std::string& path) {
   if (compiled != GL_TRUE) {
     const std::string log = shaderLog(shader);
     glDeleteShader(shader);
-    throw RenderError("cannot compile shader " + path + ":\n" + log);
+    throw ResourceError("cannot compile shader " + path + ":\n" + log);
   }
   return shader;
 }
@@ -73,7 +73,7 @@ ShaderProgram::ShaderProgram(const std::string& vertexPath, const std::string& f
   if (linked != GL_TRUE) {
     const std::string log = programLog(id_);
     glDeleteProgram(id_);
-    throw RenderError("cannot link shaders " + vertexPath + " + " + fragmentPath + ":\n" + log);
+    throw ResourceError("cannot link shaders " + vertexPath + " + " + fragmentPath + ":\n" + log);
   }
 }
 

@@ -7,7 +7,7 @@
 namespace odelab {
 
 // One linked GLSL program built from a vertex and a fragment shader file.
-// Construction throws RenderError naming the file and quoting GL's log.
+// Construction throws ResourceError naming the file and quoting GL's log.
 class ShaderProgram {
  public:
   ShaderProgram(const std::string& vertexPath, const std::string& fragmentPath);

@@ -1,11 +1,21 @@
 #include "WindowFrontend.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <vector>
 
 #include "../ExitCodes.h"
+#include "../MeasurementLog.h"
 #include "../ResourcePaths.h"
+#include "DebugDraw.h"
+#include "EventPlayer.h"
 #include "GlWindow.h"
 #include "HudText.h"
+#include "LivePlot.h"
 #include "Renderer.h"
 #include "Screenshot.h"
 #include "WindowInput.h"
@@ -19,6 +29,13 @@ const double FPS_AVERAGING_SECONDS = 0.5;
 // exceeds the fixed-step loop's 10 ms clamp (so the simulation keeps real
 // time on a machine that can draw that fast), long enough not to spin.
 const double FRAME_PERIOD = 0.008;
+// With --record every frame stands for 1/60 s of simulated time (times the
+// time scale), however long writing it takes, so the frames make a 60 fps
+// video that plays in real time. It is fed to the scene in two halves, each
+// within the fixed-step loop's 10 ms clamp.
+const double RECORD_FRAME_SECONDS = 1.0 / 60.0;
+const double NOTICE_SECONDS = 4.0;
+const int MARGIN = 10;
 
 // Frames per second, averaged over about half a second so the HUD is readable.
 class FrameRateMeter {
@@ -41,48 +58,205 @@ class FrameRateMeter {
   double fps_ = 0.0;
 };
 
+// Totals of the run, printed at exit and at each scripted mark (the
+// benchmark reads them): frames, real seconds, and the part of them spent
+// drawing and stepping rather than waiting for the next frame.
+struct FrameTotals {
+  long long frames = 0;
+  double seconds = 0.0;
+  double busySeconds = 0.0;
+};
+
+// Also the process's CPU time so far (all threads: Mesa's software renderer
+// draws on several), which a busy machine disturbs less than the frame rate.
+void printTotals(const char* what, const FrameTotals& t) {
+  std::printf("%s: %lld frames in %.3f s (%.1f fps; %.3f ms per frame drawing and stepping; CPU %.3f s)\n", what,
+              t.frames, t.seconds, t.seconds > 0 ? static_cast<double>(t.frames) / t.seconds : 0.0,
+              t.frames > 0 ? 1000.0 * t.busySeconds / static_cast<double>(t.frames) : 0.0,
+              static_cast<double>(std::clock()) / CLOCKS_PER_SEC);
+  std::fflush(stdout);
+}
+
 bool finished(const AbstractWindow& scene, const RunOptions& options) {
   return scene.quitRequested() || (options.seconds > 0.0 && scene.simulatedTime() >= options.seconds);
 }
 
-int runLoop(AbstractWindow& scene, const RunOptions& options, GlWindow& window, Renderer& renderer, HudText& hud) {
-  const bool screenshotRun = !options.screenshot.empty();
-  const int screenshotFrame = options.frames > 0 ? options.frames : 1;
+// Everything drawn in a window, built once the GL context exists and
+// destroyed before it goes.
+struct Views {
+  Views(const std::string& shaderDir, const std::string& fontPath)
+      : renderer(shaderDir), text(fontPath, shaderDir), debug(shaderDir), plot(shaderDir) {}
+  Renderer renderer;
+  HudText text;
+  DebugDraw debug;
+  LivePlot plot;
+  TextBlock help{240};
+  TextBlock notice{200};
+};
+
+std::string formatFixed(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+class FrameLoop {
+ public:
+  FrameLoop(AbstractWindow& scene, const RunOptions& options, GlWindow& window, Views& views, EventPlayer& player)
+      : scene_(scene), options_(options), window_(window), views_(views), player_(player) {}
+
+  int run();
+
+ private:
+  void pollEvents(long long frame);
+  void draw();
+  void drawHelp(int width, int height);
+  void drawNotice(int width, int height);
+  void saveRequestedScreenshot();
+  void recordFrame(long long frame);
+
+  AbstractWindow& scene_;
+  const RunOptions& options_;
+  GlWindow& window_;
+  Views& views_;
+  EventPlayer& player_;
+  WindowInput input_;
+  FrameRateMeter meter_;
+  FrameTotals totals_;
+  std::string notice_;
+  double noticeUntil_ = 0.0;
+};
+
+void FrameLoop::pollEvents(long long frame) {
+  player_.pushDue(frame);
+  int windowWidth = 0, windowHeight = 0;
+  window_.windowSize(windowWidth, windowHeight);
+  SDL_Event event;
+  while (SDL_PollEvent(&event)) {
+    if (player_.handle(event, scene_, [this](const std::string& label) { printTotals(("mark " + label).c_str(), totals_); }))
+      continue;
+    if (input_.handleEvent(event, scene_, windowWidth, windowHeight)) window_.updateDrawableSize();
+  }
+  syncMouseLook(scene_);
+}
+
+void FrameLoop::drawHelp(int width, int height) {
+  std::vector<std::string> lines{scene_.title() + ": keys and mouse   (H closes this)", ""};
+  for (const std::string& line : scene_.helpLines()) lines.push_back(line);
+  views_.text.prepare(views_.help, lines);
+  const int x = std::max(MARGIN, (width - views_.help.width()) / 2);
+  const int y = std::max(MARGIN, (height - views_.help.height()) / 2);
+  views_.text.drawAt(views_.help, x, y, width, height);
+}
+
+void FrameLoop::drawNotice(int width, int height) {
+  if (notice_.empty() || totals_.seconds > noticeUntil_) return;
+  views_.text.prepare(views_.notice, {notice_});
+  views_.text.drawAt(views_.notice, MARGIN, height - MARGIN - views_.notice.height(), width, height);
+}
+
+void FrameLoop::draw() {
+  const int width = window_.width(), height = window_.height();
+  views_.renderer.render(scene_, width, height);
+  glm::vec3 grabbed, target;
+  const bool dragging = input_.dragLine(scene_, grabbed, target);
+  views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
+  if (scene_.hudVisible()) views_.text.draw(scene_.hudLines(), width, height);
+  const ViewFlags& flags = scene_.viewFlags();
+  if (flags.plot) views_.plot.draw(scene_.chart(), views_.text, width, height);
+  if (flags.help) drawHelp(width, height);
+  drawNotice(width, height);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+}
+
+// F12: the frame as shown, named with the program and the simulated time.
+// A failure is reported and the session goes on.
+void FrameLoop::saveRequestedScreenshot() {
+  // A second F12 at the same simulated time (paused) gets _2, _3, ...
+  const std::string stem =
+      joinPath(options_.outDir, scene_.programName() + "_t" + formatFixed("%.3f", scene_.simulatedTime()));
+  std::string path = stem + ".png";
+  std::error_code error;
+  for (int n = 2; std::filesystem::exists(path, error); ++n) path = stem + "_" + std::to_string(n) + ".png";
+  try {
+    saveScreenshot(path, window_.width(), window_.height());
+    std::printf("screenshot: %s\n", path.c_str());
+    std::fflush(stdout);
+    notice_ = "saved " + path;
+  } catch (const RenderError& error) {
+    std::fprintf(stderr, "error: %s\n", error.what());
+    notice_ = error.what();
+  }
+  noticeUntil_ = totals_.seconds + NOTICE_SECONDS;
+}
+
+void FrameLoop::recordFrame(long long frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "_frame_%06lld.png", frame);
+  saveScreenshot(joinPath(options_.recordDir, scene_.programName() + name), window_.width(), window_.height());
+}
+
+int FrameLoop::run() {
+  const bool screenshotRun = !options_.screenshot.empty();
+  const bool recording = !options_.recordDir.empty();
+  const int screenshotFrame = options_.frames > 0 ? options_.frames : 1;
   const double ticksPerSecond = static_cast<double>(SDL_GetPerformanceFrequency());
   Uint64 previous = SDL_GetPerformanceCounter();
-  FrameRateMeter meter;
 
-  for (int frame = 1; !finished(scene, options); ++frame) {
-    SDL_Event event;
-    while (SDL_PollEvent(&event))
-      if (handleEvent(event, scene)) window.updateDrawableSize();
-    syncMouseLook(scene);
+  for (long long frame = 1; !finished(scene_, options_); ++frame) {
+    const Uint64 start = SDL_GetPerformanceCounter();
+    pollEvents(frame);
 
     const Uint64 now = SDL_GetPerformanceCounter();
     const double elapsed = static_cast<double>(now - previous) / ticksPerSecond;
     previous = now;
-    moveCamera(scene, elapsed);
-    scene.advanceFrame(elapsed);  // an OdeError leaves through here; RAII cleans up
-    if (meter.addFrame(elapsed)) scene.setFramesPerSecond(meter.fps());
+    moveCamera(scene_, elapsed);
+    // An OdeError leaves through here; RAII cleans up.
+    if (recording) {
+      scene_.advanceFrame(RECORD_FRAME_SECONDS / 2);
+      scene_.advanceFrame(RECORD_FRAME_SECONDS / 2);
+    } else {
+      scene_.advanceFrame(elapsed);
+    }
+    if (meter_.addFrame(elapsed)) scene_.setFramesPerSecond(meter_.fps());
 
-    renderer.render(scene, window.width(), window.height());
-    if (scene.hudVisible()) hud.draw(scene.hudLines(), window.width(), window.height());
-
+    draw();
     // Read the back buffer before the swap leaves its contents undefined.
-    if (screenshotRun && frame == screenshotFrame) {
-      saveScreenshot(options.screenshot, window.width(), window.height());
-      std::printf("screenshot: %s (%dx%d, frame %d)\n", options.screenshot.c_str(), window.width(),
-                  window.height(), frame);
+    const bool screenshotNow = screenshotRun && frame == screenshotFrame;
+    if (scene_.takeScreenshotRequest()) saveRequestedScreenshot();
+    if (recording) recordFrame(frame);
+    if (screenshotNow) saveScreenshot(options_.screenshot, window_.width(), window_.height());
+
+    ++totals_.frames;
+    totals_.seconds += elapsed;
+    if (screenshotNow) {
+      totals_.busySeconds += static_cast<double>(SDL_GetPerformanceCounter() - start) / ticksPerSecond;
+      std::printf("screenshot: %s (%dx%d, frame %lld)\n", options_.screenshot.c_str(), window_.width(),
+                  window_.height(), frame);
+      printTotals("window", totals_);
       return exit_code::OK;
     }
-    window.swap();
+    // A software renderer does much of its work here, when the frame is flushed.
+    window_.swap();
+    totals_.busySeconds += static_cast<double>(SDL_GetPerformanceCounter() - start) / ticksPerSecond;
     const double frameSeconds = static_cast<double>(SDL_GetPerformanceCounter() - now) / ticksPerSecond;
     if (frameSeconds < FRAME_PERIOD) SDL_Delay(static_cast<Uint32>((FRAME_PERIOD - frameSeconds) * 1000.0));
   }
+  printTotals("window", totals_);
   return exit_code::OK;
 }
 
+std::vector<ScriptEvent> loadScript(const RunOptions& options) {
+  if (options.eventsFile.empty()) return {};
+  // Key names need no video subsystem: SDL_GetKeyFromName uses SDL's default keymap.
+  return loadEventScript(options.eventsFile,
+                         [](const std::string& name) { return static_cast<int>(SDL_GetKeyFromName(name.c_str())); });
+}
+
 }  // namespace
+
+void checkWindowOptions(const RunOptions& options) { loadScript(options); }
 
 int runWindow(AbstractWindow& scene, const RunOptions& options) {
   const ResourceLookup shaders = findShaderDir(options.shaderDir);
@@ -95,16 +269,27 @@ int runWindow(AbstractWindow& scene, const RunOptions& options) {
     std::fprintf(stderr, "error: font not found; tried: %s\n", font.triedList().c_str());
     return exit_code::MISSING_RESOURCE;
   }
+  // A script with a mistake stops the run before a window opens (UsageError,
+  // exit status 2).
+  std::vector<ScriptEvent> script = loadScript(options);
 
   try {
     // Declared in this order so GL objects go before the context they live in.
     GlWindow window(scene.title(), options.width, options.height);
-    Renderer renderer(shaders.found);
-    HudText hud(font.found, shaders.found);
-    return runLoop(scene, options, window, renderer, hud);
+    Views views(shaders.found, font.found);
+    // Built only now that the window can run, so that a refused window run
+    // (no display, unusable shaders or font) leaves no output file behind;
+    // a runner that built it already is fine too.
+    if (!scene.world()) scene.initialize(options);
+    EventPlayer player(std::move(script), window.sdlWindow());
+    FrameLoop loop(scene, options, window, views, player);
+    return loop.run();
   } catch (const NoDisplayError& error) {
     std::fprintf(stderr, "error: cannot open a window (%s); set DISPLAY or run with --headless\n", error.what());
     return exit_code::NO_DISPLAY;
+  } catch (const ResourceError& error) {
+    std::fprintf(stderr, "error: %s\n", error.what());
+    return exit_code::MISSING_RESOURCE;
   } catch (const RenderError& error) {
     std::fprintf(stderr, "error: %s\n", error.what());
     return exit_code::RUNTIME_ERROR;

@@ -8,7 +8,16 @@ namespace odelab {
 // loop: events go to the scene's key table and camera, the elapsed real time
 // goes to scene.advanceFrame(), and the scene is drawn with shadow mapping
 // and the HUD. Returns an exit status from ExitCodes.h (NO_DISPLAY when no
-// window can be opened, MISSING_RESOURCE when shaders or font are not found).
+// window can be opened, MISSING_RESOURCE when shaders or font are not found or unusable).
+// The --events script (and its key names) is read before the window opens;
+// a mistake throws UsageError naming the file and line (exit status 2).
+// Unless the caller did, it builds the scene (scene.initialize) once the
+// window, shaders, font and script are ready, so a refused run writes nothing.
 int runWindow(AbstractWindow& scene, const RunOptions& options);
+
+// Reads and checks the --events script only, throwing UsageError like
+// runWindow. For the runner to call before the scene is built, so that a bad
+// script stops the run before any output file is written.
+void checkWindowOptions(const RunOptions& options);
 
 }  // namespace odelab

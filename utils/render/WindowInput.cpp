@@ -14,7 +14,40 @@ bool isFrontEndKey(SDL_Keycode key) {
 
 }  // namespace
 
-bool handleEvent(const SDL_Event& event, AbstractWindow& scene) {
+void WindowInput::ray(const AbstractWindow& scene, int x, int y, int windowWidth, int windowHeight,
+                      glm::vec3& origin, glm::vec3& direction) const {
+  const float w = static_cast<float>(windowWidth > 0 ? windowWidth : 1);
+  const float h = static_cast<float>(windowHeight > 0 ? windowHeight : 1);
+  // The centre of the pixel, in normalised device coordinates (y up).
+  const float ndcX = (static_cast<float>(x) + 0.5f) / w * 2.0f - 1.0f;
+  const float ndcY = 1.0f - (static_cast<float>(y) + 0.5f) / h * 2.0f;
+  scene.camera().rayThrough(ndcX, ndcY, w / h, origin, direction);
+}
+
+void WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, int windowWidth,
+                            int windowHeight) {
+  if (scene.mouseLook()) {  // any click leaves mouse-look
+    scene.toggleMouseLook();
+    return;
+  }
+  glm::vec3 origin, direction;
+  ray(scene, button.x, button.y, windowWidth, windowHeight, origin, direction);
+  const double o[3] = {origin.x, origin.y, origin.z};
+  const double d[3] = {direction.x, direction.y, direction.z};
+  const PickHit hit = scene.pickAt(o, d);
+  if (hit.objectIndex < 0) {  // nothing there: look around instead
+    scene.toggleMouseLook();
+    return;
+  }
+  scene.beginDrag(hit, hit.point);
+  if (!scene.dragging()) return;  // a static object: nothing to pull
+  held_ = true;
+  grabDistance_ = hit.distance;
+  grabbed_ = scene.draggedObject();
+  dBodyGetPosRelPoint(grabbed_->getBody(), hit.point[0], hit.point[1], hit.point[2], grabLocal_);
+}
+
+bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, int windowWidth, int windowHeight) {
   switch (event.type) {
     case SDL_QUIT:
       scene.requestQuit();
@@ -27,13 +60,29 @@ bool handleEvent(const SDL_Event& event, AbstractWindow& scene) {
         scene.handleKey(event.key.keysym.sym, (event.key.keysym.mod & KMOD_SHIFT) != 0);
       break;
     case SDL_MOUSEBUTTONDOWN:
-      if (event.button.button == SDL_BUTTON_LEFT) scene.toggleMouseLook();
+      if (event.button.button == SDL_BUTTON_LEFT) pressLeft(event.button, scene, windowWidth, windowHeight);
+      break;
+    case SDL_MOUSEBUTTONUP:
+      if (event.button.button == SDL_BUTTON_LEFT && held_) {
+        held_ = false;
+        grabbed_ = nullptr;
+        scene.endDrag();
+      }
       break;
     case SDL_MOUSEMOTION:
-      // Screen y grows downwards: moving the mouse up looks up.
-      if (scene.mouseLook())
+      if (scene.mouseLook()) {
+        // Screen y grows downwards: moving the mouse up looks up.
         scene.camera().turn(static_cast<float>(event.motion.xrel) * DEGREES_PER_PIXEL,
                             -static_cast<float>(event.motion.yrel) * DEGREES_PER_PIXEL);
+      } else if (held_ && (event.motion.state & SDL_BUTTON_LMASK)) {
+        // Keep the grab distance along the new ray: the target follows the
+        // cursor across the screen at the depth where the body was grabbed.
+        glm::vec3 origin, direction;
+        ray(scene, event.motion.x, event.motion.y, windowWidth, windowHeight, origin, direction);
+        const glm::vec3 target = origin + direction * static_cast<float>(grabDistance_);
+        const double t[3] = {target.x, target.y, target.z};
+        scene.moveDrag(t);
+      }
       break;
     case SDL_WINDOWEVENT:
       return event.window.event == SDL_WINDOWEVENT_SIZE_CHANGED;
@@ -41,6 +90,22 @@ bool handleEvent(const SDL_Event& event, AbstractWindow& scene) {
       break;
   }
   return false;
+}
+
+bool WindowInput::dragLine(const AbstractWindow& scene, glm::vec3& grabbed, glm::vec3& target) const {
+  const AbstractObject* object = scene.draggedObject();
+  if (!object || !object->getBody()) return false;
+  dVector3 p;
+  // The point grabbed here; a drag the timeline replayed (after a rewind)
+  // is drawn from the body's centre.
+  if (object == grabbed_)
+    dBodyGetRelPointPos(object->getBody(), grabLocal_[0], grabLocal_[1], grabLocal_[2], p);
+  else
+    for (int k = 0; k < 3; ++k) p[k] = dBodyGetPosition(object->getBody())[k];
+  const double* t = scene.dragTarget();
+  grabbed = glm::vec3(p[0], p[1], p[2]);
+  target = glm::vec3(t[0], t[1], t[2]);
+  return true;
 }
 
 void moveCamera(AbstractWindow& scene, double frameSeconds) {

@@ -2,15 +2,39 @@
 
 #include <SDL2/SDL.h>
 
+#include <glm/glm.hpp>
+
 #include "../AbstractWindow.h"
 
 namespace odelab {
 
-// Turns SDL input into scene actions: Esc and closing the window quit, the
-// left button toggles mouse-look, mouse motion turns the camera while it is
-// on, and every other key press goes to the scene's key table.
-// Returns true when the window's drawable size may have changed.
-bool handleEvent(const SDL_Event& event, AbstractWindow& scene);
+// Turns SDL input into scene actions: Esc and closing the window quit; the
+// left button on a body drags it (a spring pulls the grabbed point toward
+// the cursor, kept at its grab distance along the cursor's ray); the left
+// button elsewhere toggles mouse-look, and any left click leaves it; mouse
+// motion turns the camera in mouse-look; every other key press goes to the
+// scene's key table. Real and scripted (SDL_PushEvent) input take this path.
+class WindowInput {
+ public:
+  // windowWidth / windowHeight: the window's size in SDL's window
+  // coordinates, those of mouse events. Returns true when the window's
+  // drawable size may have changed.
+  bool handleEvent(const SDL_Event& event, AbstractWindow& scene, int windowWidth, int windowHeight);
+
+  // The drag to draw: the grabbed point on the body and the spring's
+  // target. False when nothing is being dragged.
+  bool dragLine(const AbstractWindow& scene, glm::vec3& grabbed, glm::vec3& target) const;
+
+ private:
+  void pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, int windowWidth, int windowHeight);
+  void ray(const AbstractWindow& scene, int x, int y, int windowWidth, int windowHeight, glm::vec3& origin,
+           glm::vec3& direction) const;
+
+  bool held_ = false;                 // the left button holds a drag
+  double grabDistance_ = 0.0;         // along the ray, where the body was grabbed
+  const AbstractObject* grabbed_ = nullptr;
+  double grabLocal_[3] = {0, 0, 0};   // the grabbed point in the body's frame
+};
 
 // Flies the camera with W/S/A/D held, read from the keyboard state each
 // frame so movement is smooth rather than paced by key repeat.

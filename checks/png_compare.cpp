@@ -1,0 +1,102 @@
+// png_compare: how much of a region differs between two PNGs of one size?
+//
+//   png_compare A.png B.png [--region X0,Y0,X1,Y1] [--threshold T]
+//               [--min-changed F] [--max-changed F]
+//
+// A pixel has changed when one of its channels differs by more than T
+// (default 24, of 255). The region is given in fractions of the image
+// (default: all of it). With --min-changed the changed fraction of the
+// region must be at least F; with --max-changed at most F. Exit 0 when the
+// images load, match in size and meet the bounds; 1 when they do not; 2 on a
+// usage error. Prints what it measured either way. The windowed checks use
+// it to see an overlay appear (the help panel: a large part of the middle
+// changes) where nothing else moves (the scene is paused).
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace {
+
+struct Image {
+  int width = 0, height = 0;
+  unsigned char* pixels = nullptr;  // RGB
+  ~Image() { stbi_image_free(pixels); }
+};
+
+bool load(const char* path, Image& image) {
+  int channels = 0;
+  image.pixels = stbi_load(path, &image.width, &image.height, &channels, 3);
+  if (!image.pixels) std::printf("FAIL: cannot read %s as an image: %s\n", path, stbi_failure_reason());
+  return image.pixels != nullptr;
+}
+
+int usage(const char* program) {
+  std::fprintf(stderr,
+               "usage: %s A.png B.png [--region X0,Y0,X1,Y1] [--threshold T] [--min-changed F] [--max-changed F]\n",
+               program);
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) return usage(argv[0]);
+  double region[4] = {0, 0, 1, 1};
+  int threshold = 24;
+  double minChanged = -1.0, maxChanged = 2.0;
+  for (int i = 3; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i + 1 >= argc) return usage(argv[0]);
+    const char* value = argv[++i];
+    if (arg == "--region") {
+      if (std::sscanf(value, "%lf,%lf,%lf,%lf", &region[0], &region[1], &region[2], &region[3]) != 4)
+        return usage(argv[0]);
+    } else if (arg == "--threshold") {
+      threshold = std::atoi(value);
+    } else if (arg == "--min-changed") {
+      minChanged = std::atof(value);
+    } else if (arg == "--max-changed") {
+      maxChanged = std::atof(value);
+    } else {
+      return usage(argv[0]);
+    }
+  }
+  Image a, b;
+  if (!load(argv[1], a) || !load(argv[2], b)) return 1;
+  if (a.width != b.width || a.height != b.height) {
+    std::printf("FAIL: sizes differ: %dx%d and %dx%d\n", a.width, a.height, b.width, b.height);
+    return 1;
+  }
+  const int x0 = std::clamp(static_cast<int>(region[0] * a.width), 0, a.width);
+  const int x1 = std::clamp(static_cast<int>(region[2] * a.width), x0, a.width);
+  const int y0 = std::clamp(static_cast<int>(region[1] * a.height), 0, a.height);
+  const int y1 = std::clamp(static_cast<int>(region[3] * a.height), y0, a.height);
+  long changed = 0, total = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const unsigned char* p = a.pixels + 3 * (static_cast<long>(y) * a.width + x);
+      const unsigned char* q = b.pixels + 3 * (static_cast<long>(y) * b.width + x);
+      int difference = 0;
+      for (int c = 0; c < 3; ++c) difference = std::max(difference, std::abs(p[c] - q[c]));
+      changed += difference > threshold ? 1 : 0;
+      ++total;
+    }
+  const double fraction = total > 0 ? static_cast<double>(changed) / static_cast<double>(total) : 0.0;
+  const bool ok = total > 0 && fraction >= minChanged && fraction <= maxChanged;
+  std::printf("%s: %dx%d, region [%d, %d) x [%d, %d): %ld of %ld pixels changed (%.4f", ok ? "ok" : "FAIL", a.width,
+              a.height, x0, x1, y0, y1, changed, total, fraction);
+  if (minChanged >= 0) std::printf("; at least %.4f wanted", minChanged);
+  if (maxChanged <= 1) std::printf("; at most %.4f wanted", maxChanged);
+  std::printf(")\n");
+  return ok ? 0 : 1;
+}

@@ -1,0 +1,126 @@
+// The --events script format (utils/EventScript.h): what each line becomes,
+// and that every mistake is refused with a message naming file and line.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <sstream>
+
+#include "CommandLine.h"
+#include "EventScript.h"
+
+namespace {
+
+using namespace odelab;
+
+// A stand-in for SDL_GetKeyFromName: a few names, case-insensitive.
+int lookup(const std::string& name) {
+  static const std::map<std::string, int> keys{{"p", 'p'}, {"o", 'o'}, {",", ','}, {".", '.'},
+                                               {"f3", 1000 + 3}, {"left shift", 2000}, {"*", '*'}};
+  std::string lower;
+  for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const auto found = keys.find(lower);
+  return found == keys.end() ? 0 : found->second;
+}
+
+std::vector<ScriptEvent> parse(const std::string& text) {
+  std::istringstream in(text);
+  return parseEventScript(in, "s.events", lookup);
+}
+
+// The UsageError's message, or "" if the text parses.
+std::string errorOf(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const UsageError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(EventScript, ReadsEveryKindOfEvent) {
+  const auto events = parse(
+      "# a comment\n"
+      "\n"
+      "1 key P\n"
+      "2 key F3 shift   # trailing comment\n"
+      "3 down 10 20\n"
+      "3 move 30 40\n"
+      "4 up 30 41\n"
+      "5 mark after_drag\n"
+      "6 quit\n");
+  ASSERT_EQ(events.size(), 7u);
+  EXPECT_EQ(events[0].kind, ScriptEvent::Kind::Key);
+  EXPECT_EQ(events[0].key, 'p');
+  EXPECT_FALSE(events[0].shift);
+  EXPECT_EQ(events[0].line, 3);
+  EXPECT_EQ(events[1].key, 1003);
+  EXPECT_TRUE(events[1].shift);
+  EXPECT_EQ(events[2].kind, ScriptEvent::Kind::Down);
+  EXPECT_EQ(events[2].x, 10);
+  EXPECT_EQ(events[2].y, 20);
+  EXPECT_EQ(events[3].kind, ScriptEvent::Kind::Move);
+  EXPECT_EQ(events[4].kind, ScriptEvent::Kind::Up);
+  EXPECT_EQ(events[4].y, 41);
+  EXPECT_EQ(events[5].kind, ScriptEvent::Kind::Mark);
+  EXPECT_EQ(events[5].label, "after_drag");
+  EXPECT_EQ(events[6].kind, ScriptEvent::Kind::Quit);
+  EXPECT_EQ(events[6].frame, 6);
+}
+
+TEST(EventScript, RepeatsQuotedNamesAndPunctuation) {
+  const auto events = parse("2 key O *3\n1 key \"Left Shift\"\n1 key ,\n1 key . shift *2\n1 key *\n");
+  // Sorted by frame, file order kept within a frame, repeats expanded.
+  ASSERT_EQ(events.size(), 8u);
+  EXPECT_EQ(events[0].key, 2000);
+  EXPECT_EQ(events[1].key, ',');
+  EXPECT_EQ(events[2].key, '.');
+  EXPECT_TRUE(events[2].shift);
+  EXPECT_EQ(events[3].key, '.');
+  EXPECT_EQ(events[4].key, '*');
+  for (int i = 5; i < 8; ++i) {
+    EXPECT_EQ(events[i].key, 'o');
+    EXPECT_EQ(events[i].frame, 2);
+    EXPECT_EQ(events[i].line, 1);
+  }
+}
+
+TEST(EventScript, EmptyScriptHasNoEvents) { EXPECT_TRUE(parse("# nothing\n\n   \n").empty()); }
+
+TEST(EventScript, AcceptsWindowsLineEnds) { EXPECT_EQ(parse("1 key P\r\n2 quit\r\n").size(), 2u); }
+
+TEST(EventScript, RefusesMistakesNamingFileAndLine) {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"1 key P\n2 key NoSuchKey\n", "s.events:2: key: unknown key name 'NoSuchKey'"},
+      {"0 key P\n", "s.events:1: frame '0'"},
+      {"-3 key P\n", "s.events:1: frame '-3'"},
+      {"x key P\n", "s.events:1: frame 'x'"},
+      {"1.5 key P\n", "s.events:1: frame '1.5'"},
+      {"99999999999999999999 key P\n", "s.events:1: frame"},
+      {"1\n", "s.events:1: expected '<frame> <event>"},
+      {"1 jump\n", "s.events:1: unknown event 'jump'"},
+      {"1 key\n", "s.events:1: key: expected"},
+      {"1 key P ctrl\n", "s.events:1: key: unexpected 'ctrl'"},
+      {"1 key P *0\n", "s.events:1: key: unexpected '*0'"},
+      {"1 key P shift shift\n", "s.events:1: key: unexpected 'shift'"},
+      {"\n\n1 down 10\n", "s.events:3: down: expected"},
+      {"1 move 10 20 30\n", "s.events:1: move: expected"},
+      {"1 up -1 5\n", "s.events:1: up: x and y"},
+      {"1 down 1.5 5\n", "s.events:1: down: x and y"},
+      {"1 mark\n", "s.events:1: mark: expected"},
+      {"1 mark a-b\n", "s.events:1: mark: expected"},
+      {"1 mark a b\n", "s.events:1: mark: expected"},
+      {"1 quit now\n", "s.events:1: quit: expected"},
+      {"1 key \"Left Shift\n", "s.events:1: unclosed quote"},
+  };
+  for (const auto& [text, message] : cases) {
+    const std::string error = errorOf(text);
+    EXPECT_NE(error.find(message), std::string::npos) << "script: " << text << "error: " << error;
+    EXPECT_EQ(error.rfind("--events: ", 0), 0u) << error;
+  }
+}
+
+TEST(EventScript, UnreadableFileIsAUsageError) {
+  EXPECT_THROW(loadEventScript("/nonexistent/x.events", lookup), UsageError);
+}
+
+}  // namespace

@@ -1,0 +1,135 @@
+#include "EventScript.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "CommandLine.h"
+
+namespace odelab {
+
+namespace {
+
+// Splits a line into words at blanks; "a quoted word" keeps its blanks.
+// A '#' outside quotes starts a comment. Returns false on an unclosed quote.
+bool splitWords(const std::string& line, std::vector<std::string>& words) {
+  words.clear();
+  std::size_t i = 0;
+  while (i < line.size()) {
+    const char c = line[i];
+    if (c == '#') break;
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      ++i;
+      continue;
+    }
+    std::string word;
+    if (c == '"') {
+      const std::size_t end = line.find('"', i + 1);
+      if (end == std::string::npos) return false;
+      word = line.substr(i + 1, end - i - 1);
+      i = end + 1;
+    } else {
+      while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i])) && line[i] != '#') word += line[i++];
+    }
+    words.push_back(word);
+  }
+  return true;
+}
+
+bool parseInteger(const std::string& text, long long min, long long max, long long& value) {
+  if (text.empty()) return false;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (!std::isdigit(static_cast<unsigned char>(text[i])) && !(i == 0 && text[i] == '-')) return false;
+  errno = 0;
+  char* end = nullptr;
+  const long long parsed = std::strtoll(text.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0' || parsed < min || parsed > max) return false;
+  value = parsed;
+  return true;
+}
+
+bool isLabel(const std::string& text) {
+  return !text.empty() && text.size() <= 64 &&
+         std::all_of(text.begin(), text.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+}  // namespace
+
+std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& fileName, const KeyLookup& keyLookup) {
+  std::vector<ScriptEvent> events;
+  std::string text;
+  std::vector<std::string> words;
+  int lineNumber = 0;
+  while (std::getline(in, text)) {
+    ++lineNumber;
+    auto fail = [&](const std::string& what) {
+      throw UsageError("--events: " + fileName + ":" + std::to_string(lineNumber) + ": " + what);
+    };
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    if (!splitWords(text, words)) fail("unclosed quote");
+    if (words.empty()) continue;
+    if (words.size() < 2) fail("expected '<frame> <event> ...', found '" + words[0] + "'");
+
+    ScriptEvent event;
+    event.line = lineNumber;
+    if (!parseInteger(words[0], 1, MAX_EVENT_FRAME, event.frame))
+      fail("frame '" + words[0] + "' is not a whole number from 1 to " + std::to_string(MAX_EVENT_FRAME));
+    const std::string& verb = words[1];
+    int repeat = 1;
+    if (verb == "key") {
+      event.kind = ScriptEvent::Kind::Key;
+      if (words.size() < 3) fail("key: expected '<frame> key <name> [shift] [*N]'");
+      event.keyName = words[2];
+      event.key = keyLookup(event.keyName);
+      if (event.key == 0) fail("key: unknown key name '" + event.keyName + "' (names as SDL_GetKeyFromName: P, F3, \",\", Escape)");
+      for (std::size_t i = 3; i < words.size(); ++i) {
+        const std::string& option = words[i];
+        long long count = 0;
+        if (option == "shift" && !event.shift) {
+          event.shift = true;
+        } else if (option.size() > 1 && option[0] == '*' && parseInteger(option.substr(1), 1, MAX_EVENT_REPEAT, count)) {
+          repeat = static_cast<int>(count);
+        } else {
+          fail("key: unexpected '" + option + "' (allowed after the name: shift, *N with N from 1 to " +
+               std::to_string(MAX_EVENT_REPEAT) + ")");
+        }
+      }
+    } else if (verb == "down" || verb == "move" || verb == "up") {
+      event.kind = verb == "down" ? ScriptEvent::Kind::Down
+                   : verb == "move" ? ScriptEvent::Kind::Move
+                                    : ScriptEvent::Kind::Up;
+      if (words.size() != 4) fail(verb + ": expected '<frame> " + verb + " <x> <y>'");
+      long long x = 0, y = 0;
+      if (!parseInteger(words[2], 0, 100000, x) || !parseInteger(words[3], 0, 100000, y))
+        fail(verb + ": x and y are window pixels, whole numbers from 0 (top left) to 100000");
+      event.x = static_cast<int>(x);
+      event.y = static_cast<int>(y);
+    } else if (verb == "mark") {
+      event.kind = ScriptEvent::Kind::Mark;
+      if (words.size() != 3 || !isLabel(words[2]))
+        fail("mark: expected '<frame> mark <label>', the label made of letters, digits and _ (at most 64)");
+      event.label = words[2];
+    } else if (verb == "quit") {
+      event.kind = ScriptEvent::Kind::Quit;
+      if (words.size() != 2) fail("quit: expected '<frame> quit'");
+    } else {
+      fail("unknown event '" + verb + "' (key, down, move, up, mark, quit)");
+    }
+    for (int i = 0; i < repeat; ++i) events.push_back(event);
+  }
+  if (in.bad()) throw UsageError("--events: cannot read " + fileName);
+  std::stable_sort(events.begin(), events.end(),
+                   [](const ScriptEvent& a, const ScriptEvent& b) { return a.frame < b.frame; });
+  return events;
+}
+
+std::vector<ScriptEvent> loadEventScript(const std::string& path, const KeyLookup& keyLookup) {
+  std::ifstream file(path);
+  if (!file) throw UsageError("--events: cannot read '" + path + "'");
+  return parseEventScript(file, path, keyLookup);
+}
+
+}  // namespace odelab

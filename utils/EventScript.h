@@ -1,0 +1,53 @@
+#pragma once
+
+#include <functional>
+#include <istream>
+#include <string>
+#include <vector>
+
+namespace odelab {
+
+// Scripted input for a window run (--events FILE): one event a line, played
+// before the given frame's event polling. The format (doc/manual.md,
+// "Scripted input"):
+//
+//   # a comment; blank lines are ignored, and so is text after '#'
+//   <frame> key <name> [shift] [*N]   press and release a key (N times)
+//   <frame> down <x> <y>              left mouse button down at window pixel (x, y)
+//   <frame> move <x> <y>              mouse moves to (x, y)
+//   <frame> up <x> <y>                left mouse button up at (x, y)
+//   <frame> mark <label>              record metrics mark_<label>_steps, _sim_seconds, _hash
+//   <frame> quit                      close the window, as the user would
+//
+// Frames count from 1 (the first frame). Events of one frame run in the
+// order of the file; lines need not be in frame order. Key names are SDL's
+// (SDL_GetKeyFromName: "P", "F3", ",", "Escape"; one with a space is quoted:
+// "Left Shift"), case-insensitive.
+struct ScriptEvent {
+  enum class Kind { Key, Down, Move, Up, Mark, Quit };
+  long long frame = 1;
+  Kind kind = Kind::Key;
+  int key = 0;             // Key: the key code
+  std::string keyName;     // Key: as written
+  bool shift = false;      // Key: with Shift held
+  int x = 0, y = 0;        // Down, Move, Up: window pixels from the top-left corner
+  std::string label;       // Mark
+  int line = 0;            // where it was written, for messages
+};
+
+// Turns a key name into a key code, 0 when the name is unknown. The window
+// passes SDL_GetKeyFromName; the parser itself needs no SDL library.
+using KeyLookup = std::function<int(const std::string& name)>;
+
+// The largest repeat count (*N) and frame number accepted.
+constexpr int MAX_EVENT_REPEAT = 100000;
+constexpr long long MAX_EVENT_FRAME = 1000000000LL;
+
+// Parses a script; events come back sorted by frame, file order kept within
+// a frame, repeats expanded. Throws UsageError (CommandLine.h) naming
+// `fileName`, the line and what is wrong.
+std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& fileName, const KeyLookup& keyLookup);
+// Reads and parses FILE; throws UsageError when it cannot be read.
+std::vector<ScriptEvent> loadEventScript(const std::string& path, const KeyLookup& keyLookup);
+
+}  // namespace odelab

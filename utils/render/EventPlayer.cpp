@@ -1,0 +1,102 @@
+#include "EventPlayer.h"
+
+#include "RenderError.h"
+
+namespace odelab {
+
+EventPlayer::EventPlayer(std::vector<ScriptEvent> events, SDL_Window* window) : events_(std::move(events)) {
+  if (events_.empty()) return;
+  windowId_ = window ? SDL_GetWindowID(window) : 0;
+  markType_ = SDL_RegisterEvents(1);
+  if (markType_ == static_cast<Uint32>(-1)) throw RenderError("--events: SDL has no user event type left for marks");
+}
+
+void EventPlayer::push(SDL_Event& event) {
+  if (SDL_PushEvent(&event) < 0) throw RenderError(std::string("--events: cannot queue an event: ") + SDL_GetError());
+}
+
+void EventPlayer::pushDue(long long frame) {
+  for (; next_ < events_.size() && events_[next_].frame <= frame; ++next_) {
+    const ScriptEvent& e = events_[next_];
+    SDL_Event event;
+    SDL_zero(event);
+    switch (e.kind) {
+      case ScriptEvent::Kind::Key: {
+        event.key.windowID = windowId_;
+        event.key.keysym.sym = e.key;
+        event.key.keysym.scancode = SDL_GetScancodeFromKey(e.key);
+        event.key.keysym.mod = e.shift ? KMOD_LSHIFT : KMOD_NONE;
+        event.key.repeat = 0;
+        event.type = SDL_KEYDOWN;
+        event.key.state = SDL_PRESSED;
+        push(event);
+        event.type = SDL_KEYUP;
+        event.key.state = SDL_RELEASED;
+        push(event);
+        break;
+      }
+      case ScriptEvent::Kind::Down:
+      case ScriptEvent::Kind::Up: {
+        const bool down = e.kind == ScriptEvent::Kind::Down;
+        if (e.x != mouseX_ || e.y != mouseY_) {  // the cursor gets there first
+          SDL_Event motion;
+          SDL_zero(motion);
+          motion.type = SDL_MOUSEMOTION;
+          motion.motion.windowID = windowId_;
+          motion.motion.state = buttonHeld_ ? SDL_BUTTON_LMASK : 0;
+          motion.motion.x = e.x;
+          motion.motion.y = e.y;
+          motion.motion.xrel = e.x - mouseX_;
+          motion.motion.yrel = e.y - mouseY_;
+          push(motion);
+        }
+        event.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+        event.button.windowID = windowId_;
+        event.button.button = SDL_BUTTON_LEFT;
+        event.button.state = down ? SDL_PRESSED : SDL_RELEASED;
+        event.button.clicks = 1;
+        event.button.x = e.x;
+        event.button.y = e.y;
+        push(event);
+        buttonHeld_ = down;
+        mouseX_ = e.x;
+        mouseY_ = e.y;
+        break;
+      }
+      case ScriptEvent::Kind::Move:
+        event.type = SDL_MOUSEMOTION;
+        event.motion.windowID = windowId_;
+        event.motion.state = buttonHeld_ ? SDL_BUTTON_LMASK : 0;
+        event.motion.x = e.x;
+        event.motion.y = e.y;
+        event.motion.xrel = e.x - mouseX_;
+        event.motion.yrel = e.y - mouseY_;
+        push(event);
+        mouseX_ = e.x;
+        mouseY_ = e.y;
+        break;
+      case ScriptEvent::Kind::Mark:
+        event.type = markType_;
+        event.user.windowID = windowId_;
+        event.user.code = static_cast<Sint32>(next_);
+        push(event);
+        break;
+      case ScriptEvent::Kind::Quit:
+        event.type = SDL_QUIT;
+        push(event);
+        break;
+    }
+  }
+}
+
+bool EventPlayer::handle(const SDL_Event& event, AbstractWindow& scene,
+                         const std::function<void(const std::string&)>& onMark) {
+  if (events_.empty() || event.type != markType_) return false;
+  const auto index = static_cast<std::size_t>(event.user.code);
+  if (index >= events_.size()) return true;
+  scene.mark(events_[index].label);
+  onMark(events_[index].label);
+  return true;
+}
+
+}  // namespace odelab

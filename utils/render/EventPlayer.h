@@ -1,0 +1,43 @@
+#pragma once
+
+#include <SDL2/SDL.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../AbstractWindow.h"
+#include "../EventScript.h"
+
+namespace odelab {
+
+// Plays a --events script: before a frame's event polling, that frame's
+// events go into SDL's queue with SDL_PushEvent, so they take the same path
+// as real input (key down and up; left button down, motion, up; SDL_QUIT).
+// A mark travels as a user event in the same queue, so it is taken in order
+// with the input around it, and calls scene.mark() when polled.
+class EventPlayer {
+ public:
+  // `events`: a parsed script (loadEventScript), possibly empty. Call after
+  // SDL's video subsystem is up.
+  EventPlayer(std::vector<ScriptEvent> events, SDL_Window* window);
+
+  // Pushes the events of `frame` (frames count from 1).
+  void pushDue(long long frame);
+  // If `event` is a mark of this script: records it, calls `onMark` with its
+  // label, and returns true.
+  bool handle(const SDL_Event& event, AbstractWindow& scene, const std::function<void(const std::string&)>& onMark);
+
+ private:
+  void push(SDL_Event& event);
+
+  std::vector<ScriptEvent> events_;
+  std::size_t next_ = 0;
+  Uint32 windowId_ = 0;
+  Uint32 markType_ = static_cast<Uint32>(-1);
+  int mouseX_ = 0, mouseY_ = 0;
+  bool buttonHeld_ = false;
+};
+
+}  // namespace odelab
