@@ -78,6 +78,13 @@ class BoxAndSphere : public AbstractWindow {
     lines.push_back(s.str());
   }
 
+  // The live plot (L): the scene's headline measurement.
+  bool plotValue(double& value) const override {
+    value = double(bodyCount() - disabledBodyCount());
+    return true;
+  }
+  std::string plotLabel() const override { return "active (not disabled) bodies"; }
+
   void addMetrics(Metrics& m) const override {
     m.set("spawned", spawned_);
     m.set("removed_bodies", removed_);

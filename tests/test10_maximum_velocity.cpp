@@ -525,6 +525,13 @@ class MaximumVelocity : public AbstractWindow {
                     (ccd_ ? "on, " + std::to_string(ccdClamps_) + " clamps" : std::string("off")));
   }
 
+  // The live plot (L): the scene's headline measurement.
+  bool plotValue(double& value) const override {
+    value = double(passed_);
+    return true;
+  }
+  std::string plotLabel() const override { return "launches that passed the wall (of all launched)"; }
+
   void addMetrics(Metrics& m) const override {
     m.set("launch_velocity", findMaxVelocity_ ? 0.0 : velocity_);
     m.set("launches", launched_);

@@ -128,6 +128,13 @@ class JumpingBalls : public AbstractWindow {
     lines.push_back(s.str());
   }
 
+  // The live plot (L): the scene's headline measurement.
+  bool plotValue(double& value) const override {
+    value = worstBall() ? worstBall()->error() : 0.0;
+    return true;
+  }
+  std::string plotLabel() const override { return "largest |rebound ratio - e^2| so far"; }
+
   void addMetrics(Metrics& m) const override {
     const BallRecord* worst = worstBall();
     m.set("max_rebound_error", worst ? worst->error() : NaN);

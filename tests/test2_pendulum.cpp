@@ -142,6 +142,13 @@ class Pendulum : public PendulumScene {
                     format(sampleInterval_) + " s); R resets and rewrites it");
   }
 
+  // The live plot (L): the scene's headline measurement.
+  bool plotValue(double& value) const override {
+    value = lastEnergy_;
+    return true;
+  }
+  std::string plotLabel() const override { return "total energy (J)"; }
+
   void addMetrics(Metrics& m) const override {
     m.set("energy_rel_variation", relativeVariation());
     m.set("energy_drift", drift());

@@ -135,6 +135,13 @@ class AxisSystem : public AbstractWindow {
     lines.push_back(limits);
   }
 
+  // The live plot (L): the scene's headline measurement.
+  bool plotValue(double& value) const override {
+    value = tilt_;
+    return true;
+  }
+  std::string plotLabel() const override { return "big cube's tilt (degrees)"; }
+
   void addMetrics(Metrics& m) const override {
     m.set("seconds_upright", uprightUntil_ < 0 ? simulatedTime() : uprightUntil_);
     m.set("fell", uprightUntil_ < 0 ? 0 : 1);

@@ -187,6 +187,13 @@ class AxisSystem2 : public AbstractWindow {
     lines.push_back(energies);
   }
 
+  // The live plot (L): the scene's headline measurement.
+  bool plotValue(double& value) const override {
+    value = jointError_;
+    return true;
+  }
+  std::string plotLabel() const override { return "largest ball-joint error (m)"; }
+
   void addMetrics(Metrics& m) const override {
     m.set("max_joint_error", maxJointError_);
     m.set("max_angular_speed", maxPivotSpeed_);

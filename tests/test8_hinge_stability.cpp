@@ -109,6 +109,13 @@ class HingeStability : public PendulumScene {
                     format(sampleInterval_) + " s); R resets and truncates it");
   }
 
+  // The live plot (L): the scene's headline measurement.
+  bool plotValue(double& value) const override {
+    value = elongation_;
+    return true;
+  }
+  std::string plotLabel() const override { return "relative elongation (l - l0) / l0"; }
+
   void addMetrics(Metrics& m) const override {
     m.set("max_relative_elongation", maxElongation_);
     m.set("mean_relative_elongation", meanElongation());

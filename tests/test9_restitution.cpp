@@ -93,6 +93,13 @@ class RestitutionAccuracy : public AbstractWindow {
     lines.push_back(s.str());
   }
 
+  // The live plot (L): the scene's headline measurement.
+  bool plotValue(double& value) const override {
+    value = relativeErrors_.empty() ? 0.0 : relativeErrors_.back();
+    return true;
+  }
+  std::string plotLabel() const override { return "apex error, relative to the start height"; }
+
   void addMetrics(Metrics& m) const override {
     for (int bounces : REPORTED_BOUNCES) m.set("apex_error_" + std::to_string(bounces), errorAfter(bounces));
     m.set("max_horizontal_drift", maxHorizontalDrift_);
