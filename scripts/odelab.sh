@@ -12,14 +12,16 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$root/build}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
-# Debian packages: compiler and build tools, the libraries, the HUD font, and
-# for the windowed checks an X server with Mesa's software OpenGL.
+# Debian packages: compiler and build tools, the libraries, the HUD font; for
+# the windowed checks an X server with Mesa's software OpenGL; for the lab's
+# report (lab/odelab-report) Debian's Python with matplotlib.
 packages=(
   g++ make cmake pkg-config
   libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev libglu1-mesa-dev
   libcli11-dev libstb-dev libglm-dev libgtest-dev
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
+  python3 python3-matplotlib
 )
 
 say() { printf 'odelab: %s\n' "$*" >&2; }

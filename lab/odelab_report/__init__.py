@@ -1,0 +1,1 @@
+"""ODE Lab's speed-accuracy report (lab/odelab-report)."""

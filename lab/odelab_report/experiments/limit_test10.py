@@ -1,0 +1,95 @@
+"""test10: the highest launch velocity with every launch stopped, at steps
+log-spaced from 1e-2 to 1e-4, beside v = (h + t) / step."""
+
+from .. import markdown as md
+from ..plots import limits as plots
+from ..runner import RunSpec
+from .base import Experiment, Outcome, log_space
+
+HALF_SIZE, WALL = 0.2, 0.05  # m: the cube's half-size and the wall's thickness
+BAND_FACTOR = 1.6
+
+
+def scan_spec(step, extra=(), launches=1, phase_jitter=False):
+    """test10's velocity scan at `step`."""
+    args = ["--find-max-velocity", "--step", step, "--band-factor", BAND_FACTOR, "--launches", launches, *extra]
+    if phase_jitter:
+        args.append("--phase-jitter")
+    return RunSpec("test10", args)
+
+
+def scan_row(step, r):
+    return dict(
+        step_s=step,
+        max_velocity=r.m("max_velocity"),
+        resolution=r.m("max_velocity_resolution"),
+        first_failure_velocity=r.m("first_failure_velocity"),
+        band_upper_velocity=r.m("band_upper_velocity"),
+        velocities_stopped_in_band=r.m("velocities_stopped_in_band"),
+        velocities_passed_in_band=r.m("velocities_passed_in_band"),
+        highest_stopped_velocity_in_band=r.m("highest_stopped_velocity_in_band"),
+        geometric_prediction=(HALF_SIZE + WALL) / step,
+        guaranteed_stop_velocity=(HALF_SIZE + WALL / 2) / step,
+        launches=r.m("launches"),
+        passed_through=r.m("passed_through"),
+        exit_status=r.rc,
+    )
+
+
+class LimitTest10(Experiment):
+    name = "limit-test10"
+    title = "test10: fastest cube the wall stops, against the step"
+    section = 2
+    programs = ("test10",)
+    cost = (2.0, 0.6)
+
+    def run(self, ctx):
+        steps = log_space(1e-2, 1e-4, 5 if ctx.quick else 9)
+        ctx.expect(len(steps))
+        results = ctx.runner.map([scan_spec(s) for s in steps])
+        ctx.advance(len(steps))
+        rows = [scan_row(s, r) for s, r in zip(steps, results)]
+        csv = ctx.write_csv("limit-test10", list(rows[0].keys()), rows,
+                            notes=["test10 --headless --find-max-velocity --step S --band-factor 1.6 --launches 1 "
+                                   "(ERP 0.3, CFM 0, QuickStep 20, fixed launch point x = -4)",
+                                   "failure rule (test10's): a launch fails when the whole cube ends beyond the "
+                                   "wall's far face"])
+        ctx.register_files(plots.velocity_limit(ctx.out_dir, "limit-test10", rows))
+        table_rows = []
+        for row in rows:
+            band = "-"
+            if row["velocities_stopped_in_band"]:
+                band = (f"{md.num(row['first_failure_velocity'], 4)}-{md.num(row['band_upper_velocity'], 4)}: "
+                        f"{int(row['velocities_passed_in_band'])} pass, {int(row['velocities_stopped_in_band'])} "
+                        f"stopped again (highest {md.num(row['highest_stopped_velocity_in_band'], 4)})")
+            table_rows.append([md.num(row["step_s"]), md.num(row["max_velocity"], 5),
+                               md.num(row["geometric_prediction"], 4), md.num(row["guaranteed_stop_velocity"], 4),
+                               md.num(row["max_velocity"] / row["geometric_prediction"], 3), band])
+        text = f"""**Failure rule** (test10's own): a launch fails when the whole cube ends beyond
+the wall's far face. The limit is the highest tested velocity with every
+launch up to it stopped, found by test10's scan (1 m/s steps to 1000 m/s, 0.1%
+above); after the first failure the scan goes on to {BAND_FACTOR} times it, to show
+velocities that are stopped again (the band). ERP 0.3, CFM 0, QuickStep 20,
+surface layer 0, one launch per velocity from the fixed launch point.
+
+{md.table(["step (s)", "limit (m/s)", "(h + t) / step", "(h + t/2) / step", "limit / (h+t)/step",
+           "band above the limit"], table_rows)}
+
+{md.figure("limit-test10", "test10: highest velocity with every launch stopped against the step (log-log), "
+           "with the geometric predictions and the band where stops come back")}
+
+{md.files_line([csv])}
+
+How to read it: the measured limit follows the straight line of slope -1,
+v = (h + t) / step within a few per cent: halve the step and the wall stops
+cubes twice as fast. Every arrival phase is stopped only below (h + t/2) / step;
+between that and the measured limit it depends on where the cube happens to be
+at the steps around the wall, which is why bands of stopped velocities appear
+above the first failure."""
+        by = {row["step_s"]: row for row in rows}
+        headline = []
+        if 0.001 in by and 0.0001 in by:
+            headline.append(f"test10: the wall stops every cube up to {md.num(by[0.001]['max_velocity'], 4)} m/s at step "
+                            f"0.001 and {md.num(by[0.0001]['max_velocity'], 4)} m/s at 0.0001 (prediction (h + t)/step: "
+                            f"250 / 2500 m/s; thesis: 250 / about 3630).")
+        return Outcome(text, headline)

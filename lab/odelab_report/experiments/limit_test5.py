@@ -1,0 +1,162 @@
+"""test5: the tallest stack of plates that still runs in real time, for
+each collision space and for 10 and 20 QuickStep iterations."""
+
+from .. import markdown as md
+from ..plots import limits as plots
+from ..runner import RunSpec, median
+from ..search import highest_passing
+from .base import Experiment, Outcome
+
+SPACES = ["simple", "hash", "sap", "quadtree"]
+SPAWN_INTERVAL = 0.05  # s between plates (test5's default is 0.3; the same stack, built 6x sooner)
+SETTLE = 2.0           # s after the last plate is dropped: it lands within 1 s, then the last second is timed
+MIN_HEIGHT_FRACTION = 0.95  # the stack must stand at least this fraction of N plates tall
+MAX_OFFSET = 0.1      # m: 2% of the plate's width
+MAX_TWIST = 2.0       # degrees
+PLATE = 0.05          # m: plate thickness
+RULE = ("a stack of N plates fails when its cost per step exceeds the step (1 ms at step 0.001: slower than "
+        "real time); the cost is the mean wall time of collide + step over the last simulated second (test5's "
+        "`ms_per_step`, every plate dropped) times the run's CPU share (CPU time / wall time, at most 1), i.e. the "
+        "wall time with a core to itself; or when it is not an aligned stack: lower than "
+        f"{MIN_HEIGHT_FRACTION:g} x N x {PLATE} m (`stack_height`: plates missing from it), a plate centre more than "
+        f"{MAX_OFFSET} m from the axis (`max_axis_offset`) or turned more than {MAX_TWIST:g} degrees "
+        "(`max_twist_degrees`), or a non-finite state")
+
+
+def step_cost(r):
+    """ms per step with a core to itself: test5's ms_per_step x the run's CPU share."""
+    raw = r.m("ms_per_step")
+    return None if raw is None else raw * r.cpu_share
+
+
+def judge(r, plates, step):
+    if r.rc != 0:
+        return False, "non-finite state" if r.blew_up else "ODE error"
+    if r.m("stack_height", 0) < MIN_HEIGHT_FRACTION * plates * PLATE:
+        return False, f"stack {r.m('stack_height', 0):.3g} m tall, not {plates * PLATE:.3g}"
+    if r.m("max_axis_offset", 0) > MAX_OFFSET:
+        return False, f"offset {r.m('max_axis_offset'):.3g} m"
+    if r.m("max_twist_degrees", 0) > MAX_TWIST:
+        return False, f"twist {r.m('max_twist_degrees'):.3g} deg"
+    if step_cost(r) > 1000 * step:
+        return False, f"{step_cost(r):.3g} ms per step"
+    return True, f"{step_cost(r):.3g} ms per step"
+
+
+def stack_spec(space, iterations, step, plates, extra=()):
+    """A timed test5 run that drops `plates` plates and times the last second."""
+    args = ["--space", space, "--iterations", iterations, "--step", step, "--plates", plates,
+            "--spawn-interval", SPAWN_INTERVAL, "--seconds", round(plates * SPAWN_INTERVAL + SETTLE, 3), *extra]
+    return RunSpec("test5", args, timed=True, timeout=900, priority=0)
+
+
+EXPECTED_PROBES = (7, 2)  # about how many runs a search makes (full, quick)
+
+
+def search_tallest(runner, space, iterations, quick, step=0.001, extra=(), on_probe=None):
+    """The tallest aligned stack in real time: SearchResult with probe info (RunResult, reason)."""
+
+    def probe(plates):
+        r = runner.run(stack_spec(space, iterations, step, plates, extra))
+        passed, reason = judge(r, plates, step)
+        return passed, (r, reason)
+
+    return highest_passing(probe, start=15 if quick else 40, factor=2.0 if quick else 1.5,
+                           ratio=3.0 if quick else 1.2, low=5, high=30 if quick else 600, integer=True,
+                           on_probe=on_probe)
+
+
+def crossing_plates(result, step):
+    """The plate count at which ms_per_step reaches the step, interpolated
+    linearly between the probes around it (None without such a pair)."""
+    points = sorted((v, step_cost(info[0])) for v, _, info in result.probes if step_cost(info[0]) is not None)
+    budget = 1000 * step
+    for (n0, c0), (n1, c1) in zip(points, points[1:]):
+        if c0 <= budget < c1:
+            return n0 + (budget - c0) * (n1 - n0) / (c1 - c0)
+    return None
+
+
+def summary_row(label, space, iterations, step, result):
+    best = next((info for v, p, info in result.probes if v == result.highest_pass), None)
+    fail = next((info for v, p, info in result.probes if v == result.lowest_fail), None)
+    return dict(setting=label, space=space, iterations=iterations, step_s=step,
+                tallest_plates=result.highest_pass,
+                tallest_height_m=best[0].m("stack_height") if best else None,
+                ms_per_step_at_tallest=step_cost(best[0]) if best else None,
+                axis_offset_at_tallest_m=best[0].m("max_axis_offset") if best else None,
+                first_failing_plates=result.lowest_fail, failure=fail[1] if fail else "",
+                interpolated_real_time_plates=crossing_plates(result, step),
+                search_capped=result.capped, probes=len(result.probes))
+
+
+def probe_rows(label, space, iterations, step, result):
+    return [dict(setting=label, space=space, iterations=iterations, step_s=step, plates=v, passed=p, outcome=info[1],
+                 ms_per_step=step_cost(info[0]), ms_per_step_raw=info[0].m("ms_per_step"),
+                 cpu_share=info[0].cpu_share, stack_height_m=info[0].m("stack_height"),
+                 landed_plates=info[0].m("landed_plates"), max_axis_offset_m=info[0].m("max_axis_offset"),
+                 max_twist_degrees=info[0].m("max_twist_degrees"), wall_seconds=info[0].m("wall_seconds"),
+                 sim_seconds=info[0].m("sim_seconds"), exit_status=info[0].rc)
+            for v, p, info in result.probes]
+
+
+class LimitTest5(Experiment):
+    name = "limit-test5"
+    title = "test5: tallest stack in real time"
+    section = 2
+    programs = ("test5",)
+    cost = (450.0, 30.0)
+
+    def run(self, ctx):
+        configs = [(space, it) for it in (20, 10) for space in SPACES]
+        def one(config):
+            on_probe, finished = ctx.search_units(EXPECTED_PROBES[ctx.quick])
+            result = search_tallest(ctx.runner, config[0], config[1], ctx.quick, on_probe=on_probe)
+            finished()
+            return result
+
+        results = ctx.runner.parallel([lambda c=c: one(c) for c in configs])
+        limits, probes = [], []
+        for (space, it), res in zip(configs, results):
+            label = f"{space}, {it} iterations"
+            limits.append(summary_row(label, space, it, 0.001, res))
+            probes.extend(probe_rows(label, space, it, 0.001, res))
+        notes = ["failure rule: " + RULE,
+                 f"plates dropped every {SPAWN_INTERVAL} s, run for plates x {SPAWN_INTERVAL} + {SETTLE} s; ERP 0.2, "
+                 "CFM 0, step 0.001; search: plate counts x1.5 from 40, then bisection to 20%"]
+        csv = ctx.write_csv("limit-test5", list(limits[0].keys()), limits, notes)
+        csv_probes = ctx.write_csv("limit-test5-probes", list(probes[0].keys()), probes, notes)
+        ctx.register_files(plots.stack_cost(ctx.out_dir, "limit-test5", probes, 1.0))
+        rows = [[x["setting"],
+                 (md.num(x["tallest_plates"]) + (" (cap)" if x["first_failing_plates"] is None else "")
+                  if x["tallest_plates"] else "none"),
+                 md.num(x["tallest_height_m"], 3, "m"), md.num(x["ms_per_step_at_tallest"], 3),
+                 md.num(x["first_failing_plates"]), x["failure"] or "-",
+                 md.num(x["interpolated_real_time_plates"], 3)] for x in limits]
+        text = f"""**Failure rule.** {RULE[0].upper() + RULE[1:]}. Plates are dropped every
+{SPAWN_INTERVAL} s (test5's default is 0.3 s; the stack is the same, built sooner) and the run
+lasts until {SETTLE:g} s after the last drop. ERP 0.2, CFM 0, step 0.001 s. The
+search multiplies the plate count by {2 if ctx.quick else 1.5} from {15 if ctx.quick else 40} until a stack
+fails{" (at most 30 plates)" if ctx.quick else ""}, then bisects to {"a factor 3" if ctx.quick else "20%"}. The cost is wall time with the CPU share taken out, so it
+depends on this machine's core but hardly on what else runs on it; the CPU share of these runs:
+median {md.num(median([p["cpu_share"] for p in probes]), 2)}, lowest {md.num(min(p["cpu_share"] for p in probes), 2)}
+(see *How timing was taken*).
+
+{md.table(["setting", "tallest stack passing (plates)", "its height", "ms per step there (adjusted)",
+           "first failing (plates)", "why it failed", "plates at 1 ms per step (interpolated)"], rows)}
+
+{md.figure("limit-test5", "test5: collide + step wall time per step against the stack's plate count, "
+           "per collision space and iteration count; the real-time budget is the step, 1 ms")}
+
+{md.files_line([csv, csv_probes])}
+
+How to read it: each curve is the cost of one step with a stack of N plates.
+Where it crosses the dashed 1 ms line, the simulation can no longer keep up
+with the clock at step 0.001; the tallest stack in real time is there, unless
+the stack loses its alignment first."""
+        best = max(limits, key=lambda x: x["tallest_plates"] or 0)
+        default = next(x for x in limits if x["space"] == "simple" and x["iterations"] == 20)
+        headline = [f"test5: the tallest aligned stack in real time at step 0.001 is {md.num(default['tallest_plates'])} "
+                    f"plates with the thesis's simple space and 20 iterations, {md.num(best['tallest_plates'])} with "
+                    f"{best['setting']} (on this machine; thesis: hash space doubles the height)."]
+        return Outcome(text, headline)

@@ -1,0 +1,284 @@
+"""Runs the test programs as separate processes, at most `jobs` at a time.
+
+Every run gets its own working folder (so output files such as
+Test2_output.txt never collide), writes its metrics with --metrics-json,
+and is timed twice: by the program itself (its `wall_seconds` metric, the
+run loop only) and by the kernel (user + system CPU seconds of the child,
+from wait4). Identical runs within one report are made once and shared
+between experiments (the cache), so an experiment that needs another's
+measurement does not pay for it twice.
+"""
+
+import heapq
+import itertools
+import json
+import os
+import shlex
+import subprocess
+import tempfile
+import threading
+from concurrent.futures import Future, ThreadPoolExecutor
+from pathlib import Path
+
+# Exit statuses of the test programs (doc/manual.md). 3 and 4 are results
+# (the simulation blew up / ODE reported an error), not mistakes of the lab.
+EXIT_OK, EXIT_BLEW_UP, EXIT_ODE_ERROR = 0, 3, 4
+# Timed runs that got less than this share of a processor are made again...
+RETRY_SHARE = 0.9
+# ...up to this many times in all, when one run is shorter than this (seconds),
+RETRY_ATTEMPTS = 2
+RETRY_MAX_WALL = 2.0
+# ...unless the machine is busy for good: the median share of the last
+# RECENT timed runs below BUSY_SHARE says a retry would fare no better.
+RECENT = 15
+BUSY_SHARE = 0.6
+RESULT_STATUSES = (EXIT_OK, EXIT_BLEW_UP, EXIT_ODE_ERROR)
+
+
+class LabError(Exception):
+    """A mistake the user or the lab must fix; the report is not written."""
+
+
+class RunSpec:
+    """One program run. `timed`: its wall time is a result, so it never
+    shares the machine with more runs than there are cores; `repeat` tells
+    repeated timings apart; `priority` 0 goes before 1 (the runs of a
+    search, which waits for each before choosing the next)."""
+
+    def __init__(self, program, args, timed=False, repeat=0, timeout=600, priority=1):
+        self.program = program
+        self.args = tuple(str(a) for a in args)
+        self.timed = timed
+        self.repeat = repeat
+        self.timeout = timeout
+        self.priority = priority
+
+    def key(self):
+        return (self.program, self.args, self.repeat)
+
+    def command_line(self):
+        return " ".join([self.program] + [shlex.quote(a) for a in self.args])
+
+
+class RunResult:
+    def __init__(self, spec, rc, metrics, stdout, stderr, cpu_seconds, workdir):
+        self.spec = spec
+        self.rc = rc
+        self.metrics = metrics
+        self.stdout = stdout
+        self.stderr = stderr
+        self.cpu_seconds = cpu_seconds
+        self.workdir = Path(workdir)
+        self.attempts = 1
+
+    def m(self, name, default=None):
+        value = self.metrics.get(name)
+        return default if value is None else value
+
+    @property
+    def blew_up(self):
+        return self.rc == EXIT_BLEW_UP
+
+    @property
+    def ode_error(self):
+        return self.rc == EXIT_ODE_ERROR
+
+    @property
+    def cpu_share(self):
+        """CPU time over wall time (at most 1): below 1, the run waited for
+        the processor and its wall time is inflated by about 1 / share. Runs
+        too short to tell (under 20 ms) count as 1."""
+        wall = self.m("wall_seconds")
+        if not wall or wall < 0.02:
+            return 1.0
+        return min(1.0, self.cpu_seconds / wall)
+
+    def wall_per_sim_second(self):
+        wall, sim = self.m("wall_seconds"), self.m("sim_seconds")
+        return wall / sim if wall is not None and sim else None
+
+
+class Slots:
+    """Admits runs in order of (priority, arrival): at most `jobs` at once,
+    and at most `cores` at once while a timed run is among them."""
+
+    def __init__(self, jobs, cores):
+        self._jobs, self._cores = jobs, cores
+        self._running = 0
+        self._timed_running = 0
+        self._waiting = []
+        self._arrival = itertools.count()
+        self._condition = threading.Condition()
+
+    def _may_start(self, timed):
+        if self._running >= self._jobs:
+            return False
+        if (timed or self._timed_running) and self._running >= self._cores:
+            return False
+        return True
+
+    def acquire(self, priority, timed):
+        with self._condition:
+            ticket = (priority, next(self._arrival))
+            heapq.heappush(self._waiting, ticket)
+            while self._waiting[0] != ticket or not self._may_start(timed):
+                self._condition.wait()
+            heapq.heappop(self._waiting)
+            self._running += 1
+            self._timed_running += 1 if timed else 0
+            self._condition.notify_all()
+
+    def release(self, timed):
+        with self._condition:
+            self._running -= 1
+            self._timed_running -= 1 if timed else 0
+            self._condition.notify_all()
+
+
+class Runner:
+    def __init__(self, build_dir, jobs, tmp_root, retry=True):
+        self.build_dir = Path(build_dir)
+        self.jobs = jobs
+        self._slots = Slots(jobs, os.cpu_count() or 1)
+        self._tmp_root = Path(tmp_root)
+        self._cache = {}
+        self._help = {}
+        self._lock = threading.Lock()
+        self._pool = ThreadPoolExecutor(max_workers=256, thread_name_prefix="run")
+        self._running = set()
+        self._aborted = False
+        self._retry = retry
+        self.runs = []  # every RunResult, in completion order (for runs.csv)
+
+    # ---- public -------------------------------------------------------------
+    def run(self, spec):
+        """Runs `spec` (or waits for the identical run already made)."""
+        with self._lock:
+            future = self._cache.get(spec.key())
+            owner = future is None
+            if owner:
+                future = Future()
+                self._cache[spec.key()] = future
+        if owner:
+            try:
+                future.set_result(self._execute_timed(spec) if spec.timed else self._execute(spec))
+            except BaseException as error:  # noqa: BLE001 - handed to every waiter
+                future.set_exception(error)
+        return future.result()
+
+    def map(self, specs):
+        """Runs every spec, in parallel within the slots; results in order."""
+        futures = [self._pool.submit(self.run, spec) for spec in specs]
+        return [f.result() for f in futures]
+
+    def parallel(self, calls):
+        """Calls every function (e.g. a search that makes its runs one after
+        another) in parallel with the others; their results, in order."""
+        futures = [self._pool.submit(call) for call in calls]
+        return [f.result() for f in futures]
+
+    def run_timed(self, program, args, repeats):
+        """`repeats` identical timed runs; the results, in repeat order."""
+        return self.map([RunSpec(program, args, timed=True, repeat=r) for r in range(repeats)])
+
+    def help_text(self, program):
+        """`program --help`, to see which options this build has."""
+        with self._lock:
+            if program in self._help:
+                return self._help[program]
+        out = subprocess.run([str(self.build_dir / program), "--help"], capture_output=True, text=True, timeout=60)
+        with self._lock:
+            self._help[program] = out.stdout
+        return out.stdout
+
+    @property
+    def aborted(self):
+        return self._aborted
+
+    def abort(self):
+        """Stops every running program (Ctrl-C); new runs fail at once."""
+        with self._lock:
+            self._aborted = True
+            running = list(self._running)
+        for process in running:
+            try:
+                process.kill()
+            except OSError:
+                pass
+
+    def close(self):
+        self._pool.shutdown(wait=False, cancel_futures=True)
+
+    def _busy(self):
+        with self._lock:
+            recent = [r.cpu_share for r in self.runs if r.spec.timed][-RECENT:]
+        return len(recent) >= RECENT and median(recent) < BUSY_SHARE
+
+    # ---- one process ----------------------------------------------------------
+    def _execute_timed(self, spec):
+        """A timed run that did not have the processor to itself (CPU share
+        below RETRY_SHARE) is made again, up to RETRY_ATTEMPTS times in all
+        when it is short, and the run with the largest share is kept."""
+        best = self._execute(spec)
+        attempts = 1
+        while (self._retry and best.cpu_share < RETRY_SHARE and attempts < RETRY_ATTEMPTS
+               and (best.m("wall_seconds") or 0) < RETRY_MAX_WALL and not self._busy()):
+            again = self._execute(spec)
+            attempts += 1
+            if again.cpu_share > best.cpu_share:
+                best = again
+        best.attempts = attempts
+        return best
+
+    def _execute(self, spec):
+        if self._aborted:
+            raise LabError("interrupted")
+        executable = self.build_dir / spec.program
+        workdir = Path(tempfile.mkdtemp(prefix=spec.program + "-", dir=self._tmp_root))
+        argv = [str(executable), "--headless", *spec.args, "--metrics-json", "metrics.json"]
+        self._slots.acquire(spec.priority, spec.timed)
+        try:
+            if self._aborted:
+                raise LabError("interrupted")
+            with open(workdir / "stdout.txt", "wb") as out, open(workdir / "stderr.txt", "wb") as err:
+                process = subprocess.Popen(argv, cwd=workdir, stdout=out, stderr=err, stdin=subprocess.DEVNULL)
+                with self._lock:
+                    self._running.add(process)
+                timer = threading.Timer(spec.timeout, process.kill)
+                timer.start()
+                try:
+                    _, status, usage = os.wait4(process.pid, 0)
+                finally:
+                    timer.cancel()
+                    with self._lock:
+                        self._running.discard(process)
+                rc = os.waitstatus_to_exitcode(status)
+                process.returncode = rc
+        finally:
+            self._slots.release(spec.timed)
+        stdout = (workdir / "stdout.txt").read_text(errors="replace")
+        stderr = (workdir / "stderr.txt").read_text(errors="replace")
+        if self._aborted:
+            raise LabError("interrupted")
+        if rc not in RESULT_STATUSES:
+            tail = "\n".join(stderr.strip().splitlines()[-5:])
+            raise LabError(f"{spec.command_line()} --headless exited with status {rc}"
+                           f" (in {workdir}):\n{tail}")
+        metrics = {}
+        metrics_file = workdir / "metrics.json"
+        if metrics_file.exists():
+            metrics = json.loads(metrics_file.read_text())
+        elif rc == EXIT_OK:
+            raise LabError(f"{spec.command_line()} wrote no metrics file (in {workdir})")
+        result = RunResult(spec, rc, metrics, stdout, stderr, usage.ru_utime + usage.ru_stime, workdir)
+        with self._lock:
+            self.runs.append(result)  # every attempt, kept or not
+        return result
+
+
+def median(values):
+    values = sorted(v for v in values if v is not None)
+    if not values:
+        return None
+    middle = len(values) // 2
+    return values[middle] if len(values) % 2 else 0.5 * (values[middle - 1] + values[middle])
