@@ -28,3 +28,4 @@ foreach(_section scenes_1_to_5.cmake scenes_6_to_10.cmake windowed.cmake)
     include(${CMAKE_CURRENT_SOURCE_DIR}/${_section})
   endif()
 endforeach()
+include(${CMAKE_CURRENT_SOURCE_DIR}/hardening.cmake)  # issue 7: extreme settings, bad input, determinism, interrupted runs

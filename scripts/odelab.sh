@@ -3,7 +3,8 @@
 #
 #   scripts/odelab.sh run  [TEST] [ARGS...]  install what is missing, build, start TEST (default test0)
 #                                             in a window; with no display, say so and run it headless
-#   scripts/odelab.sh test                    install what is missing, build, run the whole CTest suite
+#   scripts/odelab.sh test                    install what is missing, build, run the sanitizer check
+#                                             (checks/sanitize.sh) and the whole CTest suite
 #
 # Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
 set -euo pipefail
@@ -67,6 +68,10 @@ case "$command" in
   test)
     install_missing
     build
+    # The unit tests and a short run of every program under AddressSanitizer
+    # and UndefinedBehaviorSanitizer, in build-sanitize/ (about 6 minutes
+    # from scratch on 2 cores).
+    JOBS=$jobs sh "$root/checks/sanitize.sh"
     cd "$build_dir"
     exec ctest --output-on-failure -j "$jobs"
     ;;

@@ -29,6 +29,13 @@ constexpr double CHART_INTERVAL = 0.01;
 constexpr size_t MAX_CONTACT_MARKERS = 4096;
 constexpr double MIN_TIME_SCALE = 1.0 / 32.0;
 constexpr double MAX_TIME_SCALE = 8.0;
+// A blow-up that stays finite (runaway energy): no scene comes near these.
+// 1e8 m/s is ten times the fastest launch any scene allows (test10's
+// --velocity, at most 1e7 m/s); free fall at 1 g needs 118 days to reach it. There
+// is no bound on distance: a body that falls off a platform (test4, test5)
+// is 1e8 m down after 75 minutes, which a window session can last.
+constexpr double RUNAWAY_SPEED = 1e8;  // m/s
+constexpr double RUNAWAY_SPIN = 1e8;   // rad/s
 
 std::string formatValue(double value) {
   std::ostringstream out;
@@ -217,11 +224,17 @@ bool AbstractWindow::stepOnce() {
       DragSpring::apply(body, dragGrab_, dragTarget_, settings_.gravity);
   contactsThisStep_ = 0;
   if (viewFlags_.contacts) contactMarkers_.clear();
-  dSpaceCollide(space_, this, &AbstractWindow::nearCallback);
-  if (settings_.solver == Solver::QuickStep)
-    dWorldQuickStep(world_, settings_.step);
-  else
-    dWorldStep(world_, settings_.step);
+  try {
+    dSpaceCollide(space_, this, &AbstractWindow::nearCallback);
+    if (settings_.solver == Solver::QuickStep)
+      dWorldQuickStep(world_, settings_.step);
+    else
+      dWorldStep(world_, settings_.step);
+  } catch (const OdeError& error) {
+    // ODE's own checks often see a blow-up before stateProblem() does (a NaN
+    // quaternion fails dxNormalize4): report it with the time and settings.
+    throw OdeError(std::string(error.what()) + " at t=" + formatValue(simulatedTime_) + " s" + settingsInForce());
+  }
   dJointGroupEmpty(contactGroup_);
   contactsLastStep_ = contactsThisStep_;
   simulatedTime_ += settings_.step;
@@ -238,27 +251,43 @@ bool AbstractWindow::stepOnce() {
     if (plotValue(value)) chart_.add(simulatedTime_, value);
     nextChartTime_ += CHART_INTERVAL;
   }
-  if (!stateIsFinite()) {
+  const std::string problem = stateProblem();
+  if (!problem.empty()) {
     std::ostringstream reason;
-    reason << "simulation blew up: non-finite body state at t=" << formatValue(simulatedTime_) << " s (step "
-           << formatValue(settings_.step) << ", ERP " << formatValue(settings_.erp) << ", CFM "
-           << formatValue(settings_.cfm) << ", solver " << solverName(settings_.solver) << ", "
-           << settings_.iterations << " iterations)";
+    reason << "simulation blew up: " << problem << " at t=" << formatValue(simulatedTime_) << " s"
+           << settingsInForce();
     blowUpReason_ = reason.str();
     return false;
   }
   return true;
 }
 
-bool AbstractWindow::stateIsFinite() const {
+// " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations)"
+std::string AbstractWindow::settingsInForce() const {
+  std::ostringstream text;
+  text << " (step " << formatValue(settings_.step) << ", ERP " << formatValue(settings_.erp) << ", CFM "
+       << formatValue(settings_.cfm) << ", solver " << solverName(settings_.solver) << ", " << settings_.iterations
+       << " iterations)";
+  return text.str();
+}
+
+std::string AbstractWindow::stateProblem() const {
+  auto length = [](const dReal* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
   for (const auto& object : objects_) {
     const dBodyID body = object->getBody();
     if (!body) continue;
-    const dReal* vectors[] = {dBodyGetPosition(body), dBodyGetLinearVel(body), dBodyGetAngularVel(body)};
-    for (const dReal* v : vectors)
-      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return false;
+    const dReal* position = dBodyGetPosition(body);
+    const dReal* velocity = dBodyGetLinearVel(body);
+    const dReal* spin = dBodyGetAngularVel(body);
+    for (const dReal* v : {position, velocity, spin})
+      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return "non-finite body state";
+    // Finite but absurd: energy has run away (no scene comes near these).
+    if (length(velocity) > RUNAWAY_SPEED)
+      return "runaway energy: a body moves at " + formatValue(length(velocity)) + " m/s";
+    if (length(spin) > RUNAWAY_SPIN)
+      return "runaway energy: a body spins at " + formatValue(length(spin)) + " rad/s";
   }
-  return true;
+  return {};
 }
 
 void AbstractWindow::advanceFrame(double elapsedSeconds) {

@@ -269,7 +269,11 @@ class AbstractWindow {
   void bindTimeAndViewKeys();
   std::string springLine() const;
   void stepSetting(const char* what, const std::function<void()>& change);
-  bool stateIsFinite() const;
+  // Empty while every body is finite and below the runaway speed and spin;
+  // otherwise what is wrong ("non-finite body state", "runaway energy: ...").
+  std::string stateProblem() const;
+  // The settings a blow-up or an ODE error is reported with.
+  std::string settingsInForce() const;
 
   std::string title_;
   WorldSettings settings_;
