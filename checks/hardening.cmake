@@ -45,7 +45,7 @@ foreach(_program IN LISTS _hardening_programs)
 endforeach()
 file(MAKE_DIRECTORY ${_hardening_dir}/extreme_settings)
 add_test(NAME extreme_settings_grid
-         COMMAND extreme_settings --jobs 2 --timeout 120 --step-budget 10000 --max-seconds 3
+         COMMAND extreme_settings --jobs 2 --timeout 120 --step-budget 10000 --max-seconds 3 --strict-ode-errors
                  --work-dir ${_hardening_dir}/extreme_settings ${_grid_programs})
 # It runs two programs at a time, so CTest counts it as two.
 set_tests_properties(extreme_settings_grid PROPERTIES PROCESSORS 2 TIMEOUT 1200)

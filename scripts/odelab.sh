@@ -76,7 +76,7 @@ case "$command" in
     exec ctest --output-on-failure -j "$jobs"
     ;;
   *)
-    sed -n '2,8p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+    sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
     case "$command" in -h | --help) exit 0 ;; esac
     [ -n "$command" ] && say "error: unknown command '$command'"
     exit 2
