@@ -83,11 +83,30 @@ odelab_check(test5_50_plates_stack_straight_in_hash_space test5
   EXPECT plates==50 landed_plates==50 max_axis_offset<0.05 stack_height>2.45 stack_height<=2.5 non_finite==0
   ARGS --headless --seconds 20 --plates 50 --spawn-interval 0.3 --cfm 0 --space hash)
 # Options: plate count a positive integer, interval positive and finite, space one of four names.
+# Thresholds finite and >= 0, threads 1 ... 64, an integer.
 foreach(_bad "--plates=0" "--plates=-5" "--plates=many" "--spawn-interval=0" "--spawn-interval=-1"
-        "--spawn-interval=nan" "--space=octree" "--space=")
+        "--spawn-interval=nan" "--space=octree" "--space=" "--auto-disable-linear=-0.1"
+        "--auto-disable-linear=nan" "--auto-disable-linear=inf" "--auto-disable-angular=-1"
+        "--auto-disable-angular=nan" "--auto-disable-angular=" "--threads=0" "--threads=65" "--threads=-2"
+        "--threads=two" "--threads=1.5")
   string(MAKE_C_IDENTIFIER "${_bad}" _id)
-  odelab_check(test5_refuses${_id} test5 STATUS 2 ARGS --headless ${_bad})
+  odelab_check(test5_refuses${_id} test5 STATUS 2 ARGS --headless --auto-disable ${_bad})
 endforeach()
+# A threshold without --auto-disable would do nothing: refused.
+odelab_check(test5_refuses_threshold_without_auto_disable test5 STATUS 2
+  ARGS --headless --auto-disable-linear 0.3)
+# Threaded island stepping (2 threads) builds the same straight 50-plate
+# stack (measured 0.0081 m off the axis, 2.4965 m), and the pool survives the
+# world being rebuilt and torn down.
+odelab_check(test5_50_plates_stack_straight_with_2_threads test5
+  EXPECT plates==50 landed_plates==50 threads==2 max_axis_offset<0.05 stack_height>2.45 stack_height<=2.5 non_finite==0
+  ARGS --headless --seconds 20 --plates 50 --spawn-interval 0.3 --cfm 0 --threads 2)
+# Auto-disable with the thesis's linear threshold 0.3 (and 0.05 angular): no
+# plate is frozen in the air in this build and the column stands (measured
+# 0.008 m off the axis, 2.4924 m).
+odelab_check(test5_50_plates_stack_with_auto_disable_0_3 test5
+  EXPECT plates==50 landed_plates==50 auto_disable==1 plates_frozen_in_air==0 max_axis_offset<0.05 stack_height>2.45 stack_height<=2.5 non_finite==0
+  ARGS --headless --seconds 20 --plates 50 --spawn-interval 0.3 --cfm 0 --auto-disable --auto-disable-linear 0.3 --auto-disable-angular 0.05)
 
 # ---- test3 - Domino ----
 # The chain at the scene's defaults (60 dominoes [0.2, 2, 1] of 1 kg, 1 m

@@ -2,7 +2,8 @@
 // flat plates [5.0, 0.05, 5.0] dropped one by one onto a static platform
 // stack into a column, so every new plate adds another large face-to-face
 // contact to the pile. ERP 0.2 and CFM exactly 0 with plain contacts (no
-// bounce, soft ERP or soft CFM), auto-disable off. The thesis found the stack
+// bounce, soft ERP or soft CFM), auto-disable off (`--auto-disable` turns it
+// on, with the thesis's thresholds to try). The thesis found the stack
 // builds cleanly but the program slows as it grows, that a hash space lets it
 // grow twice as high, and that any CFM > 0 (e.g. 1e-4) makes a tall stack
 // twist and collapse.
@@ -10,19 +11,27 @@
 // Measures the cost of a step as the stack grows (ms_per_step over the last
 // simulated second), the stack's height and how straight it stays (the
 // largest sideways offset of a plate centre from the stack's axis).
+// `--threads N` steps the world with ODE's threaded island stepping, so its
+// effect on the cost can be measured (a single stack is one island).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <iomanip>
+#include <memory>
+#include <stdexcept>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "AbstractWindow.h"
 #include "Box.h"
 #include "CommandLine.h"
 #include "TestMain.h"
+
+#include <ode/threading_impl.h>
 
 namespace {
 
@@ -45,6 +54,48 @@ constexpr double COST_WINDOW = 1.0;      // simulated seconds averaged by ms_per
 // Plates dropped in quick succession (N held down) start at least this far
 // apart, centre to centre, so a new plate never overlaps one still falling.
 constexpr double MIN_SPAWN_SEPARATION = 2 * PLATE_THICKNESS;
+// ODE's default auto-disable thresholds (m/s and rad/s); the thesis tried
+// raising the linear one to 0.3.
+constexpr double ODE_DEFAULT_DISABLE_THRESHOLD = 0.01;
+constexpr int MAX_THREADS = 64;
+// A disabled plate whose bottom face is this far above the top of the plate
+// (or platform) below it is not resting on the stack: auto-disable froze it
+// in the air.
+constexpr double FROZEN_GAP = 0.01;  // m
+
+// ODE's built-in thread pool serving its multi-threaded implementation, for
+// threaded island stepping. Created once and kept across resets (the world is
+// rebuilt on every R); attach() hooks it to each new world.
+class IslandThreads {
+ public:
+  explicit IslandThreads(int threads) : threads_(threads) {
+    impl_ = dThreadingAllocateMultiThreadedImplementation();
+    if (!impl_) throw std::runtime_error("ODE has no built-in multi-threaded implementation");
+    pool_ = dThreadingAllocateThreadPool(static_cast<unsigned>(threads), 0, dAllocateFlagBasicData, nullptr);
+    if (!pool_) {
+      dThreadingFreeImplementation(impl_);
+      throw std::runtime_error("ODE could not start a pool of " + std::to_string(threads) + " threads");
+    }
+    dThreadingThreadPoolServeMultiThreadedImplementation(pool_, impl_);
+  }
+  ~IslandThreads() {
+    dThreadingImplementationShutdownProcessing(impl_);
+    dThreadingFreeThreadPool(pool_);
+    dThreadingFreeImplementation(impl_);
+  }
+  IslandThreads(const IslandThreads&) = delete;
+  IslandThreads& operator=(const IslandThreads&) = delete;
+
+  void attach(dWorldID world) const {
+    dWorldSetStepIslandsProcessingMaxThreadCount(world, static_cast<unsigned>(threads_));
+    dWorldSetStepThreadingImplementation(world, dThreadingImplementationGetFunctions(impl_), impl_);
+  }
+
+ private:
+  int threads_;
+  dThreadingImplementationID impl_ = nullptr;
+  dThreadingThreadPoolID pool_ = nullptr;
+};
 
 // The cost of the last simulated second: wall time of collide + step + empty
 // per step, summed incrementally so the measurement stays O(1) per step.
@@ -99,6 +150,12 @@ class ManyCollisions : public AbstractWindow {
             [this](int direction) { cycleSpace(direction); });
   }
 
+  // The world must let go of the threading implementation before it is
+  // freed; the base destroys the world only after this destructor.
+  ~ManyCollisions() override {
+    if (world()) dWorldSetStepThreadingImplementation(world(), nullptr, nullptr);
+  }
+
   void addOptions(CLI::App& app) override {
     app.add_option("--plates", plateLimit_, "timed spawning stops after N plates (default: 50 headless)")
         ->check(CLI::Range(1, 100000));
@@ -110,13 +167,34 @@ class ManyCollisions : public AbstractWindow {
            "collision space: simple, hash (dHashSpaceCreate), sap (sweep and prune) or quadtree")
         ->check(CLI::IsMember({"simple", "hash", "sap", "quadtree"}))
         ->default_str("simple");
+    app.add_flag("--auto-disable", autoDisable_,
+                 "let ODE disable resting plates (default off: the thesis found it freezes plates in the air)");
+    linearOption_ = app.add_option("--auto-disable-linear", disableLinear_,
+                   "auto-disable linear velocity threshold, m/s (default ODE's 0.01; the thesis tried 0.3)")
+        ->check(cli::finiteRange(0.0, 1e6));
+    angularOption_ = app.add_option("--auto-disable-angular", disableAngular_,
+                   "auto-disable angular velocity threshold, rad/s (default ODE's 0.01)")
+        ->check(cli::finiteRange(0.0, 1e6));
+    app.add_option("--threads", threads_, "threads for ODE's threaded island stepping (default 1: not threaded)")
+        ->check(CLI::Range(1, MAX_THREADS));
+  }
+
+  void checkOptions() const override {
+    if (!autoDisable_ && (linearOption_->count() > 0 || angularOption_->count() > 0))
+      throw UsageError("--auto-disable-linear/--auto-disable-angular: need --auto-disable");
   }
 
  protected:
   void configureWorld() override {
     // The thesis's conclusion: auto-disable only postpones the slow-down and can
-    // freeze plates before they land, so it stays off.
-    dWorldSetAutoDisableFlag(world(), 0);
+    // freeze plates before they land, so it stays off unless asked for.
+    dWorldSetAutoDisableFlag(world(), autoDisable_ ? 1 : 0);
+    dWorldSetAutoDisableLinearThreshold(world(), disableLinear_);
+    dWorldSetAutoDisableAngularThreshold(world(), disableAngular_);
+    if (threads_ > 1) {
+      if (!islandThreads_) islandThreads_ = std::make_unique<IslandThreads>(threads_);
+      islandThreads_->attach(world());
+    }
     if (!spaceChosen_) {  // --space once; later Q presses persist across R
       setSpaceKind(requestedSpace_);
       spaceChosen_ = true;
@@ -162,6 +240,15 @@ class ManyCollisions : public AbstractWindow {
     s << std::setprecision(3) << "collide + step: " << cost_.meanMilliseconds()
       << " ms per step over the last simulated second   N plate, Q space";
     lines.push_back(s.str());
+    s.str("");
+    s << "auto-disable ";
+    if (autoDisable_)
+      s << "on, thresholds " << disableLinear_ << " m/s / " << disableAngular_ << " rad/s ("
+        << frozenInAirCount() << " plates frozen in the air)";
+    else
+      s << "off";
+    s << "   island stepping threads " << threads_;
+    lines.push_back(s.str());
   }
 
   void addMetrics(Metrics& m) const override {
@@ -171,6 +258,9 @@ class ManyCollisions : public AbstractWindow {
     m.set("max_axis_offset", maxAxisOffset());
     m.set("stack_height", stackHeight());
     m.set("max_twist_degrees", maxTwistDegrees());
+    m.set("plates_frozen_in_air", frozenInAirCount());
+    m.set("auto_disable", autoDisable_ ? 1 : 0);
+    m.set("threads", threads_);
     // Wall time inside collide + step + empty over the whole run; the rest of
     // wall_seconds is the framework's and this scene's own bookkeeping.
     m.set("collide_step_seconds", collidedSeconds_);
@@ -233,6 +323,23 @@ class ManyCollisions : public AbstractWindow {
     return top;
   }
 
+  // Plates auto-disable has put to rest away from the stack: disabled, with
+  // their bottom face more than FROZEN_GAP above the top of the next lower
+  // plate (or the platform). Always 0 without auto-disable.
+  int frozenInAirCount() const {
+    std::vector<std::pair<double, bool>> plates;  // centre height, disabled
+    for (const Plate& plate : plates_)
+      plates.push_back({plate.box->getPosition()[1], !dBodyIsEnabled(plate.box->getBody())});
+    std::sort(plates.begin(), plates.end());
+    int frozen = 0;
+    double below = 0.0;  // top of the platform, then of each plate
+    for (const auto& [y, disabled] : plates) {
+      if (disabled && y - PLATE_THICKNESS / 2 > below + FROZEN_GAP) ++frozen;
+      below = y + PLATE_THICKNESS / 2;
+    }
+    return frozen;
+  }
+
   int landedCount() const {
     return static_cast<int>(std::count_if(plates_.begin(), plates_.end(), [](const Plate& p) { return p.landed; }));
   }
@@ -280,6 +387,13 @@ class ManyCollisions : public AbstractWindow {
   int plateLimit_ = 0;
   SpaceKind requestedSpace_ = SpaceKind::Simple;
   bool spaceChosen_ = false;
+  bool autoDisable_ = false;
+  double disableLinear_ = ODE_DEFAULT_DISABLE_THRESHOLD;
+  double disableAngular_ = ODE_DEFAULT_DISABLE_THRESHOLD;
+  int threads_ = 1;
+  std::unique_ptr<IslandThreads> islandThreads_;  // only with --threads > 1
+  CLI::Option* linearOption_ = nullptr;
+  CLI::Option* angularOption_ = nullptr;
 };
 
 }  // namespace

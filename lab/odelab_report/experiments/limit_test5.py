@@ -32,6 +32,8 @@ def step_cost(r):
 def judge(r, plates, step):
     if r.rc != 0:
         return False, "non-finite state" if r.blew_up else "ODE error"
+    if r.m("plates_frozen_in_air", 0) > 0:  # only with auto-disable (remedy-test5)
+        return False, f"{r.m('plates_frozen_in_air'):.0f} plates frozen in the air"
     if r.m("stack_height", 0) < MIN_HEIGHT_FRACTION * plates * PLATE:
         return False, f"stack {r.m('stack_height', 0):.3g} m tall, not {plates * PLATE:.3g}"
     if r.m("max_axis_offset", 0) > MAX_OFFSET:
@@ -53,7 +55,7 @@ def stack_spec(space, iterations, step, plates, extra=()):
 EXPECTED_PROBES = (7, 2)  # about how many runs a search makes (full, quick)
 
 
-def search_tallest(runner, space, iterations, quick, step=0.001, extra=(), on_probe=None):
+def search_tallest(runner, space, iterations, quick, step=0.001, extra=(), on_probe=None, high=None):
     """The tallest aligned stack in real time: SearchResult with probe info (RunResult, reason)."""
 
     def probe(plates):
@@ -62,7 +64,7 @@ def search_tallest(runner, space, iterations, quick, step=0.001, extra=(), on_pr
         return passed, (r, reason)
 
     return highest_passing(probe, start=15 if quick else 40, factor=2.0 if quick else 1.5,
-                           ratio=3.0 if quick else 1.2, low=5, high=30 if quick else 600, integer=True,
+                           ratio=3.0 if quick else 1.2, low=5, high=high or (30 if quick else 600), integer=True,
                            on_probe=on_probe)
 
 
@@ -77,6 +79,12 @@ def crossing_plates(result, step):
     return None
 
 
+def whole_run_cost(r, step):
+    """Mean ms per step over the whole run (building the stack included), CPU share taken out."""
+    seconds, sim = r.m("collide_step_seconds"), r.m("sim_seconds")
+    return None if seconds is None or not sim else 1000 * seconds * r.cpu_share / (sim / step)
+
+
 def summary_row(label, space, iterations, step, result):
     best = next((info for v, p, info in result.probes if v == result.highest_pass), None)
     fail = next((info for v, p, info in result.probes if v == result.lowest_fail), None)
@@ -84,6 +92,7 @@ def summary_row(label, space, iterations, step, result):
                 tallest_plates=result.highest_pass,
                 tallest_height_m=best[0].m("stack_height") if best else None,
                 ms_per_step_at_tallest=step_cost(best[0]) if best else None,
+                whole_run_ms_per_step_at_tallest=whole_run_cost(best[0], step) if best else None,
                 axis_offset_at_tallest_m=best[0].m("max_axis_offset") if best else None,
                 first_failing_plates=result.lowest_fail, failure=fail[1] if fail else "",
                 interpolated_real_time_plates=crossing_plates(result, step),

@@ -119,6 +119,8 @@ def stack_settings(out_dir, stem, rows):
         text = f"{v} plates" + (f", {r['tallest_height_m']:.2f} m" if r["tallest_height_m"] else "")
         if r["failure"]:
             text += "; limited by " + ("real time" if "ms per step" in r["failure"] else "alignment")
+        elif r.get("first_failing_plates") is None:
+            text += " (search cap)"
         ax.annotate(text, (v, y), ha="left", va="center", fontsize=8, xytext=(3, 0), textcoords="offset points")
     ax.set_yticks(range(len(rows)), labels, fontsize=8)
     ax.invert_yaxis()
