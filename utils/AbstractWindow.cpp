@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "ExitCodes.h"
+#include "FormatValue.h"
 #include "MeasurementLog.h"
 #include "OdeMessages.h"
-#include "SpringDamper.h"
 
 namespace odelab {
 
@@ -27,8 +27,6 @@ constexpr double NOTICE_SECONDS = 4.0;
 constexpr double SNAPSHOT_INTERVAL = 0.25;
 constexpr double CHART_INTERVAL = 0.01;
 constexpr size_t MAX_CONTACT_MARKERS = 4096;
-constexpr double MIN_TIME_SCALE = 1.0 / 32.0;
-constexpr double MAX_TIME_SCALE = 8.0;
 // A blow-up that stays finite (runaway energy): no scene comes near these.
 // 1e8 m/s is ten times the fastest launch any scene allows (test10's
 // --velocity, at most 1e7 m/s); free fall at 1 g needs 118 days to reach it. There
@@ -36,12 +34,6 @@ constexpr double MAX_TIME_SCALE = 8.0;
 // is 1e8 m down after 75 minutes, which a window session can last.
 constexpr double RUNAWAY_SPEED = 1e8;  // m/s
 constexpr double RUNAWAY_SPIN = 1e8;   // rad/s
-
-std::string formatValue(double value) {
-  std::ostringstream out;
-  out << std::setprecision(6) << value;
-  return out.str();
-}
 
 }  // namespace
 
@@ -428,189 +420,6 @@ void AbstractWindow::notify(const std::string& message) {
 
 void AbstractWindow::initialCamera(Camera& camera) const { camera.lookAt({0, 6, 16}, {0, 1, 0}); }
 
-void AbstractWindow::bindViewKey(SDL_Keycode key, std::string keyName, std::string description,
-                                 std::function<void(int)> action) {
-  bindKey(key, std::move(keyName), std::move(description), std::move(action));
-  keyBindings_.back().recorded = false;
-}
-
-void AbstractWindow::bindKey(SDL_Keycode key, std::string keyName, std::string description,
-                             std::function<void(int)> action) {
-  // A scene binding replaces a shared one on the same key.
-  keyBindings_.erase(std::remove_if(keyBindings_.begin(), keyBindings_.end(),
-                                    [key](const KeyBinding& b) { return b.key == key; }),
-                     keyBindings_.end());
-  keyBindings_.push_back({key, std::move(keyName), std::move(description), std::move(action)});
-}
-
-bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
-  for (const auto& binding : keyBindings_) {
-    if (binding.key != key) continue;
-    if (!binding.recorded || replaying_) {
-      binding.action(shift ? -1 : +1);
-      return true;
-    }
-    // A recorded key goes on the timeline, unless it began a new run (R).
-    const long long epochBefore = epoch_;
-    lastChange_.clear();
-    binding.action(shift ? -1 : +1);
-    if (epoch_ == epochBefore) {
-      TimelineEvent event;
-      event.step = steps_;
-      event.kind = TimelineEvent::Kind::Key;
-      event.key = key;
-      event.shift = shift;
-      recordEvent(event);
-    }
-    logAction((shift ? "Shift+" : "") + binding.keyName + ": " +
-              (lastChange_.empty() ? binding.description : lastChange_));
-    return true;
-  }
-  return false;
-}
-
-void AbstractWindow::runBinding(SDL_Keycode key, bool shift) {
-  for (const auto& binding : keyBindings_)
-    if (binding.key == key) {
-      binding.action(shift ? -1 : +1);
-      return;
-    }
-}
-
-void AbstractWindow::recordEvent(TimelineEvent event) {
-  if (!replaying_) timeline_.record(event);
-}
-
-void AbstractWindow::applyEvent(const TimelineEvent& event) {
-  switch (event.kind) {
-    case TimelineEvent::Kind::Key:
-      runBinding(event.key, event.shift);
-      break;
-    case TimelineEvent::Kind::Drag:
-      dragIndex_ = event.objectIndex < static_cast<int>(objects_.size()) ? event.objectIndex : -1;
-      std::copy(event.grab, event.grab + 3, dragGrab_);
-      std::copy(event.target, event.target + 3, dragTarget_);
-      break;
-    case TimelineEvent::Kind::Release:
-      dragIndex_ = -1;
-      break;
-  }
-}
-
-void AbstractWindow::logAction(const std::string& text) {
-  // The run log exists for windowed sessions, where a person presses keys.
-  if (options_.headless || runLogFailed_) return;
-  if (!runLog_) {
-    const std::string path = joinPath(options_.outDir, programName() + "_run_log.txt");
-    runLog_ = std::fopen(path.c_str(), "w");
-    if (!runLog_) {
-      runLogFailed_ = true;
-      notify("cannot write the run log '" + path + "'");
-      return;
-    }
-    std::fprintf(runLog_, "# %s: inputs that changed the simulation, with their simulated time\n", title_.c_str());
-  }
-  std::fprintf(runLog_, "t=%.6g s (step %lld): %s\n", simulatedTime_, steps_, text.c_str());
-  std::fflush(runLog_);
-}
-
-void AbstractWindow::stepSetting(const char* what, const std::function<void()>& change) {
-  const WorldSettings before = settings_;
-  change();
-  std::ostringstream text;
-  auto describe = [&](double from, double to) { text << what << ' ' << formatValue(from) << " -> " << formatValue(to); };
-  const std::string name = what;
-  if (name == "ERP") describe(before.erp, settings_.erp);
-  else if (name == "CFM") describe(before.cfm, settings_.cfm);
-  else if (name == "iterations") describe(before.iterations, settings_.iterations);
-  else if (name == "SOR w") describe(before.sor, settings_.sor);
-  else if (name == "step") describe(before.step, settings_.step);
-  else if (name == "solver") text << "solver " << solverName(before.solver) << " -> " << solverName(settings_.solver);
-  applySettings(text.str());
-}
-
-void AbstractWindow::bindSharedKeys() {
-  bindKey(SDLK_ESCAPE, "Esc", "quit", [this](int) { quitRequested_ = true; });
-  bindKey(SDLK_r, "R", "reset the scene to its initial state", [this](int) {
-    reset();
-    notify("scene reset");
-  });
-  bindKey(SDLK_F1, "F1", "HUD on / off", [this](int) { hudVisible_ = !hudVisible_; });
-  bindKey(SDLK_F2, "F2", "choose the increment used by F3 / F4 (1e-6 ... 0.1)", [this](int d) {
-    stepper_.cycleIncrement(d);
-    applySettings("F2 increment " + formatValue(stepper_.increment()));
-  });
-  bindKey(SDLK_F3, "F3", "ERP up by the increment (Shift: down), within [0, 1]",
-          [this](int d) { stepSetting("ERP", [&] { stepper_.stepErp(settings_, d); }); });
-  bindKey(SDLK_F4, "F4", "CFM up by the increment (Shift: down), within [0, 1]",
-          [this](int d) { stepSetting("CFM", [&] { stepper_.stepCfm(settings_, d); }); });
-  bindKey(SDLK_F6, "F6", "QuickStep iterations up (Shift: down): 1, 2, 3, 5, 8, 10, 15, 20, 30, 50 ... 1000",
-          [this](int d) { stepSetting("iterations", [&] { ParameterStepper::stepIterations(settings_, d); }); });
-  bindKey(SDLK_F7, "F7", "SOR relaxation w up by 0.05 (Shift: down), within [0.05, 1.95]",
-          [this](int d) { stepSetting("SOR w", [&] { ParameterStepper::stepSor(settings_, d); }); });
-  bindKey(SDLK_F8, "F8", "step size up (Shift: down): 1e-5, 2e-5, 5e-5 ... 0.1 s",
-          [this](int d) { stepSetting("step", [&] { ParameterStepper::stepStepSize(settings_, d); }); });
-  bindKey(SDLK_F9, "F9", "switch solver: dWorldQuickStep / dWorldStep", [this](int) {
-    stepSetting("solver", [&] {
-      settings_.solver = settings_.solver == Solver::QuickStep ? Solver::WorldStep : Solver::QuickStep;
-    });
-  });
-}
-
-PickHit AbstractWindow::pickAt(const double origin[3], const double direction[3]) const {
-  return pickObject(objects_, origin, direction);
-}
-
-void AbstractWindow::beginDrag(const PickHit& hit, const double target[3]) {
-  if (hit.objectIndex < 0 || hit.objectIndex >= static_cast<int>(objects_.size())) return;
-  const dBodyID body = objects_[hit.objectIndex]->getBody();
-  if (!body) return;
-  dVector3 local;
-  dBodyGetPosRelPoint(body, hit.point[0], hit.point[1], hit.point[2], local);
-  TimelineEvent event;
-  event.step = steps_;
-  event.kind = TimelineEvent::Kind::Drag;
-  event.objectIndex = hit.objectIndex;
-  std::copy(local, local + 3, event.grab);
-  std::copy(target, target + 3, event.target);
-  applyEvent(event);
-  recordEvent(event);
-  marks_.set("drag_start_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
-  logAction("drag " + std::to_string(hit.objectIndex));
-}
-
-void AbstractWindow::moveDrag(const double target[3]) {
-  if (dragIndex_ < 0) return;
-  TimelineEvent event;
-  event.step = steps_;
-  event.kind = TimelineEvent::Kind::Drag;
-  event.objectIndex = dragIndex_;
-  std::copy(dragGrab_, dragGrab_ + 3, event.grab);
-  std::copy(target, target + 3, event.target);
-  applyEvent(event);
-  recordEvent(event);
-  // The gap the spring now has to close (the renderer's beginDrag targets
-  // the grabbed point itself, so the gap opens with the first move).
-  if (const dBodyID body = objects_[dragIndex_]->getBody())
-    marks_.set("drag_start_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
-}
-
-void AbstractWindow::endDrag() {
-  if (dragIndex_ < 0) return;
-  if (const dBodyID body = objects_[dragIndex_]->getBody())
-    marks_.set("drag_end_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
-  TimelineEvent event;
-  event.step = steps_;
-  event.kind = TimelineEvent::Kind::Release;
-  applyEvent(event);
-  recordEvent(event);
-  logAction("release");
-}
-
-const AbstractObject* AbstractWindow::draggedObject() const {
-  return dragIndex_ >= 0 ? objects_[dragIndex_].get() : nullptr;
-}
-
 bool AbstractWindow::takeScreenshotRequest() {
   const bool requested = screenshotRequested_;
   screenshotRequested_ = false;
@@ -630,64 +439,6 @@ bool AbstractWindow::plotValue(double& value) const {
   return true;
 }
 
-void AbstractWindow::bindTimeAndViewKeys() {
-  bindViewKey(SDLK_p, "P", "pause / resume", [this](int) { paused_ = !paused_; });
-  bindViewKey(SDLK_o, "O", "advance exactly one step (pauses first)", [this](int) {
-    paused_ = true;
-    if (!stepOnce()) {
-      const std::string reason = blowUpReason_;
-      reset();
-      notify(reason + "; scene reset");
-    }
-  });
-  bindViewKey(SDLK_MINUS, "-", "slower: halve the time scale (down to 1/32)",
-              [this](int) { timeScale_ = std::max(MIN_TIME_SCALE, timeScale_ * 0.5); });
-  bindViewKey(SDLK_EQUALS, "=", "faster: double the time scale (up to 8x, as far as the machine keeps up)",
-              [this](int) { timeScale_ = std::min(MAX_TIME_SCALE, timeScale_ * 2.0); });
-  bindViewKey(SDLK_COMMA, ",", "rewind to the previous snapshot (every 0.25 s of simulated time) and pause", [this](int) {
-    const long long target = std::max(0LL, timeline_.previousSnapshot(steps_));
-    replayTo(target);
-    notify("rewound to t=" + formatValue(simulatedTime_) + " s");
-  });
-  bindViewKey(SDLK_PERIOD, ".", "forward to the next snapshot, replaying what was recorded, and pause", [this](int) {
-    const long long target = timeline_.nextSnapshot(steps_);
-    paused_ = true;
-    if (target < 0) {
-      notify("no later snapshot: press P to run on");
-      return;
-    }
-    while (steps_ < target && stepOnce()) {
-    }
-    notify("forward to t=" + formatValue(simulatedTime_) + " s");
-  });
-  bindViewKey(SDLK_h, "H", "help: this key list on / off", [this](int) { viewFlags_.help = !viewFlags_.help; });
-  bindViewKey(SDLK_l, "L", "live plot of the scene's measurement on / off",
-              [this](int) { viewFlags_.plot = !viewFlags_.plot; });
-  bindViewKey(SDLK_c, "C", "contact points and normals on / off", [this](int) {
-    viewFlags_.contacts = !viewFlags_.contacts;
-    contactMarkers_.clear();
-  });
-  bindViewKey(SDLK_j, "J", "joint anchors and axes on / off", [this](int) { viewFlags_.joints = !viewFlags_.joints; });
-  bindViewKey(SDLK_x, "X", "bounding boxes on / off", [this](int) { viewFlags_.boxes = !viewFlags_.boxes; });
-  bindViewKey(SDLK_v, "V", "wireframe on / off", [this](int) { viewFlags_.wireframe = !viewFlags_.wireframe; });
-  bindViewKey(SDLK_F12, "F12", "save a screenshot (PNG named with the test and the simulated time) in --out-dir",
-              [this](int) { screenshotRequested_ = true; });
-}
-
-std::vector<std::string> AbstractWindow::helpLines() const {
-  std::vector<std::string> lines{
-      "left mouse   on a body: drag it with a spring; elsewhere: toggle mouse-look",
-      "W/S/A/D      move the camera forward / back / left / right along the view",
-      "Shift        reverses every F-key",
-  };
-  for (const auto& binding : keyBindings_) {
-    std::string name = binding.keyName;
-    name.resize(std::max<size_t>(name.size(), 12), ' ');
-    lines.push_back(name + " " + binding.description);
-  }
-  return lines;
-}
-
 void AbstractWindow::remove(const AbstractObject* object) {
   removeIf([object](const AbstractObject& o) { return &o == object; });
 }
@@ -701,61 +452,6 @@ void AbstractWindow::removeIf(const std::function<bool(const AbstractObject&)>& 
   dragIndex_ = -1;
   for (size_t i = 0; dragged && i < objects_.size(); ++i)
     if (objects_[i].get() == dragged) dragIndex_ = static_cast<int>(i);
-}
-
-// ERP and CFM as the spring and damper they mean at this step, and the ERP
-// and CFM that would keep that spring at the next step size (F8).
-std::string AbstractWindow::springLine() const {
-  const SpringDamper spring = springDamperOf(settings_.erp, settings_.cfm, settings_.step);
-  if (spring.rigid) return "constraints rigid (CFM 0): no spring; ERP corrects " + formatValue(settings_.erp) +
-                           " of the error per step";
-  WorldSettings next = settings_;
-  ParameterStepper::stepStepSize(next, +1);
-  const ErpCfm keep = erpCfmFor(spring, next.step);
-  std::ostringstream s;
-  s << "spring kp " << formatValue(spring.kp) << " N/m, damper kd " << formatValue(spring.kd)
-    << " N s/m; at step " << formatValue(next.step) << " keep them with ERP " << formatValue(keep.erp) << ", CFM "
-    << formatValue(keep.cfm);
-  return s.str();
-}
-
-std::vector<std::string> AbstractWindow::hudLines() const {
-  std::vector<std::string> lines;
-  std::ostringstream s;
-  s << title_;
-  lines.push_back(s.str());
-  s.str("");
-  s << "ERP " << formatValue(settings_.erp) << "   CFM " << formatValue(settings_.cfm) << "   step "
-    << formatValue(settings_.step) << " s   F2 increment " << formatValue(stepper_.increment());
-  lines.push_back(s.str());
-  s.str("");
-  s << "solver " << (settings_.solver == Solver::QuickStep ? "dWorldQuickStep" : "dWorldStep") << "   iterations "
-    << settings_.iterations << "   SOR w " << formatValue(settings_.sor) << "   space " << spaceKindName(spaceKind_);
-  lines.push_back(s.str());
-  s.str("");
-  s << std::fixed << std::setprecision(0) << "FPS " << framesPerSecond_ << std::setprecision(2) << "   sim "
-    << simulatedTime_ << " s   real-time x" << realTimeFactor_;
-  lines.push_back(s.str());
-  s.str("");
-  s << "bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << contactsLastStep_;
-  lines.push_back(s.str());
-  s.str("");
-  s << (paused_ ? "PAUSED (P runs, O steps)" : "running") << "   time scale x" << formatValue(timeScale_)
-    << "   rewind , .  (" << timeline_.snapshotCount() << " snapshots)   H help";
-  lines.push_back(s.str());
-  lines.push_back(springLine());
-  if (const AbstractObject* object = draggedObject()) {
-    const dReal* v = dBodyGetLinearVel(object->getBody());
-    s.str("");
-    s << "dragging object #" << dragIndex_ << " (" << (object->shape() == Shape::Box ? "box" : "sphere") << ", "
-      << formatValue(object->mass()) << " kg), speed "
-      << formatValue(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) << " m/s";
-    lines.push_back(s.str());
-  }
-  addHudLines(lines);
-  if (!notice_.empty() && wallSeconds_ < noticeUntil_) lines.push_back(notice_);
-  for (const auto& message : OdeMessages::recent()) lines.push_back(message);
-  return lines;
 }
 
 }  // namespace odelab
