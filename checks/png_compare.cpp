@@ -11,14 +11,7 @@
 // usage error. Prints what it measured either way. The windowed checks use
 // it to see an overlay appear (the help panel: a large part of the middle
 // changes) where nothing else moves (the scene is paused).
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
+#include "stb_image_once.h"
 
 #include <algorithm>
 #include <cstdio>

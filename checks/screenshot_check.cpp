@@ -30,14 +30,7 @@
 //     MIN_LIT_FRACTION of its pixels lit and max(MIN_SHADOW_PIXELS,
 //     MIN_SHADOW_FRACTION of its pixels) cast-shadow pixels.
 //     Very dark and clipped pixels are skipped: their chromaticity is noise.
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
+#include "stb_image_once.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,6 +15,22 @@ void EventPlayer::push(SDL_Event& event) {
   if (SDL_PushEvent(&event) < 0) throw RenderError(std::string("--events: cannot queue an event: ") + SDL_GetError());
 }
 
+// Moves the cursor to (x, y), with the left button's state as it stands.
+void EventPlayer::pushMotion(int x, int y) {
+  SDL_Event motion;
+  SDL_zero(motion);
+  motion.type = SDL_MOUSEMOTION;
+  motion.motion.windowID = windowId_;
+  motion.motion.state = buttonHeld_ ? SDL_BUTTON_LMASK : 0;
+  motion.motion.x = x;
+  motion.motion.y = y;
+  motion.motion.xrel = x - mouseX_;
+  motion.motion.yrel = y - mouseY_;
+  push(motion);
+  mouseX_ = x;
+  mouseY_ = y;
+}
+
 void EventPlayer::pushDue(long long frame) {
   for (; next_ < events_.size() && events_[next_].frame <= frame; ++next_) {
     const ScriptEvent& e = events_[next_];
@@ -38,18 +54,7 @@ void EventPlayer::pushDue(long long frame) {
       case ScriptEvent::Kind::Down:
       case ScriptEvent::Kind::Up: {
         const bool down = e.kind == ScriptEvent::Kind::Down;
-        if (e.x != mouseX_ || e.y != mouseY_) {  // the cursor gets there first
-          SDL_Event motion;
-          SDL_zero(motion);
-          motion.type = SDL_MOUSEMOTION;
-          motion.motion.windowID = windowId_;
-          motion.motion.state = buttonHeld_ ? SDL_BUTTON_LMASK : 0;
-          motion.motion.x = e.x;
-          motion.motion.y = e.y;
-          motion.motion.xrel = e.x - mouseX_;
-          motion.motion.yrel = e.y - mouseY_;
-          push(motion);
-        }
+        if (e.x != mouseX_ || e.y != mouseY_) pushMotion(e.x, e.y);  // the cursor gets there first
         event.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
         event.button.windowID = windowId_;
         event.button.button = SDL_BUTTON_LEFT;
@@ -59,21 +64,10 @@ void EventPlayer::pushDue(long long frame) {
         event.button.y = e.y;
         push(event);
         buttonHeld_ = down;
-        mouseX_ = e.x;
-        mouseY_ = e.y;
         break;
       }
       case ScriptEvent::Kind::Move:
-        event.type = SDL_MOUSEMOTION;
-        event.motion.windowID = windowId_;
-        event.motion.state = buttonHeld_ ? SDL_BUTTON_LMASK : 0;
-        event.motion.x = e.x;
-        event.motion.y = e.y;
-        event.motion.xrel = e.x - mouseX_;
-        event.motion.yrel = e.y - mouseY_;
-        push(event);
-        mouseX_ = e.x;
-        mouseY_ = e.y;
+        pushMotion(e.x, e.y);
         break;
       case ScriptEvent::Kind::Mark:
         event.type = markType_;

@@ -31,6 +31,7 @@ class EventPlayer {
 
  private:
   void push(SDL_Event& event);
+  void pushMotion(int x, int y);
 
   std::vector<ScriptEvent> events_;
   std::size_t next_ = 0;
