@@ -61,7 +61,7 @@ while [ $run -le "$runs" ]; do
   xvfb-run -a -s "-screen 0 1280x800x24" "$program" --plates 100 --spawn-interval 0.05 \
     --events "$work/bench.events" --out-dir "$work" >"$work/out" 2>"$work/err" ||
     { echo "error: test5 failed:" >&2; cat "$work/err" >&2; exit 1; }
-  # "mark p1: 129 frames in 30.1 s (4.3 fps; 230.5 ms per frame drawing and stepping; CPU 61.2 s)"
+  # "mark p1: 129 frames in 30.1 s (4.3 fps; 230.5 ms per frame drawing and stepping; longest frame 310.2 ms; CPU 61.2 s)"
   # Each phase: its frames, wall seconds, busy seconds and CPU seconds.
   awk -v run=$run '
     /^mark p[0-9]+:/ {

@@ -23,7 +23,7 @@ foreach(_bad IN LISTS ODELAB_BAD_OPTIONS)
   odelab_check(test0_refuses${_id} test0 STATUS 2 ARGS --headless ${_bad})
 endforeach()
 
-foreach(_section scenes_1_to_5.cmake scenes_6_to_10.cmake windowed.cmake)
+foreach(_section scenes_1_to_5.cmake scenes_6_to_10.cmake windowed.cmake fuzz_window.cmake)
   if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${_section})
     include(${CMAKE_CURRENT_SOURCE_DIR}/${_section})
   endif()

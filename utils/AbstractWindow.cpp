@@ -8,6 +8,7 @@
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "ExitCodes.h"
 #include "FormatValue.h"
@@ -63,7 +64,7 @@ AbstractWindow::AbstractWindow(std::string title, WorldSettings defaults)
 }
 
 AbstractWindow::~AbstractWindow() {
-  destroyWorld();
+  shutdown();
   if (runLog_) std::fclose(runLog_);
 }
 
@@ -107,13 +108,23 @@ void AbstractWindow::replayTo(long long step) {
   paused_ = true;
 }
 
-void AbstractWindow::shutdown() { destroyWorld(); }
+void AbstractWindow::shutdown() {
+  destroyWorld();
+  if (stepThreading_) dThreadingFreeImplementation(stepThreading_);
+  stepThreading_ = nullptr;
+}
 
 void AbstractWindow::createWorld() {
   // Everything random in a run derives from --seed, so a run is reproducible.
   random_.seed(options_.seed);
   dRandSetSeed(options_.seed);
   world_ = dWorldCreate();
+  // The world steps with an implementation of its own rather than ODE's
+  // default, which all worlds share, so that one an ODE error has left in
+  // a bad state can be dropped with its world (advanceFrame). A scene may
+  // replace it in configureWorld() (test5 --threads).
+  if (!stepThreading_) stepThreading_ = dThreadingAllocateSelfThreadedImplementation();
+  dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(stepThreading_), stepThreading_);
   contactGroup_ = dJointGroupCreate(0);
   space_ = nullptr;
   setSpaceKind(spaceKind_);
@@ -122,6 +133,7 @@ void AbstractWindow::createWorld() {
   steps_ = 0;
   contactsLastStep_ = 0;
   wallSeconds_ = 0.0;
+  droppedSteps_ = 0;
   blowUpReason_.clear();
   clock_.reset();
   dragIndex_ = -1;
@@ -162,11 +174,17 @@ void AbstractWindow::setSpaceKind(SpaceKind kind) {
   // Space cleanup is off: geoms belong to their objects, not to the space.
   dSpaceSetCleanup(next, 0);
   if (space_) {
-    while (dSpaceGetNumGeoms(space_) > 0) {
-      dGeomID geom = dSpaceGetGeom(space_, 0);
+    // Every geom in the space is an object's (a scene adds geoms only
+    // through objects). They are found through the objects, not the space:
+    // ODE's quadtree space cannot list its geoms (dSpaceGetGeom fails with
+    // "not yet implemented"), which input fuzzing found.
+    for (const auto& object : objects_) {
+      const dGeomID geom = object->getGeom();
+      if (!geom || dGeomGetSpace(geom) != space_) continue;
       dSpaceRemove(space_, geom);
       dSpaceAdd(next, geom);
     }
+    if (dSpaceGetNumGeoms(space_) != 0) throw std::logic_error("setSpaceKind: the space holds a geom of no object");
     dSpaceDestroy(space_);
   }
   space_ = next;
@@ -282,15 +300,37 @@ std::string AbstractWindow::stateProblem() const {
   return {};
 }
 
-void AbstractWindow::advanceFrame(double elapsedSeconds) {
+void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) {
   wallSeconds_ += elapsedSeconds;
   const int stepsNow = paused_ ? 0 : clock_.advance(elapsedSeconds, settings_.step, timeScale_);
   const double simBefore = simulatedTime_;
+  const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < stepsNow; ++i) {
-    if (!stepOnce()) {
-      const std::string reason = blowUpReason_;
+    if (i > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > steppingBudget) {
+      droppedSteps_ += stepsNow - i;
+      clock_.reset();  // carried over, they would only make the next frame late too
+      break;
+    }
+    std::string failure;
+    try {
+      if (!stepOnce()) failure = blowUpReason_;
+    } catch (const OdeError& error) {
+      // Headless, an ODE error ends the run (status 4). In a window the
+      // session goes on, as after a blow-up: the world is torn down and
+      // built again, and its destruction frees the solver's working memory
+      // that the failed step left in use. The errors seen come from the
+      // solver and integrator (dWorldStep with CFM 0 and unbounded friction
+      // fails dxNormalize4); the box, sphere and plane colliders raise none,
+      // so the space is never left locked mid-collision.
+      failure = std::string("ODE error: ") + error.what();
+      // The failed step left a job in the world's threading implementation;
+      // freeing it would fail ODE's own check, so it is left allocated
+      // (a few hundred bytes an error) and the next world gets a new one.
+      stepThreading_ = nullptr;
+    }
+    if (!failure.empty()) {
       reset();
-      notify(reason + "; scene reset");
+      notify(failure + "; scene reset");
       return;
     }
   }
@@ -375,6 +415,7 @@ Metrics AbstractWindow::metrics() const {
   m.set("sim_seconds", simulatedTime_);
   m.set("wall_seconds", wallSeconds_);
   m.set("real_time_factor", realTimeFactor_);
+  m.set("dropped_steps", static_cast<double>(droppedSteps_));
   m.set("bodies", bodyCount());
   m.set("disabled_bodies", disabledBodyCount());
   m.set("contacts", contactsLastStep_);

@@ -100,11 +100,20 @@ class AbstractWindow {
   void initialize(const RunOptions& options);
   // R: tears everything down and builds the scene again; settings persist.
   void reset();
-  // Destroys the world, space and every object; call before dCloseODE().
+  // Destroys the world, space, every object and the world's threading
+  // implementation; call before dCloseODE().
   void shutdown();
+  // A frame's steps may take this much real time; what is left of them is
+  // dropped, so that whatever the settings (step 1e-5 at 8x with 1000
+  // iterations asks for 8000 costly steps a frame) the window goes on
+  // answering input. The simulation then runs slower than real time, which
+  // the HUD's real-time factor shows; dropped_steps counts them.
+  static constexpr double FRAME_STEPPING_BUDGET = 0.05;
   // Window path: feeds one frame's elapsed real time through the clock and
-  // runs the resulting steps. A blow-up is reported and the scene reset.
-  void advanceFrame(double elapsedSeconds);
+  // runs the resulting steps, within `steppingBudget` seconds of real time
+  // (--record passes infinity: each recorded frame is exactly its share of
+  // simulated time). A blow-up is reported and the scene reset.
+  void advanceFrame(double elapsedSeconds, double steppingBudget = FRAME_STEPPING_BUDGET);
   // One step: collide, step, empty the contact group, measure, check state.
   // Returns false when the state became non-finite (see blowUpReason()).
   bool stepOnce();
@@ -302,6 +311,8 @@ class AbstractWindow {
   bool mouseLook_ = false;
   double framesPerSecond_ = 0.0;
   double realTimeFactor_ = 0.0;
+  long long droppedSteps_ = 0;  // steps a frame's stepping budget left out
+  dThreadingImplementationID stepThreading_ = nullptr;  // the world's; see createWorld()
   double rateWindowReal_ = 0.0, rateWindowSim_ = 0.0;
   std::string notice_;
   double noticeUntil_ = 0.0;  // in real seconds of window time

@@ -246,6 +246,7 @@ std::vector<std::string> AbstractWindow::helpLines() const {
   std::vector<std::string> lines{
       "left mouse   on a body: drag it with a spring; elsewhere: toggle mouse-look",
       "W/S/A/D      move the camera forward / back / left / right along the view",
+      "mouse wheel  move the camera forward / back, 0.5 m a notch",
       "Shift        reverses every F-key",
   };
   for (const auto& binding : keyBindings_) {

@@ -56,6 +56,16 @@ bool isLabel(const std::string& text) {
          std::all_of(text.begin(), text.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
+// Reads words[2] and words[3] into event.x and event.y, each within
+// [min, max]; calls `fail` (which throws) otherwise.
+template <typename Fail>
+void parsePair(const std::vector<std::string>& words, long long min, long long max, ScriptEvent& event, Fail fail) {
+  long long x = 0, y = 0;
+  if (!parseInteger(words[2], min, max, x) || !parseInteger(words[3], min, max, y)) fail();
+  event.x = static_cast<int>(x);
+  event.y = static_cast<int>(y);
+}
+
 }  // namespace
 
 std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& fileName, const KeyLookup& keyLookup) {
@@ -78,35 +88,62 @@ std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& f
     if (!parseInteger(words[0], 1, MAX_EVENT_FRAME, event.frame))
       fail("frame '" + words[0] + "' is not a whole number from 1 to " + std::to_string(MAX_EVENT_FRAME));
     const std::string& verb = words[1];
+    const auto failPixels = [&] { fail(verb + ": x and y are window pixels, whole numbers from 0 (top left) to 100000"); };
     int repeat = 1;
     if (verb == "key") {
       event.kind = ScriptEvent::Kind::Key;
-      if (words.size() < 3) fail("key: expected '<frame> key <name> [shift] [*N]'");
+      if (words.size() < 3) fail("key: expected '<frame> key <name> [shift] [ctrl] [alt] [*N]'");
       event.keyName = words[2];
       event.key = keyLookup(event.keyName);
       if (event.key == 0) fail("key: unknown key name '" + event.keyName + "' (names as SDL_GetKeyFromName: P, F3, \",\", Escape)");
       for (std::size_t i = 3; i < words.size(); ++i) {
         const std::string& option = words[i];
         long long count = 0;
-        if (option == "shift" && !event.shift) {
-          event.shift = true;
+        bool* modifier = option == "shift" ? &event.shift
+                         : option == "ctrl" ? &event.ctrl
+                         : option == "alt"  ? &event.alt
+                                            : nullptr;
+        if (modifier && !*modifier) {
+          *modifier = true;
         } else if (option.size() > 1 && option[0] == '*' && parseInteger(option.substr(1), 1, MAX_EVENT_REPEAT, count)) {
           repeat = static_cast<int>(count);
         } else {
-          fail("key: unexpected '" + option + "' (allowed after the name: shift, *N with N from 1 to " +
+          fail("key: unexpected '" + option + "' (allowed after the name, each once: shift, ctrl, alt, *N with N from 1 to " +
                std::to_string(MAX_EVENT_REPEAT) + ")");
         }
       }
-    } else if (verb == "down" || verb == "move" || verb == "up") {
-      event.kind = verb == "down" ? ScriptEvent::Kind::Down
-                   : verb == "move" ? ScriptEvent::Kind::Move
-                                    : ScriptEvent::Kind::Up;
-      if (words.size() != 4) fail(verb + ": expected '<frame> " + verb + " <x> <y>'");
-      long long x = 0, y = 0;
-      if (!parseInteger(words[2], 0, 100000, x) || !parseInteger(words[3], 0, 100000, y))
-        fail(verb + ": x and y are window pixels, whole numbers from 0 (top left) to 100000");
-      event.x = static_cast<int>(x);
-      event.y = static_cast<int>(y);
+    } else if (verb == "down" || verb == "up") {
+      event.kind = verb == "down" ? ScriptEvent::Kind::Down : ScriptEvent::Kind::Up;
+      if (words.size() != 4 && words.size() != 5) fail(verb + ": expected '<frame> " + verb + " <x> <y> [left|middle|right]'");
+      parsePair(words, 0, 100000, event, failPixels);
+      if (words.size() == 5) {
+        const std::string& name = words[4];
+        if (name == "left")
+          event.button = ScriptEvent::Button::Left;
+        else if (name == "middle")
+          event.button = ScriptEvent::Button::Middle;
+        else if (name == "right")
+          event.button = ScriptEvent::Button::Right;
+        else
+          fail(verb + ": unknown button '" + name + "' (left, middle, right)");
+      }
+    } else if (verb == "move") {
+      event.kind = ScriptEvent::Kind::Move;
+      if (words.size() != 4) fail("move: expected '<frame> move <x> <y>'");
+      parsePair(words, 0, 100000, event, failPixels);
+    } else if (verb == "wheel") {
+      event.kind = ScriptEvent::Kind::Wheel;
+      if (words.size() != 4) fail("wheel: expected '<frame> wheel <dx> <dy>'");
+      parsePair(words, -MAX_WHEEL_NOTCHES, MAX_WHEEL_NOTCHES, event, [&] {
+        fail("wheel: dx and dy are notches, whole numbers from -" + std::to_string(MAX_WHEEL_NOTCHES) + " to " +
+             std::to_string(MAX_WHEEL_NOTCHES));
+      });
+    } else if (verb == "resize") {
+      event.kind = ScriptEvent::Kind::Resize;
+      if (words.size() != 4) fail("resize: expected '<frame> resize <width> <height>'");
+      parsePair(words, 1, MAX_WINDOW_SIDE, event, [&] {
+        fail("resize: width and height are pixels, whole numbers from 1 to " + std::to_string(MAX_WINDOW_SIDE));
+      });
     } else if (verb == "mark") {
       event.kind = ScriptEvent::Kind::Mark;
       if (words.size() != 3 || !isLabel(words[2]))
@@ -116,7 +153,7 @@ std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& f
       event.kind = ScriptEvent::Kind::Quit;
       if (words.size() != 2) fail("quit: expected '<frame> quit'");
     } else {
-      fail("unknown event '" + verb + "' (key, down, move, up, mark, quit)");
+      fail("unknown event '" + verb + "' (key, down, move, up, wheel, resize, mark, quit)");
     }
     for (int i = 0; i < repeat; ++i) events.push_back(event);
   }

@@ -12,25 +12,33 @@ namespace odelab {
 // "Scripted input"):
 //
 //   # a comment; blank lines are ignored, and so is text after '#'
-//   <frame> key <name> [shift] [*N]   press and release a key (N times)
-//   <frame> down <x> <y>              left mouse button down at window pixel (x, y)
-//   <frame> move <x> <y>              mouse moves to (x, y)
-//   <frame> up <x> <y>                left mouse button up at (x, y)
-//   <frame> mark <label>              record metrics mark_<label>_steps, _sim_seconds, _hash
-//   <frame> quit                      close the window, as the user would
+//   <frame> key <name> [shift] [ctrl] [alt] [*N]   press and release a key (N times)
+//   <frame> down <x> <y> [left|middle|right]       mouse button down at window pixel (x, y)
+//   <frame> move <x> <y>                           mouse moves to (x, y)
+//   <frame> up <x> <y> [left|middle|right]         mouse button up at (x, y)
+//   <frame> wheel <dx> <dy>                        wheel turned (notches; dy > 0 away from the user)
+//   <frame> resize <width> <height>                the window resized (SDL_SetWindowSize)
+//   <frame> mark <label>                           record metrics mark_<label>_steps, _sim_seconds, _hash
+//   <frame> quit                                   close the window, as the user would
 //
 // Frames count from 1 (the first frame). Events of one frame run in the
 // order of the file; lines need not be in frame order. Key names are SDL's
 // (SDL_GetKeyFromName: "P", "F3", ",", "Escape"; one with a space is quoted:
 // "Left Shift"), case-insensitive.
 struct ScriptEvent {
-  enum class Kind { Key, Down, Move, Up, Mark, Quit };
+  enum class Kind { Key, Down, Move, Up, Wheel, Resize, Mark, Quit };
+  enum class Button { Left, Middle, Right };
   long long frame = 1;
   Kind kind = Kind::Key;
   int key = 0;             // Key: the key code
   std::string keyName;     // Key: as written
   bool shift = false;      // Key: with Shift held
-  int x = 0, y = 0;        // Down, Move, Up: window pixels from the top-left corner
+  bool ctrl = false;       // Key: with Ctrl held
+  bool alt = false;        // Key: with Alt held
+  Button button = Button::Left;  // Down, Up
+  // Down, Move, Up: window pixels from the top-left corner. Wheel: notches
+  // right (x) and away from the user (y). Resize: the new size in pixels.
+  int x = 0, y = 0;
   std::string label;       // Mark
   int line = 0;            // where it was written, for messages
 };
@@ -42,6 +50,9 @@ using KeyLookup = std::function<int(const std::string& name)>;
 // The largest repeat count (*N) and frame number accepted.
 constexpr int MAX_EVENT_REPEAT = 100000;
 constexpr long long MAX_EVENT_FRAME = 1000000000LL;
+// The largest wheel turn (notches) and window size (pixels) accepted.
+constexpr int MAX_WHEEL_NOTCHES = 100;
+constexpr int MAX_WINDOW_SIDE = 8192;
 
 // Parses a script; events come back sorted by frame, file order kept within
 // a frame, repeats expanded. Throws UsageError (CommandLine.h) naming

@@ -84,6 +84,32 @@ TEST(EventScript, RepeatsQuotedNamesAndPunctuation) {
   }
 }
 
+TEST(EventScript, ReadsModifiersButtonsWheelAndResize) {
+  const auto events = parse(
+      "1 key P ctrl alt\n"
+      "1 key O alt shift *2\n"
+      "2 down 5 6 right\n"
+      "2 up 5 6 middle\n"
+      "2 down 5 6 left\n"
+      "3 wheel -2 100\n"
+      "4 resize 1 8192\n");
+  ASSERT_EQ(events.size(), 8u);
+  EXPECT_TRUE(events[0].ctrl && events[0].alt && !events[0].shift);
+  EXPECT_TRUE(events[1].alt && events[1].shift && !events[1].ctrl);
+  EXPECT_EQ(events[2].key, 'o');
+  EXPECT_EQ(events[3].kind, ScriptEvent::Kind::Down);
+  EXPECT_EQ(events[3].button, ScriptEvent::Button::Right);
+  EXPECT_EQ(events[4].kind, ScriptEvent::Kind::Up);
+  EXPECT_EQ(events[4].button, ScriptEvent::Button::Middle);
+  EXPECT_EQ(events[5].button, ScriptEvent::Button::Left);
+  EXPECT_EQ(events[6].kind, ScriptEvent::Kind::Wheel);
+  EXPECT_EQ(events[6].x, -2);
+  EXPECT_EQ(events[6].y, 100);
+  EXPECT_EQ(events[7].kind, ScriptEvent::Kind::Resize);
+  EXPECT_EQ(events[7].x, 1);
+  EXPECT_EQ(events[7].y, 8192);
+}
+
 TEST(EventScript, EmptyScriptHasNoEvents) { EXPECT_TRUE(parse("# nothing\n\n   \n").empty()); }
 
 TEST(EventScript, AcceptsWindowsLineEnds) { EXPECT_EQ(parse("1 key P\r\n2 quit\r\n").size(), 2u); }
@@ -99,7 +125,17 @@ TEST(EventScript, RefusesMistakesNamingFileAndLine) {
       {"1\n", "s.events:1: expected '<frame> <event>"},
       {"1 jump\n", "s.events:1: unknown event 'jump'"},
       {"1 key\n", "s.events:1: key: expected"},
-      {"1 key P ctrl\n", "s.events:1: key: unexpected 'ctrl'"},
+      {"1 key P meta\n", "s.events:1: key: unexpected 'meta'"},
+      {"1 key P ctrl alt ctrl\n", "s.events:1: key: unexpected 'ctrl'"},
+      {"1 down 1 2 fourth\n", "s.events:1: down: unknown button 'fourth'"},
+      {"1 up 1 2 left 3\n", "s.events:1: up: expected"},
+      {"1 move 1 2 left\n", "s.events:1: move: expected"},
+      {"1 wheel 1\n", "s.events:1: wheel: expected"},
+      {"1 wheel 0 101\n", "s.events:1: wheel: dx and dy are notches"},
+      {"1 wheel x 1\n", "s.events:1: wheel: dx and dy are notches"},
+      {"1 resize 0 100\n", "s.events:1: resize: width and height"},
+      {"1 resize 100 8193\n", "s.events:1: resize: width and height"},
+      {"1 resize 100\n", "s.events:1: resize: expected"},
       {"1 key P *0\n", "s.events:1: key: unexpected '*0'"},
       {"1 key P shift shift\n", "s.events:1: key: unexpected 'shift'"},
       {"\n\n1 down 10\n", "s.events:3: down: expected"},

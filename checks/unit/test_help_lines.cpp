@@ -42,6 +42,7 @@ TEST(HelpLines, NameTheMouseAndTheLabKeys) {
   };
   EXPECT_TRUE(mentions("left mouse"));
   EXPECT_TRUE(mentions("W/S/A/D"));
+  EXPECT_TRUE(mentions("mouse wheel"));
   for (const char* key : {"P ", "O ", "- ", "= ", ", ", ". ", "H ", "L ", "C ", "J ", "X ", "V ", "F12 ", "F9 ", "B ", "Q ", "K "})
     EXPECT_TRUE(mentions(key)) << key;
 }

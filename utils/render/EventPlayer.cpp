@@ -4,7 +4,28 @@
 
 namespace odelab {
 
-EventPlayer::EventPlayer(std::vector<ScriptEvent> events, SDL_Window* window) : events_(std::move(events)) {
+namespace {
+
+Uint8 sdlButton(ScriptEvent::Button button) {
+  switch (button) {
+    case ScriptEvent::Button::Middle:
+      return SDL_BUTTON_MIDDLE;
+    case ScriptEvent::Button::Right:
+      return SDL_BUTTON_RIGHT;
+    case ScriptEvent::Button::Left:
+      break;
+  }
+  return SDL_BUTTON_LEFT;
+}
+
+Uint16 modifiers(const ScriptEvent& e) {
+  return static_cast<Uint16>((e.shift ? KMOD_LSHIFT : 0) | (e.ctrl ? KMOD_LCTRL : 0) | (e.alt ? KMOD_LALT : 0));
+}
+
+}  // namespace
+
+EventPlayer::EventPlayer(std::vector<ScriptEvent> events, SDL_Window* window)
+    : events_(std::move(events)), window_(window) {
   if (events_.empty()) return;
   windowId_ = window ? SDL_GetWindowID(window) : 0;
   markType_ = SDL_RegisterEvents(1);
@@ -15,13 +36,13 @@ void EventPlayer::push(SDL_Event& event) {
   if (SDL_PushEvent(&event) < 0) throw RenderError(std::string("--events: cannot queue an event: ") + SDL_GetError());
 }
 
-// Moves the cursor to (x, y), with the left button's state as it stands.
+// Moves the cursor to (x, y), with the buttons' state as it stands.
 void EventPlayer::pushMotion(int x, int y) {
   SDL_Event motion;
   SDL_zero(motion);
   motion.type = SDL_MOUSEMOTION;
   motion.motion.windowID = windowId_;
-  motion.motion.state = buttonHeld_ ? SDL_BUTTON_LMASK : 0;
+  motion.motion.state = buttonsHeld_;
   motion.motion.x = x;
   motion.motion.y = y;
   motion.motion.xrel = x - mouseX_;
@@ -41,7 +62,7 @@ void EventPlayer::pushDue(long long frame) {
         event.key.windowID = windowId_;
         event.key.keysym.sym = e.key;
         event.key.keysym.scancode = SDL_GetScancodeFromKey(e.key);
-        event.key.keysym.mod = e.shift ? KMOD_LSHIFT : KMOD_NONE;
+        event.key.keysym.mod = modifiers(e);
         event.key.repeat = 0;
         event.type = SDL_KEYDOWN;
         event.key.state = SDL_PRESSED;
@@ -57,15 +78,29 @@ void EventPlayer::pushDue(long long frame) {
         if (e.x != mouseX_ || e.y != mouseY_) pushMotion(e.x, e.y);  // the cursor gets there first
         event.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
         event.button.windowID = windowId_;
-        event.button.button = SDL_BUTTON_LEFT;
+        event.button.button = sdlButton(e.button);
         event.button.state = down ? SDL_PRESSED : SDL_RELEASED;
         event.button.clicks = 1;
         event.button.x = e.x;
         event.button.y = e.y;
         push(event);
-        buttonHeld_ = down;
+        if (down)
+          buttonsHeld_ |= SDL_BUTTON(event.button.button);
+        else
+          buttonsHeld_ &= ~SDL_BUTTON(event.button.button);
         break;
       }
+      case ScriptEvent::Kind::Wheel:
+        event.type = SDL_MOUSEWHEEL;
+        event.wheel.windowID = windowId_;
+        event.wheel.x = e.x;
+        event.wheel.y = e.y;
+        event.wheel.direction = SDL_MOUSEWHEEL_NORMAL;
+        push(event);
+        break;
+      case ScriptEvent::Kind::Resize:
+        if (window_) SDL_SetWindowSize(window_, e.x, e.y);
+        break;
       case ScriptEvent::Kind::Move:
         pushMotion(e.x, e.y);
         break;

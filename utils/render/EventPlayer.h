@@ -14,7 +14,10 @@ namespace odelab {
 
 // Plays a --events script: before a frame's event polling, that frame's
 // events go into SDL's queue with SDL_PushEvent, so they take the same path
-// as real input (key down and up; left button down, motion, up; SDL_QUIT).
+// as real input (key down and up; button down, motion, up; wheel; SDL_QUIT).
+// A resize asks the window system for the new size (SDL_SetWindowSize), as
+// a user dragging the window's border does; the size-changed event comes
+// back from it.
 // A mark travels as a user event in the same queue, so it is taken in order
 // with the input around it, and calls scene.mark() when polled.
 class EventPlayer {
@@ -35,10 +38,11 @@ class EventPlayer {
 
   std::vector<ScriptEvent> events_;
   std::size_t next_ = 0;
+  SDL_Window* window_ = nullptr;
   Uint32 windowId_ = 0;
   Uint32 markType_ = static_cast<Uint32>(-1);
   int mouseX_ = 0, mouseY_ = 0;
-  bool buttonHeld_ = false;
+  Uint32 buttonsHeld_ = 0;  // SDL_BUTTON_LMASK ... as a motion event's state
 };
 
 }  // namespace odelab

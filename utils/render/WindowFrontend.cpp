@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -65,15 +66,17 @@ struct FrameTotals {
   long long frames = 0;
   double seconds = 0.0;
   double busySeconds = 0.0;
+  double longestFrame = 0.0;  // seconds, from one frame's start to the next's
 };
 
 // Also the process's CPU time so far (all threads: Mesa's software renderer
 // draws on several), which a busy machine disturbs less than the frame rate.
 void printTotals(const char* what, const FrameTotals& t) {
-  std::printf("%s: %lld frames in %.3f s (%.1f fps; %.3f ms per frame drawing and stepping; CPU %.3f s)\n", what,
-              t.frames, t.seconds, t.seconds > 0 ? static_cast<double>(t.frames) / t.seconds : 0.0,
-              t.frames > 0 ? 1000.0 * t.busySeconds / static_cast<double>(t.frames) : 0.0,
-              static_cast<double>(std::clock()) / CLOCKS_PER_SEC);
+  std::printf(
+      "%s: %lld frames in %.3f s (%.1f fps; %.3f ms per frame drawing and stepping; longest frame %.1f ms; CPU %.3f s)\n",
+      what, t.frames, t.seconds, t.seconds > 0 ? static_cast<double>(t.frames) / t.seconds : 0.0,
+      t.frames > 0 ? 1000.0 * t.busySeconds / static_cast<double>(t.frames) : 0.0, 1000.0 * t.longestFrame,
+      static_cast<double>(std::clock()) / CLOCKS_PER_SEC);
   std::fflush(stdout);
 }
 
@@ -214,8 +217,9 @@ int FrameLoop::run() {
     moveCamera(scene_, elapsed);
     // An OdeError leaves through here; RAII cleans up.
     if (recording) {
-      scene_.advanceFrame(RECORD_FRAME_SECONDS / 2);
-      scene_.advanceFrame(RECORD_FRAME_SECONDS / 2);
+      const double noBudget = std::numeric_limits<double>::infinity();
+      scene_.advanceFrame(RECORD_FRAME_SECONDS / 2, noBudget);
+      scene_.advanceFrame(RECORD_FRAME_SECONDS / 2, noBudget);
     } else {
       scene_.advanceFrame(elapsed);
     }
@@ -230,6 +234,7 @@ int FrameLoop::run() {
 
     ++totals_.frames;
     totals_.seconds += elapsed;
+    totals_.longestFrame = std::max(totals_.longestFrame, elapsed);
     if (screenshotNow) {
       totals_.busySeconds += static_cast<double>(SDL_GetPerformanceCounter() - start) / ticksPerSecond;
       std::printf("screenshot: %s (%dx%d, frame %lld)\n", options_.screenshot.c_str(), window_.width(),

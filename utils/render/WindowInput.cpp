@@ -6,6 +6,7 @@ namespace {
 
 const float DEGREES_PER_PIXEL = 0.15f;
 const float METRES_PER_SECOND = 8.0f;
+const float METRES_PER_WHEEL_NOTCH = 0.5f;
 
 // Keys the front end keeps for itself: they never reach the key table.
 bool isFrontEndKey(SDL_Keycode key) {
@@ -84,6 +85,13 @@ bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, int
         scene.moveDrag(t);
       }
       break;
+    case SDL_MOUSEWHEEL: {
+      // Away from the user moves forward; a flipped ("natural") wheel reports the opposite.
+      const float sign = event.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -1.0f : 1.0f;
+      scene.camera().move(sign * static_cast<float>(event.wheel.y) * METRES_PER_WHEEL_NOTCH,
+                          sign * static_cast<float>(event.wheel.x) * METRES_PER_WHEEL_NOTCH);
+      break;
+    }
     case SDL_WINDOWEVENT:
       return event.window.event == SDL_WINDOWEVENT_SIZE_CHANGED;
     default:

@@ -12,7 +12,8 @@ namespace odelab {
 // left button on a body drags it (a spring pulls the grabbed point toward
 // the cursor, kept at its grab distance along the cursor's ray); the left
 // button elsewhere toggles mouse-look, and any left click leaves it; mouse
-// motion turns the camera in mouse-look; every other key press goes to the
+// motion turns the camera in mouse-look; the wheel moves the camera forward
+// and back (sideways for a horizontal wheel); every other key press goes to the
 // scene's key table. Real and scripted (SDL_PushEvent) input take this path.
 class WindowInput {
  public:
