@@ -13,6 +13,12 @@ odelab_check(test0_boxes_come_to_rest_on_platform test0
 odelab_check(test0_lifetime_removes_old_objects test0
   EXPECT spawned==10 removed_bodies==10 bodies==0
   ARGS --headless --seconds 40 --spawn-interval 1 --spawn-count 10)
+# The lifetime and boundary rules bound the count: an object every 0.1 s,
+# each living at most 30 s, leaves at most 301 alive at any moment
+# (max_bodies counts them after every step's spawn).
+odelab_check(test0_count_bounded_by_lifetime test0
+  EXPECT spawned==600 max_bodies<=301 max_bodies>0 non_finite==0
+  ARGS --headless --seconds 60 --spawn-interval 0.1)
 
 # ---- every program: bad options are refused with status 2 and nothing written
 set(ODELAB_BAD_OPTIONS

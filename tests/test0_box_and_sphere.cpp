@@ -3,6 +3,7 @@
 // its side effect: a disabled body whose support expires can hang in the air.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -58,7 +59,7 @@ class BoxAndSphere : public AbstractWindow {
     platform.color = Color{0.45f, 0.5f, 0.55f};
     platform_ = &platform;
     bornAt_.clear();
-    spawned_ = removed_ = 0;
+    spawned_ = removed_ = maxBodies_ = 0;
     nextSpawn_ = 0.0;
   }
 
@@ -68,6 +69,8 @@ class BoxAndSphere : public AbstractWindow {
       spawn(spawnShapes_ == "box" || (spawnShapes_ == "both" && spawned_ % 2 == 0));
       nextSpawn_ += interval;
     }
+    // Counted before this step's removals: the most that were ever alive.
+    maxBodies_ = std::max(maxBodies_, bodyCount());
     removeExpired();
   }
 
@@ -88,6 +91,7 @@ class BoxAndSphere : public AbstractWindow {
   void addMetrics(Metrics& m) const override {
     m.set("spawned", spawned_);
     m.set("removed_bodies", removed_);
+    m.set("max_bodies", maxBodies_);
     int resting = 0;
     double maxSpeed = 0.0;
     for (const auto& object : objects()) {
@@ -148,6 +152,7 @@ class BoxAndSphere : public AbstractWindow {
   std::map<const AbstractObject*, double> bornAt_;
   int spawned_ = 0;
   int removed_ = 0;
+  int maxBodies_ = 0;  // the most bodies alive at once (after a step's spawn)
   double nextSpawn_ = 0.0;
   double spawnInterval_ = 0.0;
   int spawnLimit_ = 0;
