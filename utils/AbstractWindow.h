@@ -112,7 +112,8 @@ class AbstractWindow {
   // Window path: feeds one frame's elapsed real time through the clock and
   // runs the resulting steps, within `steppingBudget` seconds of real time
   // (--record passes infinity: each recorded frame is exactly its share of
-  // simulated time). A blow-up is reported and the scene reset.
+  // simulated time). A blow-up or an ODE error in a step is reported and
+  // the scene reset: the session goes on.
   void advanceFrame(double elapsedSeconds, double steppingBudget = FRAME_STEPPING_BUDGET);
   // One step: collide, step, empty the contact group, measure, check state.
   // Returns false when the state became non-finite (see blowUpReason()).
