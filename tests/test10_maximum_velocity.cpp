@@ -31,14 +31,13 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <limits>
-#include <sstream>
 
 #include "AbstractWindow.h"
 #include "Box.h"
 #include "CommandLine.h"
+#include "FormatValue.h"
 #include "Plane.h"
 #include "TestMain.h"
 
@@ -107,12 +106,6 @@ const char* outcomeName(Outcome outcome) {
       return "passed through";
   }
   return "?";
-}
-
-std::string format(double value, int precision = 6) {
-  std::ostringstream out;
-  out << std::setprecision(precision) << value;
-  return out.str();
 }
 
 // ---- Continuous collision: a swept test against static geometry ----------
@@ -513,14 +506,14 @@ class MaximumVelocity : public AbstractWindow {
   }
 
   void addHudLines(std::vector<std::string>& lines) const override {
-    lines.push_back("launch velocity " + format(velocity_) + " m/s   B launches a cube, F5 / Shift+F5 change it");
+    lines.push_back("launch velocity " + formatValue(velocity_) + " m/s   B launches a cube, F5 / Shift+F5 change it");
     std::string counts = "launched " + std::to_string(launched_) + ": stopped " + std::to_string(stopped_) +
                          ", passed through " + std::to_string(passed_);
     if (lastOutcome_ != Outcome::InFlight)
-      counts += "   (last: " + std::string(outcomeName(lastOutcome_)) + " at " + format(lastVelocity_) + " m/s)";
+      counts += "   (last: " + std::string(outcomeName(lastOutcome_)) + " at " + formatValue(lastVelocity_) + " m/s)";
     lines.push_back(counts);
-    lines.push_back("every arrival is stopped below (h + t/2)/step = " + format(guaranteedStopVelocity()) +
-                    " m/s; (h + t)/step = " + format(geometricPrediction()) + " m/s");
+    lines.push_back("every arrival is stopped below (h + t/2)/step = " + formatValue(guaranteedStopVelocity()) +
+                    " m/s; (h + t)/step = " + formatValue(geometricPrediction()) + " m/s");
     lines.push_back(std::string("continuous collision (T): ") +
                     (ccd_ ? "on, " + std::to_string(ccdClamps_) + " clamps" : std::string("off")));
   }
@@ -588,7 +581,7 @@ class MaximumVelocity : public AbstractWindow {
   void changeVelocity(int direction) {
     const bool coarse = direction > 0 ? velocity_ >= F5_COARSE_FROM : velocity_ > F5_COARSE_FROM;
     velocity_ = std::max(F5_FINE_STEP, velocity_ + direction * (coarse ? F5_COARSE_STEP : F5_FINE_STEP));
-    notify("launch velocity " + format(velocity_) + " m/s");
+    notify("launch velocity " + formatValue(velocity_) + " m/s");
   }
 
   void toggleCcd() {
@@ -743,16 +736,16 @@ class MaximumVelocity : public AbstractWindow {
               << '\n';
     if (blewUp) std::cout << "scan: stopped early, the simulation blew up\n";
     if (scan_.firstFailure == 0.0) {
-      std::cout << "scan: no launch passed up to the scan limit " << format(scanLimit_) << " m/s\n";
+      std::cout << "scan: no launch passed up to the scan limit " << formatValue(scanLimit_) << " m/s\n";
       return;
     }
-    std::cout << "max velocity " << format(scan_.maxVelocity) << " m/s (resolution "
-              << format(scan_.maxVelocityResolution) << " m/s): every launch up to it was stopped; first launch "
-              << "through at " << format(scan_.firstFailure) << " m/s\n";
-    std::cout << "band " << format(scan_.firstFailure) << " - " << format(scan_.bandUpper)
+    std::cout << "max velocity " << formatValue(scan_.maxVelocity) << " m/s (resolution "
+              << formatValue(scan_.maxVelocityResolution) << " m/s): every launch up to it was stopped; first launch "
+              << "through at " << formatValue(scan_.firstFailure) << " m/s\n";
+    std::cout << "band " << formatValue(scan_.firstFailure) << " - " << formatValue(scan_.bandUpper)
               << " m/s: " << scan_.stoppedInBand << " tested velocities stopped again, " << scan_.passedInBand
               << " passed"
-              << (scan_.stoppedInBand ? " (highest stopped " + format(scan_.highestStoppedInBand) + " m/s)" : "")
+              << (scan_.stoppedInBand ? " (highest stopped " + formatValue(scan_.highestStoppedInBand) + " m/s)" : "")
               << '\n';
   }
 

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "CommandLine.h"
+#include "FormatValue.h"
 #include "MeasurementLog.h"
 #include "TestMain.h"
 #include "shared/FixedIntervalSampler.h"
@@ -37,12 +38,6 @@ WorldSettings settingsForThisScene() {
   settings.erp = THESIS_ERP;
   settings.cfm = THESIS_CFM;
   return settings;
-}
-
-std::string format(double value, int precision = 6) {
-  std::ostringstream out;
-  out << std::setprecision(precision) << value;
-  return out.str();
 }
 
 // Times the swing by the centre of mass passing straight down, where it moves
@@ -139,7 +134,7 @@ class Pendulum : public PendulumScene {
       s << "after the first whole swing";
     lines.push_back(s.str());
     lines.push_back("writing " + log_.path() + " (" + std::to_string(log_.rows()) + " rows, every " +
-                    format(sampleInterval_) + " s); R resets and rewrites it");
+                    formatValue(sampleInterval_) + " s); R resets and rewrites it");
   }
 
   // The live plot (L): the scene's headline measurement.
@@ -173,15 +168,16 @@ class Pendulum : public PendulumScene {
   void openOutputFile() {
     auto header = settingsDescription();
     const MassProperties p = massProperties(BOB_MASS);
-    header.emplace_back("rod", "box [3.0, 0.1, 0.1] m, " + format(ROD_MASS) + " kg, from the anchor along +x");
-    header.emplace_back("bob", "sphere radius " + format(BOB_RADIUS) + " m, " + format(BOB_MASS) + " kg, centre " +
-                                   format(BOB_DISTANCE) + " m from the anchor");
-    header.emplace_back("hinge", "anchor [0, " + format(ANCHOR_HEIGHT) + ", 0], axis [0, 0, 1], to the static world");
-    header.emplace_back("start_deflection_rad", format(START_DEFLECTION));
-    header.emplace_back("composite_mass_kg", format(p.mass, 10));
-    header.emplace_back("inertia_about_axis_kg_m2", format(p.inertiaAboutAxis, 10));
-    header.emplace_back("period_exact_s", format(exactPeriod_, 10));
-    header.emplace_back("sample_interval_s", format(sampleInterval_));
+    header.emplace_back("rod", "box [3.0, 0.1, 0.1] m, " + formatValue(ROD_MASS) + " kg, from the anchor along +x");
+    header.emplace_back("bob", "sphere radius " + formatValue(BOB_RADIUS) + " m, " + formatValue(BOB_MASS) +
+                                   " kg, centre " + formatValue(BOB_DISTANCE) + " m from the anchor");
+    header.emplace_back("hinge",
+                        "anchor [0, " + formatValue(ANCHOR_HEIGHT) + ", 0], axis [0, 0, 1], to the static world");
+    header.emplace_back("start_deflection_rad", formatValue(START_DEFLECTION));
+    header.emplace_back("composite_mass_kg", formatValue(p.mass, 10));
+    header.emplace_back("inertia_about_axis_kg_m2", formatValue(p.inertiaAboutAxis, 10));
+    header.emplace_back("period_exact_s", formatValue(exactPeriod_, 10));
+    header.emplace_back("sample_interval_s", formatValue(sampleInterval_));
     header.emplace_back("energy", "potential m g y of the centre of mass (y from the ground); kinetic "
                                   "0.5 m v^2 + 0.5 w^T I w; total = potential + kinetic");
     log_.open(joinPath(options().outDir, "Test2_output.txt"), "test2 - Pendulum: energies", header,

@@ -14,14 +14,14 @@
 // fall depends on the size of the first disturbance.
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 #include "AbstractWindow.h"
 #include "Box.h"
 #include "CommandLine.h"
+#include "FormatValue.h"
 #include "Plane.h"
 #include "TestMain.h"
+#include "shared/AngularSpeedLimit.h"
 
 namespace {
 
@@ -40,12 +40,6 @@ constexpr double UPRIGHT_SIDEWAYS_METRES = 0.05;
 
 constexpr double DEFAULT_SECONDS = 60.0;        // headless run (proposed): the thesis saw a fall within seconds
 constexpr double MAX_START_TILT_DEGREES = 0.5;  // --tilt-degrees stays well inside "upright"
-
-std::string format(double value, int precision = 4) {
-  std::ostringstream out;
-  out << std::setprecision(precision) << value;
-  return out.str();
-}
 
 double degrees(double radians) { return radians * 180.0 / M_PI; }
 
@@ -69,7 +63,7 @@ class AxisSystem : public AbstractWindow {
   AxisSystem() : AbstractWindow("test6 - Axis system", WorldSettings{}) {}
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--max-angular-speed", maxAngularSpeed_,
+    app.add_option("--max-angular-speed", angularLimit_.radPerSecond,
                    "dWorldSetMaxAngularSpeed(world, W) for every body, in rad/s (the thesis tried 0.01); "
                    "default: no limit")
         ->check(cli::positive(1e6));
@@ -82,8 +76,7 @@ class AxisSystem : public AbstractWindow {
 
  protected:
   void configureWorld() override {
-    // Must come before the bodies exist: each body copies the world's limit when created.
-    if (maxAngularSpeed_ > 0) dWorldSetMaxAngularSpeed(world(), maxAngularSpeed_);
+    angularLimit_.applyToWorld(world());
   }
 
   void buildScene() override {
@@ -122,16 +115,16 @@ class AxisSystem : public AbstractWindow {
   }
 
   void addHudLines(std::vector<std::string>& lines) const override {
-    lines.push_back("big cube tilt " + format(tilt_) + " deg (max " + format(maxTilt_) + "), centre moved " +
-                    format(sideways_) + " m sideways (max " + format(maxSideways_) + ")   small cube sank " +
-                    format(maxSink_) + " m (max while upright)");
-    lines.push_back(uprightUntil_ < 0 ? "upright for " + format(simulatedTime(), 5) +
+    lines.push_back("big cube tilt " + formatValue(tilt_, 4) + " deg (max " + formatValue(maxTilt_, 4) +
+                    "), centre moved " + formatValue(sideways_, 4) + " m sideways (max " +
+                    formatValue(maxSideways_, 4) + ")   small cube sank " + formatValue(maxSink_, 4) +
+                    " m (max while upright)");
+    lines.push_back(uprightUntil_ < 0 ? "upright for " + formatValue(simulatedTime(), 5) +
                                             " s so far (falls at tilt > 1 deg "
                                             "or 0.05 m sideways)"
-                                      : "fell after " + format(uprightUntil_, 5) + " s");
-    std::string limits = "max angular speed ";
-    limits += maxAngularSpeed_ > 0 ? format(maxAngularSpeed_) + " rad/s" : "off";
-    if (startTiltDegrees_ > 0) limits += "   built tilted by " + format(startTiltDegrees_) + " deg";
+                                      : "fell after " + formatValue(uprightUntil_, 5) + " s");
+    std::string limits = "max angular speed " + angularLimit_.describe();
+    if (startTiltDegrees_ > 0) limits += "   built tilted by " + formatValue(startTiltDegrees_, 4) + " deg";
     lines.push_back(limits);
   }
 
@@ -150,7 +143,7 @@ class AxisSystem : public AbstractWindow {
     m.set("max_sideways_metres", maxSideways_);
     m.set("sink_while_upright_metres", maxSink_);
     m.set("start_tilt_degrees", startTiltDegrees_);
-    m.set("max_angular_speed_limit", maxAngularSpeed_);
+    m.set("max_angular_speed_limit", angularLimit_.radPerSecond);
   }
 
   double defaultHeadlessSeconds() const override { return DEFAULT_SECONDS; }
@@ -169,7 +162,7 @@ class AxisSystem : public AbstractWindow {
     dBodySetRotation(big.getBody(), rotation);
   }
 
-  double maxAngularSpeed_ = 0.0;  // 0: no limit
+  AngularSpeedLimit angularLimit_;  // none unless --max-angular-speed
   double startTiltDegrees_ = 0.0;
 
   Box* small_ = nullptr;

@@ -15,15 +15,15 @@
 #include <array>
 #include <cmath>
 #include <deque>
-#include <iomanip>
-#include <sstream>
 
 #include "AbstractWindow.h"
 #include "Box.h"
 #include "CommandLine.h"
+#include "FormatValue.h"
 #include "Plane.h"
 #include "Sphere.h"
 #include "TestMain.h"
+#include "shared/AngularSpeedLimit.h"
 
 namespace {
 
@@ -61,12 +61,6 @@ constexpr double REST_FROM_SECONDS = 0.05, REST_TO_SECONDS = 0.25;
 constexpr double ENERGY_MEAN_SECONDS = 1.0;
 // F5 walks the max angular speed limit through these (0: no limit).
 const std::vector<double> ANGULAR_SPEED_LADDER{0.0, 1.0, 3.0, 10.0, 30.0, 100.0};
-
-std::string format(double value, int precision = 4) {
-  std::ostringstream out;
-  out << std::setprecision(precision) << value;
-  return out.str();
-}
 
 double length(const dReal* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
@@ -111,7 +105,7 @@ class AxisSystem2 : public AbstractWindow {
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--max-angular-speed", maxAngularSpeed_,
+    app.add_option("--max-angular-speed", angularLimit_.radPerSecond,
                    "dWorldSetMaxAngularSpeed(world, W) in rad/s for every body (the thesis's 10); 0: no limit")
         ->check(cli::finiteRange(0.0, 1e6))
         ->capture_default_str();
@@ -125,8 +119,7 @@ class AxisSystem2 : public AbstractWindow {
 
  protected:
   void configureWorld() override {
-    // Every body copies the world's limit when it is created, so set it first.
-    if (maxAngularSpeed_ > 0) dWorldSetMaxAngularSpeed(world(), maxAngularSpeed_);
+    angularLimit_.applyToWorld(world());
   }
 
   void buildScene() override {
@@ -175,15 +168,16 @@ class AxisSystem2 : public AbstractWindow {
 
   void addHudLines(std::vector<std::string>& lines) const override {
     lines.push_back("throws " + std::to_string(throwCount_) + " (R throws, Shift+R resets)   max angular speed " +
-                    (maxAngularSpeed_ > 0 ? format(maxAngularSpeed_) + " rad/s" : std::string("off")) + " (F5)");
-    lines.push_back("joint error " + format(jointError_) + " m (max " + format(maxJointError_) +
-                    ")   pivot angular speed " + format(pivotSpeed_) + " rad/s (max " + format(maxPivotSpeed_) + ")");
-    std::string energies = "swing energy of the hanging pair " + format(pairEnergy() - restingEnergy(), 6) +
-                           " J (1 s mean " + format(swingEnergy(), 6) + ")";
+                    angularLimit_.describe() + " (F5)");
+    lines.push_back("joint error " + formatValue(jointError_, 4) + " m (max " + formatValue(maxJointError_, 4) +
+                    ")   pivot angular speed " + formatValue(pivotSpeed_, 4) + " rad/s (max " +
+                    formatValue(maxPivotSpeed_, 4) + ")");
+    std::string energies = "swing energy of the hanging pair " + formatValue(pairEnergy() - restingEnergy(), 6) +
+                           " J (1 s mean " + formatValue(swingEnergy(), 6) + ")";
     const size_t first = energyAfterThrow_.size() > THROWS_ON_HUD ? energyAfterThrow_.size() - THROWS_ON_HUD : 0;
     if (!energyAfterThrow_.empty()) energies += "; after throw";
     for (size_t i = first; i < energyAfterThrow_.size(); ++i)
-      energies += " " + std::to_string(i + 1) + ": " + format(energyAfterThrow_[i], 6);
+      energies += " " + std::to_string(i + 1) + ": " + formatValue(energyAfterThrow_[i], 6);
     lines.push_back(energies);
   }
 
@@ -197,7 +191,7 @@ class AxisSystem2 : public AbstractWindow {
   void addMetrics(Metrics& m) const override {
     m.set("max_joint_error", maxJointError_);
     m.set("max_angular_speed", maxPivotSpeed_);
-    m.set("max_angular_speed_limit", maxAngularSpeed_);
+    m.set("max_angular_speed_limit", angularLimit_.radPerSecond);
     m.set("throws", throwCount_);
     m.set("resting_energy_offset", restingEnergy());
     for (size_t i = 0; i < energyAfterThrow_.size(); ++i)
@@ -277,14 +271,14 @@ class AxisSystem2 : public AbstractWindow {
   }
 
   void stepAngularSpeedLimit(int direction) {
-    maxAngularSpeed_ = ParameterStepper::nextOnLadder(ANGULAR_SPEED_LADDER, maxAngularSpeed_, direction);
+    angularLimit_.radPerSecond =
+        ParameterStepper::nextOnLadder(ANGULAR_SPEED_LADDER, angularLimit_.radPerSecond, direction);
     for (const auto& object : objects())
-      if (const dBodyID body = object->getBody())
-        dBodySetMaxAngularSpeed(body, maxAngularSpeed_ > 0 ? maxAngularSpeed_ : dInfinity);
-    notify("max angular speed " + (maxAngularSpeed_ > 0 ? format(maxAngularSpeed_) + " rad/s" : std::string("off")));
+      if (const dBodyID body = object->getBody()) angularLimit_.applyToBody(body);
+    notify("max angular speed " + angularLimit_.describe());
   }
 
-  double maxAngularSpeed_ = THESIS_MAX_ANGULAR_SPEED;
+  AngularSpeedLimit angularLimit_{THESIS_MAX_ANGULAR_SPEED};
   int throws_ = DEFAULT_THROWS;
   double throwInterval_ = DEFAULT_THROW_INTERVAL;
 

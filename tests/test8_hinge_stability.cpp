@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "CommandLine.h"
+#include "FormatValue.h"
 #include "MeasurementLog.h"
 #include "TestMain.h"
 #include "shared/FixedIntervalSampler.h"
@@ -40,12 +41,6 @@ WorldSettings settingsForThisScene() {
   settings.erp = THESIS_ERP;
   settings.cfm = DEFAULT_CFM;
   return settings;
-}
-
-std::string format(double value, int precision = 6) {
-  std::ostringstream out;
-  out << std::setprecision(precision) << value;
-  return out.str();
 }
 
 class HingeStability : public PendulumScene {
@@ -106,7 +101,7 @@ class HingeStability : public PendulumScene {
       << lowestBob_ << " m above the ground";
     lines.push_back(s.str());
     lines.push_back("writing " + log_.path() + " (" + std::to_string(log_.rows()) + " rows, every " +
-                    format(sampleInterval_) + " s); R resets and truncates it");
+                    formatValue(sampleInterval_) + " s); R resets and truncates it");
   }
 
   // The live plot (L): the scene's headline measurement.
@@ -132,13 +127,14 @@ class HingeStability : public PendulumScene {
 
   void openOutputFile() {
     auto header = settingsDescription();
-    header.emplace_back("rod", "box [3.0, 0.1, 0.1] m, " + format(ROD_MASS) + " kg, from the anchor along +x");
-    header.emplace_back("bob", "sphere radius " + format(BOB_RADIUS) + " m, " + format(bobMass_) + " kg, centre " +
-                                   format(BOB_DISTANCE) + " m from the anchor");
-    header.emplace_back("hinge", "anchor [0, " + format(ANCHOR_HEIGHT) + ", 0], axis [0, 0, 1], to the static world");
-    header.emplace_back("start_deflection_rad", format(START_DEFLECTION));
-    header.emplace_back("start_length_m", format(startLength_, 12));
-    header.emplace_back("sample_interval_s", format(sampleInterval_));
+    header.emplace_back("rod", "box [3.0, 0.1, 0.1] m, " + formatValue(ROD_MASS) + " kg, from the anchor along +x");
+    header.emplace_back("bob", "sphere radius " + formatValue(BOB_RADIUS) + " m, " + formatValue(bobMass_) +
+                                   " kg, centre " + formatValue(BOB_DISTANCE) + " m from the anchor");
+    header.emplace_back("hinge",
+                        "anchor [0, " + formatValue(ANCHOR_HEIGHT) + ", 0], axis [0, 0, 1], to the static world");
+    header.emplace_back("start_deflection_rad", formatValue(START_DEFLECTION));
+    header.emplace_back("start_length_m", formatValue(startLength_, 12));
+    header.emplace_back("sample_interval_s", formatValue(sampleInterval_));
     header.emplace_back("relative_elongation", "(l - l0) / l0, l = distance from the hinge anchor to the composite "
                                                "centre of mass, l0 = l before the run");
     log_.open(joinPath(options().outDir, "Test8_output.txt"), "test8 - Hinge stability: relative elongation", header,

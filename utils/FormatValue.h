@@ -6,10 +6,11 @@
 
 namespace odelab {
 
-// A setting or measurement for people to read: six significant digits.
-inline std::string formatValue(double value) {
+// A setting or measurement for people to read: six significant digits
+// unless told otherwise.
+inline std::string formatValue(double value, int significantDigits = 6) {
   std::ostringstream out;
-  out << std::setprecision(6) << value;
+  out << std::setprecision(significantDigits) << value;
   return out.str();
 }
 

@@ -18,21 +18,18 @@ std::string readFile(const std::string& path) {
   return text.str();
 }
 
-std::string shaderLog(GLuint shader) {
+// The info log of a shader (glGetShaderiv, glGetShaderInfoLog) or a
+// program (glGetProgramiv, glGetProgramInfoLog): only the getters differ.
+std::string infoLog(GLuint object, PFNGLGETSHADERIVPROC getInteger, PFNGLGETSHADERINFOLOGPROC getLog) {
   GLint length = 0;
-  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  getInteger(object, GL_INFO_LOG_LENGTH, &length);
   std::vector<char> log(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
-  glGetShaderInfoLog(shader, length, nullptr, log.data());
+  getLog(object, length, nullptr, log.data());
   return log.data();
 }
 
-std::string programLog(GLuint program) {
-  GLint length = 0;
-  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-  std::vector<char> log(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
-  glGetProgramInfoLog(program, length, nullptr, log.data());
-  return log.data();
-}
+std::string shaderLog(GLuint shader) { return infoLog(shader, glGetShaderiv, glGetShaderInfoLog); }
+std::string programLog(GLuint program) { return infoLog(program, glGetProgramiv, glGetProgramInfoLog); }
 
 GLuint compile(GLenum type, const std::string& path) {
   const std::string source = readFile(path);
