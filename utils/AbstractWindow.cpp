@@ -234,6 +234,7 @@ bool AbstractWindow::stepOnce() {
       DragSpring::apply(body, dragGrab_, dragTarget_, settings_.gravity);
   contactsThisStep_ = 0;
   if (viewFlags_.contacts) contactMarkers_.clear();
+  beforeStep();
   try {
     dSpaceCollide(space_, this, &AbstractWindow::nearCallback);
     if (settings_.solver == Solver::QuickStep)

@@ -212,6 +212,9 @@ class AbstractWindow {
   virtual void configureWorld() {}
   // Contact surface for a colliding pair; the default is plain friction (mu dInfinity).
   virtual void setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface);
+  // Before every step, after recorded inputs and the drag spring are
+  // applied and before collision: forces, swept tests, scripted changes.
+  virtual void beforeStep() {}
   // After every step: the scene's measurement.
   virtual void afterStep() {}
   // Scene's own HUD lines and metrics.
