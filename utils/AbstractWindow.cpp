@@ -3,6 +3,7 @@
 #include <ode/version.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -23,9 +24,8 @@ namespace {
 // can produce more, so allow a few extra.
 constexpr int MAX_CONTACTS = 16;
 constexpr double NOTICE_SECONDS = 4.0;
-// Rewind marks every quarter simulated second; the live plot samples every
-// hundredth. Contact markers are capped so a huge pile cannot flood the renderer.
-constexpr double SNAPSHOT_INTERVAL = 0.25;
+// The live plot samples every hundredth of a simulated second. Contact
+// markers are capped so a huge pile cannot flood the renderer.
 constexpr double CHART_INTERVAL = 0.01;
 constexpr size_t MAX_CONTACT_MARKERS = 4096;
 // A blow-up that stays finite (runaway energy): no scene comes near these.
@@ -38,74 +38,50 @@ constexpr double RUNAWAY_SPIN = 1e8;   // rad/s
 
 }  // namespace
 
-const char* spaceKindName(SpaceKind kind) {
-  switch (kind) {
-    case SpaceKind::Simple: return "simple";
-    case SpaceKind::Hash: return "hash";
-    case SpaceKind::SweepAndPrune: return "sap";
-    case SpaceKind::QuadTree: return "quadtree";
-  }
-  return "?";
-}
-
-bool parseSpaceKind(const std::string& text, SpaceKind& kind) {
-  for (SpaceKind candidate : {SpaceKind::Simple, SpaceKind::Hash, SpaceKind::SweepAndPrune, SpaceKind::QuadTree})
-    if (text == spaceKindName(candidate)) {
-      kind = candidate;
-      return true;
-    }
-  return false;
-}
-
 AbstractWindow::AbstractWindow(std::string title, WorldSettings defaults)
     : title_(std::move(title)), settings_(defaults) {
   bindSharedKeys();
   bindTimeAndViewKeys();
 }
 
-AbstractWindow::~AbstractWindow() {
-  shutdown();
-  if (runLog_) std::fclose(runLog_);
-}
+AbstractWindow::~AbstractWindow() { shutdown(); }
 
 void AbstractWindow::addOptions(CLI::App& app) { (void)app; }
 
 void AbstractWindow::initialize(const RunOptions& options) {
   options_ = options;
+  time_.setMaximumFrameTime(options.maxFrameTime);
+  hudMode_ = options.hud;
+  runLog_.setTarget(joinPath(options.outDir, programName() + "_run_log.txt"), title_);
   initialCamera(camera_);
   createWorld();
-  startEpoch();
+  beginRun();
 }
 
 void AbstractWindow::reset() {
-  ++epoch_;
+  rewind_.newEpoch();
+  failure_.clear();
   destroyWorld();
   createWorld();
-  startEpoch();
+  beginRun();
 }
 
 // A new run begins: what the timeline replays starts from here.
-void AbstractWindow::startEpoch() {
-  timeline_.clear();
-  epochSettings_ = settings_;
-  epochSpace_ = spaceKind_;
-  epochStepper_ = stepper_;
-  for (auto& kept : keptValues_) kept.save();
-}
+void AbstractWindow::beginRun() { rewind_.begin({settings_, spaceKind_, stepper_}); }
 
 void AbstractWindow::replayTo(long long step) {
-  replaying_ = true;
-  settings_ = epochSettings_;
-  spaceKind_ = epochSpace_;
-  stepper_ = epochStepper_;
-  for (auto& kept : keptValues_) kept.restore();
+  rewind_.setReplaying(true);
+  const RunStart& start = rewind_.restore();
+  settings_ = start.settings;
+  spaceKind_ = start.space;
+  stepper_ = start.stepper;
   destroyWorld();
   createWorld();
-  timeline_.rewindCursor();
+  rewind_.timeline().rewindCursor();
   while (steps_ < step && stepOnce()) {
   }
-  replaying_ = false;
-  paused_ = true;
+  rewind_.setReplaying(false);
+  time_.setPaused(true);
 }
 
 void AbstractWindow::shutdown() {
@@ -133,15 +109,14 @@ void AbstractWindow::createWorld() {
   steps_ = 0;
   contactsLastStep_ = 0;
   wallSeconds_ = 0.0;
-  droppedSteps_ = 0;
   blowUpReason_.clear();
-  clock_.reset();
-  dragIndex_ = -1;
+  time_.resetClock();
+  drag_.release();
   contactMarkers_.clear();
   chart_.clear();
   chart_.label = plotLabel();
   nextChartTime_ = 0.0;
-  nextSnapshotTime_ = SNAPSHOT_INTERVAL;
+  rewind_.worldRebuilt();
   configureWorld();
   buildScene();
 }
@@ -228,10 +203,8 @@ void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& sur
 
 bool AbstractWindow::stepOnce() {
   const auto start = std::chrono::steady_clock::now();
-  timeline_.applyDue(steps_, [this](const TimelineEvent& event) { applyEvent(event); });
-  if (dragIndex_ >= 0)
-    if (const dBodyID body = objects_[dragIndex_]->getBody())
-      DragSpring::apply(body, dragGrab_, dragTarget_, settings_.gravity);
+  rewind_.timeline().applyDue(steps_, [this](const TimelineEvent& event) { applyEvent(event); });
+  drag_.pull(objects_, settings_.gravity);
   contactsThisStep_ = 0;
   if (viewFlags_.contacts) contactMarkers_.clear();
   beforeStep();
@@ -252,11 +225,7 @@ bool AbstractWindow::stepOnce() {
   ++steps_;
   lastStepWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   afterStep();
-  timeline_.extendHorizon(steps_);
-  if (simulatedTime_ >= nextSnapshotTime_) {
-    timeline_.markSnapshot(steps_);
-    nextSnapshotTime_ += SNAPSHOT_INTERVAL;
-  }
+  rewind_.afterStep(simulatedTime_, steps_);
   if (simulatedTime_ >= nextChartTime_) {
     double value;
     if (plotValue(value)) chart_.add(simulatedTime_, value);
@@ -303,13 +272,11 @@ std::string AbstractWindow::stateProblem() const {
 
 void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) {
   wallSeconds_ += elapsedSeconds;
-  const int stepsNow = paused_ ? 0 : clock_.advance(elapsedSeconds, settings_.step, timeScale_);
-  const double simBefore = simulatedTime_;
+  const int stepsNow = time_.stepsFor(elapsedSeconds, settings_.step);
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < stepsNow; ++i) {
     if (i > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > steppingBudget) {
-      droppedSteps_ += stepsNow - i;
-      clock_.reset();  // carried over, they would only make the next frame late too
+      time_.dropSteps(stepsNow - i);
       break;
     }
     std::string failure;
@@ -317,12 +284,11 @@ void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) 
       if (!stepOnce()) failure = blowUpReason_;
     } catch (const OdeError& error) {
       // Headless, an ODE error ends the run (status 4). In a window the
-      // session goes on, as after a blow-up: the world is torn down and
-      // built again, and its destruction frees the solver's working memory
-      // that the failed step left in use. The errors seen come from the
-      // solver and integrator (dWorldStep with CFM 0 and unbounded friction
-      // fails dxNormalize4); the box, sphere and plane colliders raise none,
-      // so the space is never left locked mid-collision.
+      // session goes on: the world is torn down and the run replayed to the
+      // last good step. The errors seen come from the solver and integrator
+      // (dWorldStep with CFM 0 and unbounded friction fails dxNormalize4);
+      // the box, sphere and plane colliders raise none, so the space is
+      // never left locked mid-collision.
       failure = std::string("ODE error: ") + error.what();
       // The failed step left a job in the world's threading implementation;
       // freeing it would fail ODE's own check, so it is left allocated
@@ -330,19 +296,23 @@ void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) 
       stepThreading_ = nullptr;
     }
     if (!failure.empty()) {
-      reset();
-      notify(failure + "; scene reset");
+      recoverFrom(failure);
       return;
     }
   }
-  // Real-time factor over roughly the last second of frames.
-  rateWindowReal_ += elapsedSeconds;
-  rateWindowSim_ += simulatedTime_ - simBefore;
-  if (rateWindowReal_ >= 1.0) {
-    realTimeFactor_ = rateWindowSim_ / rateWindowReal_;
-    rateWindowReal_ = rateWindowSim_ = 0.0;
-  }
   if (options_.seconds > 0 && simulatedTime_ >= options_.seconds) quitRequested_ = true;
+}
+
+// A blow-up or an ODE error in a window: the run is replayed to the step
+// before the failure and paused there, with the message on screen until it
+// is dismissed; the timeline stays, so , rewinds further and R starts over.
+void AbstractWindow::recoverFrom(const std::string& failure) {
+  ++failures_;
+  const long long lastGood = steps_ - 1;
+  replayTo(std::max(0LL, lastGood));
+  failure_ = failure + "; paused at the last good state, t=" + formatValue(simulatedTime_) +
+             " s (Enter dismisses, , rewinds, R resets)";
+  notify(failure_);
 }
 
 int AbstractWindow::runHeadless() {
@@ -355,8 +325,9 @@ bool AbstractWindow::runFor(double seconds) {
   const auto start = std::chrono::steady_clock::now();
   bool finite = blowUpReason_.empty();
   while (steps_ < total && finite) finite = stepOnce();
-  wallSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  realTimeFactor_ = wallSeconds_ > 0 ? simulatedTime_ / wallSeconds_ : 0.0;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  wallSeconds_ += wall;
+  time_.addRun(wall, seconds);
   return finite;
 }
 
@@ -415,8 +386,16 @@ Metrics AbstractWindow::metrics() const {
   m.set("steps", static_cast<double>(steps_));
   m.set("sim_seconds", simulatedTime_);
   m.set("wall_seconds", wallSeconds_);
-  m.set("real_time_factor", realTimeFactor_);
-  m.set("dropped_steps", static_cast<double>(droppedSteps_));
+  if (options_.headless) {
+    m.set("real_time_factor", wallSeconds_ > 0 ? simulatedTime_ / wallSeconds_ : 0.0);
+  } else {
+    // A window run: over the whole session, every reset included.
+    m.set("real_time_factor", time_.sessionRealTimeFactor());
+    m.set("window_fps", time_.sessionFramesPerSecond());
+    m.set("longest_frame_ms", 1000.0 * time_.longestFrameSeconds());
+    m.set("window_failures", static_cast<double>(failures_));
+  }
+  m.set("dropped_steps", static_cast<double>(time_.droppedSteps()));
   m.set("bodies", bodyCount());
   m.set("disabled_bodies", disabledBodyCount());
   m.set("contacts", contactsLastStep_);
@@ -447,17 +426,22 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
 
 void AbstractWindow::applySettings(const std::string& change) {
   settings_.applyTo(world_);
-  lastChange_ = change;
+  chart_.markChange(simulatedTime_);
   std::ostringstream line;
   line << "t=" << formatValue(simulatedTime_) << " s: " << change;
-  notify(line.str());
+  // A replay repeats changes the user has seen already.
+  if (!rewind_.replaying()) notify(line.str());
   onSettingChanged(change);
 }
 
 void AbstractWindow::notify(const std::string& message) {
   std::cerr << message << '\n';
   notice_ = message;
-  noticeUntil_ = wallSeconds_ + NOTICE_SECONDS;
+  noticeUntil_ = time_.sessionWallSeconds() + NOTICE_SECONDS;
+}
+
+std::string AbstractWindow::notice() const {
+  return time_.sessionWallSeconds() < noticeUntil_ ? notice_ : std::string();
 }
 
 void AbstractWindow::initialCamera(Camera& camera) const { camera.lookAt({0, 6, 16}, {0, 1, 0}); }
@@ -491,9 +475,7 @@ void AbstractWindow::removeIf(const std::function<bool(const AbstractObject&)>& 
                                 [&](const std::unique_ptr<AbstractObject>& o) { return predicate(*o); }),
                  objects_.end());
   // The dragged object's index moves with the removal, or the drag ends.
-  dragIndex_ = -1;
-  for (size_t i = 0; dragged && i < objects_.size(); ++i)
-    if (objects_[i].get() == dragged) dragIndex_ = static_cast<int>(i);
+  drag_.follow(objects_, dragged);
 }
 
 }  // namespace odelab

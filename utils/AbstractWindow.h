@@ -1,10 +1,7 @@
 #pragma once
 
-#include <SDL2/SDL_keycode.h>
 #include <ode/ode.h>
 
-#include <chrono>
-#include <cstdio>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -16,50 +13,23 @@
 #include "AbstractObject.h"
 #include "Camera.h"
 #include "DebugMarkers.h"
-#include "DragSpring.h"
-#include "FixedStepClock.h"
+#include "KeyTable.h"
 #include "Metrics.h"
+#include "MouseDrag.h"
+#include "Rewind.h"
+#include "RunLog.h"
+#include "RunOptions.h"
+#include "SceneParameters.h"
+#include "SettingsTable.h"
+#include "SpaceKind.h"
 #include "StripChart.h"
-#include "Timeline.h"
-#include "WorldSettings.h"
+#include "TimeControl.h"
 
 namespace CLI {
 class App;
 }
 
 namespace odelab {
-
-enum class SpaceKind { Simple, Hash, SweepAndPrune, QuadTree };
-const char* spaceKindName(SpaceKind kind);  // "simple", "hash", "sap", "quadtree"
-bool parseSpaceKind(const std::string& text, SpaceKind& kind);
-
-// Options shared by every test program, filled from the command line.
-struct RunOptions {
-  bool headless = false;
-  double seconds = 0.0;  // headless: run length (0 = the scene's default); window: quit after (0 = never)
-  unsigned seed = 1;
-  std::string outDir = ".";
-  std::string metricsJson;
-  std::string screenshot;  // window: save a PNG after `frames` frames and exit
-  int frames = 60;
-  std::string shaderDir;
-  std::string fontPath;
-  int width = 1280;
-  int height = 720;
-  std::string recordDir;   // window: save every frame as a numbered PNG here
-  std::string eventsFile;  // window: scripted input (see doc/manual.md, "Scripted input")
-};
-
-// One key of the scene: the same table drives dispatch, --help and doc/.
-struct KeyBinding {
-  SDL_Keycode key;
-  std::string keyName;
-  std::string description;
-  std::function<void(int direction)> action;  // direction is -1 with Shift, else +1
-  // Whether the key changes the simulation: such presses are recorded on the
-  // timeline (rewind replays them) and in the run log. View keys are not.
-  bool recorded = true;
-};
 
 // What the debug drawing and overlays show; toggled by view keys.
 struct ViewFlags {
@@ -77,10 +47,12 @@ struct SceneBounds {
   double radius;
 };
 
-// The base of every test: owns the ODE world, the collision space, the contact
-// group and the thesis's fixed-step loop; the camera, the HUD text and the key
-// bindings. It never calls GL: the window front end (utils/render) reads poses
-// and HUD lines from it, and headless runs drive it directly.
+// The base of every test: owns the ODE world, the collision space, the
+// contact group and the fixed-step loop, and composes the parts with rules
+// of their own: TimeControl (clock, pause, scale, budget), Rewind (run start,
+// timeline), MouseDrag, KeyTable, SceneParameters, RunLog. It never calls
+// GL: the window front end (utils/render) reads poses and HUD lines from it,
+// and headless runs drive it directly. doc/framework.md draws who owns what.
 class AbstractWindow {
  public:
   AbstractWindow(std::string title, WorldSettings defaults);
@@ -91,47 +63,35 @@ class AbstractWindow {
   // ---- driven by the runner ----------------------------------------------
   // Scene-specific command-line options; called before parsing.
   virtual void addOptions(CLI::App& app);
-  // The parsed common options; options() returns them from here on.
   void setRunOptions(const RunOptions& options) { options_ = options; }
-  // Checks between options after parsing (options() is set); throw
-  // UsageError (CommandLine.h) naming the option. Runs before anything is written.
+  // Checks between options after parsing; throw UsageError naming the option.
   virtual void checkOptions() const {}
   // Builds the world and the scene. Call once after options are parsed.
   void initialize(const RunOptions& options);
   // R: tears everything down and builds the scene again; settings persist.
   void reset();
-  // Destroys the world, space, every object and the world's threading
-  // implementation; call before dCloseODE().
+  // Destroys the world, space, objects and threading; call before dCloseODE().
   void shutdown();
-  // A frame's steps may take this much real time; what is left of them is
-  // dropped, so that whatever the settings (step 1e-5 at 8x with 1000
-  // iterations asks for 8000 costly steps a frame) the window goes on
-  // answering input. The simulation then runs slower than real time, which
-  // the HUD's real-time factor shows; dropped_steps counts them.
-  static constexpr double FRAME_STEPPING_BUDGET = 0.05;
-  // Window path: feeds one frame's elapsed real time through the clock and
-  // runs the resulting steps, within `steppingBudget` seconds of real time
-  // (--record passes infinity: each recorded frame is exactly its share of
-  // simulated time). A blow-up or an ODE error in a step is reported and
-  // the scene reset: the session goes on.
-  void advanceFrame(double elapsedSeconds, double steppingBudget = FRAME_STEPPING_BUDGET);
-  // One step: collide, step, empty the contact group, measure, check state.
-  // Returns false when the state became non-finite (see blowUpReason()).
+  // Window path: one frame's elapsed real time through the clock, and its
+  // steps within `steppingBudget` seconds (--record passes infinity). A
+  // blow-up or an ODE error pauses at the last good state (see failure()).
+  void advanceFrame(double elapsedSeconds, double steppingBudget = TimeControl::STEPPING_BUDGET);
+  // One step: inputs due, beforeStep, collide, step, measure, check state.
+  // Returns false when the state blew up (see blowUpReason()).
   bool stepOnce();
-  // Headless path: runs for options.seconds (or defaultHeadlessSeconds()),
-  // then reportHeadless(). Scenes with their own experiment (several
-  // launches, a search) override it with runFor() calls and end with
-  // reportHeadless().
+  // Headless path: runFor(--seconds or defaultHeadlessSeconds()), then
+  // reportHeadless(). Scenes with their own experiment override it.
   virtual int runHeadless();
 
-  // ---- read by the front end -----------------------------------------------
+  // ---- read and driven by the front end -------------------------------------
   const std::string& title() const { return title_; }
+  std::string programName() const;  // "test0" from "test0 - Box & Sphere"
   const std::vector<std::unique_ptr<AbstractObject>>& objects() const { return objects_; }
   std::vector<std::string> hudLines() const;
-  const std::vector<KeyBinding>& keyBindings() const { return keyBindings_; }
-  // Finds the key in the table and runs it; false if unbound.
-  bool handleKey(SDL_Keycode key, bool shift);
-  bool hudVisible() const { return hudVisible_; }
+  HudMode hudMode() const { return hudMode_; }
+  const KeyTable& keys() const { return keys_; }
+  bool handleKey(SDL_Keycode key, bool shift);  // false if unbound
+  std::vector<std::string> helpLines() const;
   bool quitRequested() const { return quitRequested_; }
   void requestQuit() { quitRequested_ = true; }
   Camera& camera() { return camera_; }
@@ -139,43 +99,39 @@ class AbstractWindow {
   bool mouseLook() const { return mouseLook_; }
   void toggleMouseLook() { mouseLook_ = !mouseLook_; }
   virtual SceneBounds bounds() const { return {{0, 0, 0}, 12.0}; }
-  void setFramesPerSecond(double fps) { framesPerSecond_ = fps; }
   const RunOptions& runOptions() const { return options_; }
-
-  // ---- time: P pause, O one step, - / = slower / faster, , / . rewind ----
-  bool paused() const { return paused_; }
-  double timeScale() const { return timeScale_; }
-  const Timeline& timeline() const { return timeline_; }
-  // Rebuilds the state at `step` of this run by resetting and replaying the
-  // recorded inputs; leaves the simulation paused there.
+  TimeControl& time() { return time_; }
+  const TimeControl& time() const { return time_; }
+  const Timeline& timeline() const { return rewind_.timeline(); }
+  // Rebuilds the state at `step` by resetting and replaying; leaves it paused.
   void replayTo(long long step);
-
-  // ---- mouse drag ---------------------------------------------------------
-  PickHit pickAt(const double origin[3], const double direction[3]) const;
-  // Grabs the hit object at the hit point and pulls it toward `target`.
-  void beginDrag(const PickHit& hit, const double target[3]);
-  void moveDrag(const double target[3]);
-  void endDrag();
-  bool dragging() const { return dragIndex_ >= 0; }
-  const AbstractObject* draggedObject() const;
-  const double* dragTarget() const { return dragTarget_; }
-
-  // ---- debug drawing and overlays -------------------------------------------
   const ViewFlags& viewFlags() const { return viewFlags_; }
   const std::vector<ContactMarker>& contactMarkers() const { return contactMarkers_; }
   std::vector<JointMarker> jointMarkers() const { return collectJointMarkers(objects_); }
   const StripChart& chart() const { return chart_; }
-  // The key list: mouse and camera keys, then every binding of the table.
-  std::vector<std::string> helpLines() const;
-  // True once per F12 press.
-  bool takeScreenshotRequest();
-  // "test0" from "test0 - Box & Sphere": the stem of file names.
-  std::string programName() const;
-
-  // ---- scripted checks --------------------------------------------------------
-  // Records the current step, simulated time and state hash as metrics
-  // mark_<label>_steps, mark_<label>_sim_seconds, mark_<label>_hash.
+  bool takeScreenshotRequest();  // true once per F12 press
+  // Records step, simulated time and state hash as metrics mark_<label>_*.
   void mark(const std::string& label);
+  // The last blow-up or ODE error, kept on screen until dismissed (Enter).
+  const std::string& failure() const { return failure_; }
+  void dismissFailure() { failure_.clear(); }
+  // The notice of the last few seconds ("" when none).
+  std::string notice() const;
+
+  // Mouse drag: grab the hit object at the hit point, pull it toward a target.
+  PickHit pickAt(const double origin[3], const double direction[3]) const;
+  void beginDrag(const PickHit& hit, const double target[3]);
+  void moveDrag(const double target[3]);
+  void endDrag();
+  bool dragging() const { return drag_.active(); }
+  const AbstractObject* draggedObject() const;
+  const double* dragTarget() const { return drag_.target(); }
+
+  // The control panel: the same path as the keys (clamped, recorded, logged).
+  void changeSetting(SettingId id, double value);
+  void changeParameter(int index, double value);
+  const SceneParameters& parameters() const { return parameters_; }
+  double f2Increment() const { return stepper_.increment(); }
 
   // ---- state, for scenes and tests -----------------------------------------
   dWorldID world() const { return world_; }
@@ -189,15 +145,14 @@ class AbstractWindow {
   double lastStepWallSeconds() const { return lastStepWallSeconds_; }
   const std::string& blowUpReason() const { return blowUpReason_; }
   int bodyCount() const;
-  // A hash of every body's exact state: equal for two runs that followed the
-  // same trajectory bit for bit (the determinism check).
-  std::uint64_t stateHash() const;
   int disabledBodyCount() const;
+  // A hash of every body's exact state (the determinism check).
+  std::uint64_t stateHash() const;
   // Every metric: the framework's (steps, sim_seconds, ...) then the scene's.
   Metrics metrics() const;
   // "key: value" pairs naming every setting in force, for output file headers.
   std::vector<std::pair<std::string, std::string>> settingsDescription() const;
-  // Applies settings() to the world now (after an edit) and records the change.
+  // Applies settings() to the world now (after an edit) and reports `change`.
   void applySettings(const std::string& change);
   // Replaces the collision space by one of another kind, moving every geom.
   void setSpaceKind(SpaceKind kind);
@@ -207,8 +162,8 @@ class AbstractWindow {
   // ---- hooks for scenes ----------------------------------------------------
   // Create objects and joints; reset measurement state. Called on every (re)build.
   virtual void buildScene() = 0;
-  // World settings beyond WorldSettings (auto-disable, max angular speed,
-  // surface layer...). Called on every (re)build, before buildScene().
+  // World settings beyond WorldSettings (auto-disable, surface layer...);
+  // every (re)build, before buildScene().
   virtual void configureWorld() {}
   // Contact surface for a colliding pair; the default is plain friction (mu dInfinity).
   virtual void setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface);
@@ -217,34 +172,34 @@ class AbstractWindow {
   virtual void beforeStep() {}
   // After every step: the scene's measurement.
   virtual void afterStep() {}
-  // Scene's own HUD lines and metrics.
+  // Scene's own HUD lines (the first is its headline, shown in the compact HUD) and metrics.
   virtual void addHudLines(std::vector<std::string>& lines) const { (void)lines; }
   virtual void addMetrics(Metrics& metrics) const { (void)metrics; }
-  // Called after any setting change (F-keys), e.g. to log it in an output file.
+  // After any setting change (keys, panel), e.g. to log it in an output file.
   virtual void onSettingChanged(const std::string& change) { (void)change; }
+  // After a scene parameter changed from the panel.
+  virtual void onParameterChanged(const SceneParameter& parameter) { (void)parameter; }
   // Headless run length when --seconds is not given.
   virtual double defaultHeadlessSeconds() const { return 10.0; }
-  // Where the camera starts.
   virtual void initialCamera(Camera& camera) const;
   // The live plot's value after a step and its label with unit; the default
   // plots the contacts of the last step.
   virtual bool plotValue(double& value) const;
   virtual std::string plotLabel() const { return "contacts in the last step"; }
 
-  // Scene keys. B / N / F5 are bound through these when the scene supports them.
+  // Scene keys; a view key changes only the view and is not recorded.
   void bindKey(SDL_Keycode key, std::string keyName, std::string description,
                std::function<void(int direction)> action);
-  // A key that changes only the view (not recorded on the timeline).
   void bindViewKey(SDL_Keycode key, std::string keyName, std::string description,
                    std::function<void(int direction)> action);
-  // A scene value that keys change and that survives R (a launch velocity, a
-  // friction coefficient): rewind restores it to its value at the start of
-  // the run before replaying the recorded key presses.
+  // A scene value that keys change and that survives R: rewind restores it
+  // to its value at the start of the run before replaying.
   template <class T>
   void keepAcrossRewind(T& value) {
-    auto saved = std::make_shared<T>(value);
-    keptValues_.push_back({[&value, saved] { *saved = value; }, [&value, saved] { value = *saved; }});
+    rewind_.keep(value);
   }
+  // A scene value the panel shows and sets (kept across rewind too).
+  void addParameter(SceneParameter parameter);
 
   // Objects are owned here; scenes keep raw pointers, valid until the next reset.
   template <class T, class... Args>
@@ -255,11 +210,9 @@ class AbstractWindow {
     return reference;
   }
   void remove(const AbstractObject* object);
-  // Removes every object for which `predicate` is true.
   void removeIf(const std::function<bool(const AbstractObject&)>& predicate);
 
-  // Steps for `seconds` of simulated time (wall time is added to the run's
-  // total); false if the state blew up (blowUpReason() says how).
+  // Steps for `seconds` of simulated time; false if the state blew up.
   bool runFor(double seconds);
   // Prints the metrics, writes --metrics-json, and returns OK or BLEW_UP.
   int reportHeadless();
@@ -273,28 +226,30 @@ class AbstractWindow {
   static void nearCallback(void* data, dGeomID o1, dGeomID o2);
   void createWorld();
   void destroyWorld();
-  void startEpoch();
+  void beginRun();
   void applyEvent(const TimelineEvent& event);
-  void runBinding(SDL_Keycode key, bool shift);
-  void recordEvent(TimelineEvent event);
+  void recordAndApply(const TimelineEvent& event);
   void logAction(const std::string& text);
   void bindSharedKeys();
   void bindTimeAndViewKeys();
-  std::string springLine() const;
-  void stepSetting(const char* what, const std::function<void()>& change);
-  // Empty while every body is finite and below the runaway speed and spin;
-  // otherwise what is wrong ("non-finite body state", "runaway energy: ...").
+  void bindSetting(const SettingSpec& spec);
+  static bool settingKey(SDL_Keycode key);
+  void reportSetting(const SettingChange& change);
+  void recoverFrom(const std::string& failure);
   std::string stateProblem() const;
-  // The settings a blow-up or an ODE error is reported with.
   std::string settingsInForce() const;
 
   std::string title_;
   WorldSettings settings_;
   RunOptions options_;
   ParameterStepper stepper_;
-  FixedStepClock clock_;
   Camera camera_;
-  std::vector<KeyBinding> keyBindings_;
+  KeyTable keys_;
+  TimeControl time_;
+  Rewind rewind_;
+  MouseDrag drag_;
+  SceneParameters parameters_;
+  RunLog runLog_;
   std::vector<std::unique_ptr<AbstractObject>> objects_;
   std::mt19937 random_;
 
@@ -302,44 +257,21 @@ class AbstractWindow {
   dSpaceID space_ = nullptr;
   dJointGroupID contactGroup_ = nullptr;
   SpaceKind spaceKind_ = SpaceKind::Simple;
+  dThreadingImplementationID stepThreading_ = nullptr;  // the world's; see createWorld()
 
   double simulatedTime_ = 0.0;
   long long steps_ = 0;
   int contactsLastStep_ = 0;
   int contactsThisStep_ = 0;
   double lastStepWallSeconds_ = 0.0;
-  double wallSeconds_ = 0.0;  // real time spent in the run (headless) or frames (window)
+  double wallSeconds_ = 0.0;  // real time spent in this run (headless) or its frames (window)
   std::string blowUpReason_;
-  bool hudVisible_ = true;
+  HudMode hudMode_ = HudMode::Compact;
   bool quitRequested_ = false;
   bool mouseLook_ = false;
-  double framesPerSecond_ = 0.0;
-  double realTimeFactor_ = 0.0;
-  long long droppedSteps_ = 0;  // steps a frame's stepping budget left out
-  dThreadingImplementationID stepThreading_ = nullptr;  // the world's; see createWorld()
-  double rateWindowReal_ = 0.0, rateWindowSim_ = 0.0;
-  std::string notice_;
+  std::string notice_, failure_;
+  long long failures_ = 0;  // blow-ups and ODE errors a window recovered from
   double noticeUntil_ = 0.0;  // in real seconds of window time
-
-  // Time control and the timeline of recorded inputs.
-  bool paused_ = false;
-  double timeScale_ = 1.0;
-  Timeline timeline_;
-  bool replaying_ = false;
-  long long epoch_ = 0;  // counts resets that start a new run (R, not replays)
-  WorldSettings epochSettings_;
-  SpaceKind epochSpace_ = SpaceKind::Simple;
-  ParameterStepper epochStepper_;
-  struct KeptValue {
-    std::function<void()> save, restore;
-  };
-  std::vector<KeptValue> keptValues_;
-  double nextSnapshotTime_ = 0.0;
-
-  // Mouse drag: the object's index, the grabbed point in its body's frame.
-  int dragIndex_ = -1;
-  double dragGrab_[3] = {0, 0, 0};
-  double dragTarget_[3] = {0, 0, 0};
 
   ViewFlags viewFlags_;
   std::vector<ContactMarker> contactMarkers_;
@@ -347,9 +279,6 @@ class AbstractWindow {
   double nextChartTime_ = 0.0;
   bool screenshotRequested_ = false;
   Metrics marks_;
-  std::FILE* runLog_ = nullptr;
-  std::string lastChange_;  // what applySettings() reported during the last key
-  bool runLogFailed_ = false;
 };
 
 }  // namespace odelab

@@ -1,6 +1,8 @@
-// AbstractWindow, HUD: the text lines the window front end draws.
+// AbstractWindow, HUD: the text lines the window front end draws. The
+// compact HUD (the default) keeps to what a user reads while tuning; F1
+// switches to the full one and off.
 #include <cmath>
-#include <iomanip>
+#include <cstdio>
 #include <sstream>
 
 #include "AbstractWindow.h"
@@ -10,57 +12,84 @@
 
 namespace odelab {
 
+namespace {
+
 // ERP and CFM as the spring and damper they mean at this step, and the ERP
 // and CFM that would keep that spring at the next step size (F8).
-std::string AbstractWindow::springLine() const {
-  const SpringDamper spring = springDamperOf(settings_.erp, settings_.cfm, settings_.step);
-  if (spring.rigid) return "constraints rigid (CFM 0): no spring; ERP corrects " + formatValue(settings_.erp) +
-                           " of the error per step";
-  WorldSettings next = settings_;
+std::string springLine(const WorldSettings& settings) {
+  const SpringDamper spring = springDamperOf(settings.erp, settings.cfm, settings.step);
+  if (spring.rigid)
+    return "constraints rigid (CFM 0): no spring; ERP corrects " + formatValue(settings.erp) + " of the error per step";
+  WorldSettings next = settings;
   ParameterStepper::stepStepSize(next, +1);
   const ErpCfm keep = erpCfmFor(spring, next.step);
   std::ostringstream s;
-  s << "spring kp " << formatValue(spring.kp) << " N/m, damper kd " << formatValue(spring.kd)
-    << " N s/m; at step " << formatValue(next.step) << " keep them with ERP " << formatValue(keep.erp) << ", CFM "
-    << formatValue(keep.cfm);
+  s << "spring kp " << formatValue(spring.kp) << " N/m, damper kd " << formatValue(spring.kd) << " N s/m; at step "
+    << formatValue(next.step) << " keep them with ERP " << formatValue(keep.erp) << ", CFM " << formatValue(keep.cfm);
   return s.str();
 }
 
+// Every setting of the table on one line: "ERP 0.2  CFM 1e-06  step 0.001 s ...".
+std::string settingsLine(const WorldSettings& settings) {
+  std::string line;
+  for (const SettingSpec& spec : settingsTable()) {
+    if (!line.empty()) line += "   ";
+    line += std::string(spec.label) + ' ' + settingText(spec.id, settingValue(settings, spec.id));
+    if (*spec.unit) line += std::string(" ") + spec.unit;
+  }
+  return line;
+}
+
+// Simulated time to the step's precision, so a single step (O) shows.
+std::string timeText(double time, double step) {
+  const int decimals = std::max(2, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, time);
+  return text;
+}
+
+}  // namespace
+
 std::vector<std::string> AbstractWindow::hudLines() const {
   std::vector<std::string> lines;
+  if (hudMode_ == HudMode::Off) return lines;
+  const bool full = hudMode_ == HudMode::Full;
+  lines.push_back(title_ + (full ? "" : "   (F1 more, H keys, Tab panel)"));
+  lines.push_back(settingsLine(settings_));
   std::ostringstream s;
-  s << title_;
+  char rate[96];
+  std::snprintf(rate, sizeof rate, "FPS %.0f (%s)   real-time x%.2f", time_.recentFramesPerSecond(),
+                frameLimitName(time_.limit()), time_.recentRealTimeFactor());
+  s << rate << "   t=" << timeText(simulatedTime_, settings_.step) << " s   step " << steps_;
+  if (time_.paused()) s << "   PAUSED (P runs, O steps)";
   lines.push_back(s.str());
-  s.str("");
-  s << "ERP " << formatValue(settings_.erp) << "   CFM " << formatValue(settings_.cfm) << "   step "
-    << formatValue(settings_.step) << " s   F2 increment " << formatValue(stepper_.increment());
-  lines.push_back(s.str());
-  s.str("");
-  s << "solver " << (settings_.solver == Solver::QuickStep ? "dWorldQuickStep" : "dWorldStep") << "   iterations "
-    << settings_.iterations << "   SOR w " << formatValue(settings_.sor) << "   space " << spaceKindName(spaceKind_);
-  lines.push_back(s.str());
-  s.str("");
-  s << std::fixed << std::setprecision(0) << "FPS " << framesPerSecond_ << std::setprecision(2) << "   sim "
-    << simulatedTime_ << " s   real-time x" << realTimeFactor_;
-  lines.push_back(s.str());
-  s.str("");
-  s << "bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << contactsLastStep_;
-  lines.push_back(s.str());
-  s.str("");
-  s << (paused_ ? "PAUSED (P runs, O steps)" : "running") << "   time scale x" << formatValue(timeScale_)
-    << "   rewind , .  (" << timeline_.snapshotCount() << " snapshots)   H help";
-  lines.push_back(s.str());
-  lines.push_back(springLine());
-  if (const AbstractObject* object = draggedObject()) {
-    const dReal* v = dBodyGetLinearVel(object->getBody());
+  std::vector<std::string> sceneLines;
+  addHudLines(sceneLines);
+  if (!full) {
+    if (!sceneLines.empty()) lines.push_back(sceneLines.front());
+  } else {
     s.str("");
-    s << "dragging object #" << dragIndex_ << " (" << (object->shape() == Shape::Box ? "box" : "sphere") << ", "
-      << formatValue(object->mass()) << " kg), speed "
-      << formatValue(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) << " m/s";
+    s << "F2 increment " << formatValue(stepper_.increment()) << "   space " << spaceKindName(spaceKind_)
+      << "   bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << contactsLastStep_;
     lines.push_back(s.str());
+    s.str("");
+    s << "time scale x" << formatValue(time_.scale()) << "   rewind , .  (" << timeline().snapshotCount()
+      << " snapshots)   dropped steps " << time_.droppedSteps() << "   H help";
+    lines.push_back(s.str());
+    lines.push_back(springLine(settings_));
+    if (const AbstractObject* object = draggedObject()) {
+      const dReal* v = dBodyGetLinearVel(object->getBody());
+      s.str("");
+      s << "dragging object #" << drag_.index() << " (" << (object->shape() == Shape::Box ? "box" : "sphere") << ", "
+        << formatValue(object->mass()) << " kg), speed "
+        << formatValue(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) << " m/s";
+      lines.push_back(s.str());
+    }
+    lines.insert(lines.end(), sceneLines.begin(), sceneLines.end());
   }
-  addHudLines(lines);
-  if (!notice_.empty() && wallSeconds_ < noticeUntil_) lines.push_back(notice_);
+  if (!failure_.empty()) lines.push_back(failure_);
+  const std::string current = notice();
+  if (!current.empty() && current != failure_) lines.push_back(current);
   for (const auto& message : OdeMessages::recent()) lines.push_back(message);
   return lines;
 }

@@ -1,147 +1,145 @@
-// AbstractWindow, input: the key table and its dispatch, the timeline of
-// recorded inputs, the time and view keys, and the mouse drag.
+// AbstractWindow, input: the key table and its dispatch, the panel's
+// changes, the timeline of recorded inputs, the time and view keys, and the
+// mouse drag. Keys, panel and replay meet in applyEvent().
 #include <algorithm>
-#include <cstdio>
-#include <sstream>
 
 #include "AbstractWindow.h"
 #include "FormatValue.h"
-#include "MeasurementLog.h"
+#include "OdeMessages.h"
 
 namespace odelab {
 
-namespace {
-constexpr double MIN_TIME_SCALE = 1.0 / 32.0;
-constexpr double MAX_TIME_SCALE = 8.0;
-}  // namespace
+void AbstractWindow::bindKey(SDL_Keycode key, std::string keyName, std::string description,
+                             std::function<void(int)> action) {
+  keys_.bind({key, std::move(keyName), std::move(description), std::move(action), true});
+}
 
 void AbstractWindow::bindViewKey(SDL_Keycode key, std::string keyName, std::string description,
                                  std::function<void(int)> action) {
-  bindKey(key, std::move(keyName), std::move(description), std::move(action));
-  keyBindings_.back().recorded = false;
+  keys_.bind({key, std::move(keyName), std::move(description), std::move(action), false});
 }
 
-void AbstractWindow::bindKey(SDL_Keycode key, std::string keyName, std::string description,
-                             std::function<void(int)> action) {
-  // A scene binding replaces a shared one on the same key.
-  keyBindings_.erase(std::remove_if(keyBindings_.begin(), keyBindings_.end(),
-                                    [key](const KeyBinding& b) { return b.key == key; }),
-                     keyBindings_.end());
-  keyBindings_.push_back({key, std::move(keyName), std::move(description), std::move(action)});
+void AbstractWindow::addParameter(SceneParameter parameter) {
+  rewind_.keep(*parameter.value);
+  parameters_.add(std::move(parameter));
 }
 
 bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
-  for (const auto& binding : keyBindings_) {
-    if (binding.key != key) continue;
-    if (!binding.recorded || replaying_) {
-      binding.action(shift ? -1 : +1);
-      return true;
-    }
-    // A recorded key goes on the timeline, unless it began a new run (R).
-    const long long epochBefore = epoch_;
-    lastChange_.clear();
-    binding.action(shift ? -1 : +1);
-    if (epoch_ == epochBefore) {
-      TimelineEvent event;
-      event.step = steps_;
-      event.kind = TimelineEvent::Kind::Key;
-      event.key = key;
-      event.shift = shift;
-      recordEvent(event);
-    }
-    logAction((shift ? "Shift+" : "") + binding.keyName + ": " +
-              (lastChange_.empty() ? binding.description : lastChange_));
+  const KeyBinding* binding = keys_.find(key);
+  if (!binding) return false;
+  if (!binding->recorded || rewind_.replaying()) {
+    binding->action(shift ? -1 : +1);
     return true;
   }
-  return false;
+  // A recorded key goes on the timeline, unless it began a new run (R).
+  const long long epochBefore = rewind_.epoch();
+  const std::string name = (shift ? "Shift+" : "") + binding->keyName;
+  const std::string description = binding->description;
+  binding->action(shift ? -1 : +1);
+  if (rewind_.epoch() == epochBefore) {
+    TimelineEvent event;
+    event.step = steps_;
+    event.kind = TimelineEvent::Kind::Key;
+    event.key = key;
+    event.shift = shift;
+    rewind_.record(event);
+  }
+  // Setting keys log their own change (reportSetting); others their description.
+  if (!settingKey(key)) logAction(name + ": " + description);
+  return true;
 }
 
-void AbstractWindow::runBinding(SDL_Keycode key, bool shift) {
-  for (const auto& binding : keyBindings_)
-    if (binding.key == key) {
-      binding.action(shift ? -1 : +1);
-      return;
-    }
+bool AbstractWindow::settingKey(SDL_Keycode key) {
+  for (const SettingSpec& spec : settingsTable())
+    if (spec.key == key) return true;
+  return key == SDLK_F2;
 }
 
-void AbstractWindow::recordEvent(TimelineEvent event) {
-  if (!replaying_) timeline_.record(event);
+void AbstractWindow::changeSetting(SettingId id, double value) {
+  TimelineEvent event;
+  event.step = steps_;
+  event.kind = TimelineEvent::Kind::Setting;
+  event.index = static_cast<int>(id);
+  event.value = value;
+  recordAndApply(event);
+}
+
+void AbstractWindow::changeParameter(int index, double value) {
+  if (!parameters_.valid(index)) return;
+  TimelineEvent event;
+  event.step = steps_;
+  event.kind = TimelineEvent::Kind::Parameter;
+  event.index = index;
+  event.value = value;
+  recordAndApply(event);
+}
+
+void AbstractWindow::recordAndApply(const TimelineEvent& event) {
+  applyEvent(event);
+  rewind_.record(event);
 }
 
 void AbstractWindow::applyEvent(const TimelineEvent& event) {
   switch (event.kind) {
     case TimelineEvent::Kind::Key:
-      runBinding(event.key, event.shift);
+      if (const KeyBinding* binding = keys_.find(event.key)) binding->action(event.shift ? -1 : +1);
       break;
     case TimelineEvent::Kind::Drag:
-      dragIndex_ = event.objectIndex < static_cast<int>(objects_.size()) ? event.objectIndex : -1;
-      std::copy(event.grab, event.grab + 3, dragGrab_);
-      std::copy(event.target, event.target + 3, dragTarget_);
-      break;
     case TimelineEvent::Kind::Release:
-      dragIndex_ = -1;
+      drag_.apply(event, static_cast<int>(objects_.size()));
       break;
+    case TimelineEvent::Kind::Setting:
+      reportSetting(assignSetting(settings_, static_cast<SettingId>(event.index), event.value));
+      break;
+    case TimelineEvent::Kind::Parameter: {
+      const std::string change = parameters_.set(event.index, event.value);
+      if (change.empty()) break;
+      logAction("panel: " + change);
+      notify("t=" + formatValue(simulatedTime_) + " s: " + change);
+      onParameterChanged(parameters_.all()[event.index]);
+      break;
+    }
   }
+}
+
+// Every setting change, from a key, the panel or a replay, ends here.
+void AbstractWindow::reportSetting(const SettingChange& change) {
+  if (!change.changed()) return;
+  logAction(change.text());
+  applySettings(change.text());
 }
 
 void AbstractWindow::logAction(const std::string& text) {
-  // The run log exists for windowed sessions, where a person presses keys.
-  if (options_.headless || runLogFailed_) return;
-  if (!runLog_) {
-    const std::string path = joinPath(options_.outDir, programName() + "_run_log.txt");
-    runLog_ = std::fopen(path.c_str(), "w");
-    if (!runLog_) {
-      runLogFailed_ = true;
-      notify("cannot write the run log '" + path + "'");
-      return;
-    }
-    std::fprintf(runLog_, "# %s: inputs that changed the simulation, with their simulated time\n", title_.c_str());
-  }
-  std::fprintf(runLog_, "t=%.6g s (step %lld): %s\n", simulatedTime_, steps_, text.c_str());
-  std::fflush(runLog_);
+  // The run log exists for windowed sessions, where a person acts; a replay
+  // repeats what is logged already.
+  if (options_.headless || rewind_.replaying()) return;
+  const std::string error = runLog_.write(simulatedTime_, steps_, text);
+  if (!error.empty()) notify(error);
 }
 
-void AbstractWindow::stepSetting(const char* what, const std::function<void()>& change) {
-  const WorldSettings before = settings_;
-  change();
-  std::ostringstream text;
-  auto describe = [&](double from, double to) { text << what << ' ' << formatValue(from) << " -> " << formatValue(to); };
-  const std::string name = what;
-  if (name == "ERP") describe(before.erp, settings_.erp);
-  else if (name == "CFM") describe(before.cfm, settings_.cfm);
-  else if (name == "iterations") describe(before.iterations, settings_.iterations);
-  else if (name == "SOR w") describe(before.sor, settings_.sor);
-  else if (name == "step") describe(before.step, settings_.step);
-  else if (name == "solver") text << "solver " << solverName(before.solver) << " -> " << solverName(settings_.solver);
-  applySettings(text.str());
+void AbstractWindow::bindSetting(const SettingSpec& spec) {
+  const SettingId id = spec.id;
+  bindKey(spec.key, spec.keyName, spec.keyHelp,
+          [this, id](int d) { reportSetting(stepSetting(settings_, id, d, stepper_)); });
 }
 
 void AbstractWindow::bindSharedKeys() {
-  bindKey(SDLK_ESCAPE, "Esc", "quit", [this](int) { quitRequested_ = true; });
   bindKey(SDLK_r, "R", "reset the scene to its initial state", [this](int) {
     reset();
     notify("scene reset");
   });
-  bindKey(SDLK_F1, "F1", "HUD on / off", [this](int) { hudVisible_ = !hudVisible_; });
+  bindViewKey(SDLK_F1, "F1", "HUD: compact / full / off", [this](int) {
+    hudMode_ = hudMode_ == HudMode::Compact ? HudMode::Full
+               : hudMode_ == HudMode::Full  ? HudMode::Off
+                                            : HudMode::Compact;
+  });
   bindKey(SDLK_F2, "F2", "choose the increment used by F3 / F4 (1e-6 ... 0.1)", [this](int d) {
     stepper_.cycleIncrement(d);
-    applySettings("F2 increment " + formatValue(stepper_.increment()));
+    const std::string change = "F2 increment " + formatValue(stepper_.increment());
+    logAction(change);
+    applySettings(change);
   });
-  bindKey(SDLK_F3, "F3", "ERP up by the increment (Shift: down), within [0, 1]",
-          [this](int d) { stepSetting("ERP", [&] { stepper_.stepErp(settings_, d); }); });
-  bindKey(SDLK_F4, "F4", "CFM up by the increment (Shift: down), within [0, 1]",
-          [this](int d) { stepSetting("CFM", [&] { stepper_.stepCfm(settings_, d); }); });
-  bindKey(SDLK_F6, "F6", "QuickStep iterations up (Shift: down): 1, 2, 3, 5, 8, 10, 15, 20, 30, 50 ... 1000",
-          [this](int d) { stepSetting("iterations", [&] { ParameterStepper::stepIterations(settings_, d); }); });
-  bindKey(SDLK_F7, "F7", "SOR relaxation w up by 0.05 (Shift: down), within [0.05, 1.95]",
-          [this](int d) { stepSetting("SOR w", [&] { ParameterStepper::stepSor(settings_, d); }); });
-  bindKey(SDLK_F8, "F8", "step size up (Shift: down): 1e-5, 2e-5, 5e-5 ... 0.1 s",
-          [this](int d) { stepSetting("step", [&] { ParameterStepper::stepStepSize(settings_, d); }); });
-  bindKey(SDLK_F9, "F9", "switch solver: dWorldQuickStep / dWorldStep", [this](int) {
-    stepSetting("solver", [&] {
-      settings_.solver = settings_.solver == Solver::QuickStep ? Solver::WorldStep : Solver::QuickStep;
-    });
-  });
+  for (const SettingSpec& spec : settingsTable()) bindSetting(spec);
 }
 
 PickHit AbstractWindow::pickAt(const double origin[3], const double direction[3]) const {
@@ -149,77 +147,56 @@ PickHit AbstractWindow::pickAt(const double origin[3], const double direction[3]
 }
 
 void AbstractWindow::beginDrag(const PickHit& hit, const double target[3]) {
-  if (hit.objectIndex < 0 || hit.objectIndex >= static_cast<int>(objects_.size())) return;
-  const dBodyID body = objects_[hit.objectIndex]->getBody();
-  if (!body) return;
-  dVector3 local;
-  dBodyGetPosRelPoint(body, hit.point[0], hit.point[1], hit.point[2], local);
   TimelineEvent event;
-  event.step = steps_;
-  event.kind = TimelineEvent::Kind::Drag;
-  event.objectIndex = hit.objectIndex;
-  std::copy(local, local + 3, event.grab);
-  std::copy(target, target + 3, event.target);
-  applyEvent(event);
-  recordEvent(event);
-  marks_.set("drag_start_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
+  if (!MouseDrag::beginEvent(objects_, hit, target, steps_, event)) return;
+  recordAndApply(event);
+  marks_.set("drag_start_distance", drag_.gap(objects_));
   logAction("drag " + std::to_string(hit.objectIndex));
 }
 
 void AbstractWindow::moveDrag(const double target[3]) {
-  if (dragIndex_ < 0) return;
   TimelineEvent event;
-  event.step = steps_;
-  event.kind = TimelineEvent::Kind::Drag;
-  event.objectIndex = dragIndex_;
-  std::copy(dragGrab_, dragGrab_ + 3, event.grab);
-  std::copy(target, target + 3, event.target);
-  applyEvent(event);
-  recordEvent(event);
+  if (!drag_.moveEvent(target, steps_, event)) return;
+  recordAndApply(event);
   // The gap the spring now has to close (the renderer's beginDrag targets
   // the grabbed point itself, so the gap opens with the first move).
-  if (const dBodyID body = objects_[dragIndex_]->getBody())
-    marks_.set("drag_start_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
+  marks_.set("drag_start_distance", drag_.gap(objects_));
 }
 
 void AbstractWindow::endDrag() {
-  if (dragIndex_ < 0) return;
-  if (const dBodyID body = objects_[dragIndex_]->getBody())
-    marks_.set("drag_end_distance", DragSpring::distance(body, dragGrab_, dragTarget_));
   TimelineEvent event;
-  event.step = steps_;
-  event.kind = TimelineEvent::Kind::Release;
-  applyEvent(event);
-  recordEvent(event);
+  if (!drag_.endEvent(steps_, event)) return;
+  marks_.set("drag_end_distance", drag_.gap(objects_));
+  recordAndApply(event);
   logAction("release");
 }
 
 const AbstractObject* AbstractWindow::draggedObject() const {
-  return dragIndex_ >= 0 ? objects_[dragIndex_].get() : nullptr;
+  return drag_.active() ? objects_[drag_.index()].get() : nullptr;
 }
 
 void AbstractWindow::bindTimeAndViewKeys() {
-  bindViewKey(SDLK_p, "P", "pause / resume", [this](int) { paused_ = !paused_; });
+  bindViewKey(SDLK_p, "P", "pause / resume", [this](int) { time_.setPaused(!time_.paused()); });
   bindViewKey(SDLK_o, "O", "advance exactly one step (pauses first)", [this](int) {
-    paused_ = true;
-    if (!stepOnce()) {
-      const std::string reason = blowUpReason_;
-      reset();
-      notify(reason + "; scene reset");
+    time_.setPaused(true);
+    try {
+      if (!stepOnce()) recoverFrom(blowUpReason_);
+    } catch (const OdeError& error) {
+      stepThreading_ = nullptr;  // see advanceFrame()
+      recoverFrom(std::string("ODE error: ") + error.what());
     }
   });
-  bindViewKey(SDLK_MINUS, "-", "slower: halve the time scale (down to 1/32)",
-              [this](int) { timeScale_ = std::max(MIN_TIME_SCALE, timeScale_ * 0.5); });
+  bindViewKey(SDLK_MINUS, "-", "slower: halve the time scale (down to 1/32)", [this](int) { time_.slower(); });
   bindViewKey(SDLK_EQUALS, "=", "faster: double the time scale (up to 8x, as far as the machine keeps up)",
-              [this](int) { timeScale_ = std::min(MAX_TIME_SCALE, timeScale_ * 2.0); });
+              [this](int) { time_.faster(); });
   bindViewKey(SDLK_COMMA, ",", "rewind to the previous snapshot (every 0.25 s of simulated time) and pause", [this](int) {
-    const long long target = std::max(0LL, timeline_.previousSnapshot(steps_));
+    const long long target = std::max(0LL, rewind_.timeline().previousSnapshot(steps_));
     replayTo(target);
     notify("rewound to t=" + formatValue(simulatedTime_) + " s");
   });
   bindViewKey(SDLK_PERIOD, ".", "forward to the next snapshot, replaying what was recorded, and pause", [this](int) {
-    const long long target = timeline_.nextSnapshot(steps_);
-    paused_ = true;
+    const long long target = rewind_.timeline().nextSnapshot(steps_);
+    time_.setPaused(true);
     if (target < 0) {
       notify("no later snapshot: press P to run on");
       return;
@@ -228,6 +205,7 @@ void AbstractWindow::bindTimeAndViewKeys() {
     }
     notify("forward to t=" + formatValue(simulatedTime_) + " s");
   });
+  bindViewKey(SDLK_RETURN, "Enter", "dismiss the error message", [this](int) { dismissFailure(); });
   bindViewKey(SDLK_h, "H", "help: this key list on / off", [this](int) { viewFlags_.help = !viewFlags_.help; });
   bindViewKey(SDLK_l, "L", "live plot of the scene's measurement on / off",
               [this](int) { viewFlags_.plot = !viewFlags_.plot; });
@@ -247,13 +225,11 @@ std::vector<std::string> AbstractWindow::helpLines() const {
       "left mouse   on a body: drag it with a spring; elsewhere: toggle mouse-look",
       "W/S/A/D      move the camera forward / back / left / right along the view",
       "mouse wheel  move the camera forward / back, 0.5 m a notch",
+      "Tab          control panel on / off",
       "Shift        reverses every F-key",
+      "Esc          quit",
   };
-  for (const auto& binding : keyBindings_) {
-    std::string name = binding.keyName;
-    name.resize(std::max<size_t>(name.size(), 12), ' ');
-    lines.push_back(name + " " + binding.description);
-  }
+  for (const std::string& line : keys_.helpLines()) lines.push_back(line);
   return lines;
 }
 

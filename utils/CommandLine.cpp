@@ -53,6 +53,25 @@ CLI::Validator finiteRange(double min, double max) {
       "in " + range);
 }
 
+CLI::Validator integerRange(int min, int max) {
+  const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  return CLI::Validator(
+      [min, max, range](std::string& text) -> std::string {
+        long long value = 0;
+        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a whole number";
+        if (value < min || value > max) return "'" + text + "' is outside " + range;
+        return {};
+      },
+      "in " + range);
+}
+
+double settingNumber(SettingId id, const std::string& text) {
+  if (id == SettingId::Solver) return text == "step" ? 1.0 : 0.0;
+  double value = 0;
+  CLI::detail::lexical_cast(text, value);  // checked by the option's validator first
+  return value;
+}
+
 CLI::Validator positive(double max) {
   return CLI::Validator(
       [max](std::string& text) -> std::string {
@@ -70,29 +89,20 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
   app.add_option("--seconds", options.seconds,
                  "simulated seconds to run (headless default: the scene's; window: quit after, default never)")
       ->check(positive(1e7));
-  app.add_option("--step", settings.step, "simulation step size in seconds")
-      ->check(finiteRange(ranges::STEP.min, ranges::STEP.max))
-      ->capture_default_str();
-  app.add_option("--erp", settings.erp, "global error reduction parameter")
-      ->check(finiteRange(ranges::ERP.min, ranges::ERP.max))
-      ->capture_default_str();
-  app.add_option("--cfm", settings.cfm, "global constraint force mixing")
-      ->check(finiteRange(ranges::CFM.min, ranges::CFM.max))
-      ->capture_default_str();
-  app.add_option("--iterations", settings.iterations, "QuickStep iterations")
-      ->check(CLI::Range(static_cast<int>(ranges::ITERATIONS.min), static_cast<int>(ranges::ITERATIONS.max)))
-      ->capture_default_str();
-  app.add_option("--sor", settings.sor, "QuickStep SOR over-relaxation w")
-      ->check(finiteRange(ranges::SOR.min, ranges::SOR.max))
-      ->capture_default_str();
-  app.add_option_function<std::string>(
-         "--solver",
-         [&settings](const std::string& value) {
-           settings.solver = value == "step" ? Solver::WorldStep : Solver::QuickStep;
-         },
-         "quick (dWorldQuickStep) or step (dWorldStep)")
-      ->check(CLI::IsMember({"quick", "step"}))
-      ->default_str(solverName(settings.solver));
+  // The world settings, from the same table as the F-keys and the panel.
+  for (const SettingSpec& spec : settingsTable()) {
+    const SettingId id = spec.id;
+    CLI::Option* option = app.add_option_function<std::string>(
+        spec.option, [&settings, id](const std::string& text) { setSettingValue(settings, id, settingNumber(id, text)); },
+        spec.optionHelp);
+    option->default_str(settingText(id, settingValue(settings, id)));
+    if (id == SettingId::Solver)
+      option->check(CLI::IsMember({"quick", "step"}));
+    else if (spec.integer)
+      option->check(integerRange(static_cast<int>(spec.range->min), static_cast<int>(spec.range->max)));
+    else
+      option->check(finiteRange(spec.range->min, spec.range->max));
+  }
   app.add_option("--seed", options.seed, "seed for every random choice of the scene and for ODE's dRandSetSeed")
       ->capture_default_str();
   app.add_option("--out-dir", options.outDir, "folder for output files such as Test2_output.txt")
@@ -114,6 +124,30 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
   app.add_option("--height", options.height, "window height in pixels")
       ->check(CLI::Range(64, 16384))
       ->capture_default_str();
+  addWindowOptions(app, options);
+}
+
+void addWindowOptions(CLI::App& app, RunOptions& options) {
+  app.add_option("--max-frame-time", options.maxFrameTime,
+                 "window: most real time one frame may advance the simulation, s (the thesis's loop: 0.01)")
+      ->check(finiteRange(1e-4, 10.0))
+      ->capture_default_str();
+  app.add_option("--max-fps", options.maxFps, "window: frame cap per second; 0: none")
+      ->check(finiteRange(0.0, 1000.0))
+      ->capture_default_str();
+  app.add_flag("!--no-vsync", options.vsync, "window: do not wait for the display's refresh");
+  app.add_option("--text-size", options.textSize, "window: HUD text height in pixels; 0: follows the window height")
+      ->check(CLI::Range(0, 200))
+      ->capture_default_str();
+  app.add_option_function<std::string>(
+         "--hud",
+         [&options](const std::string& value) {
+           options.hud = value == "full" ? HudMode::Full : value == "off" ? HudMode::Off : HudMode::Compact;
+         },
+         "window: HUD compact, full or off (F1 cycles)")
+      ->check(CLI::IsMember({"compact", "full", "off"}))
+      ->default_str("compact");
+  app.add_flag("!--no-panel", options.panel, "window: start with the control panel hidden (Tab shows it)");
 }
 
 void rejectEmptyValues(CLI::App& app) {

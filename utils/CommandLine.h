@@ -24,11 +24,18 @@ namespace cli {
 CLI::Validator finiteRange(double min, double max);
 // Finite and strictly above zero, at most `max`.
 CLI::Validator positive(double max = 1e12);
+// A whole number within [min, max].
+CLI::Validator integerRange(int min, int max);
+// A checked option value of a setting as a number (the solver: 0 or 1).
+double settingNumber(SettingId id, const std::string& text);
 
 // Adds --headless, --seconds, --step, --erp, --cfm, --iterations, --sor,
-// --solver, --seed, --out-dir, --metrics-json, --screenshot, --frames,
-// --shader-dir, --font, --width, --height.
+// --solver (the settings table), --seed, --out-dir, --metrics-json,
+// --screenshot, --frames, --shader-dir, --font, --width, --height and the
+// window options below.
 void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& settings);
+// --max-frame-time, --max-fps, --no-vsync, --text-size, --hud, --no-panel.
+void addWindowOptions(CLI::App& app, RunOptions& options);
 
 // Makes every option that takes a value refuse an empty one ("--seed=").
 // Call after every option is added.

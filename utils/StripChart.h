@@ -16,7 +16,16 @@ class StripChart {
     double value;
   };
 
-  void clear() { samples_.clear(); }
+  void clear() {
+    samples_.clear();
+    changes_.clear();
+  }
+  // A setting changed at `time`: the plot draws a mark there.
+  void markChange(double time) {
+    changes_.push_back(time);
+    if (changes_.size() > CAPACITY) changes_.pop_front();
+  }
+  const std::deque<double>& changes() const { return changes_; }
   void add(double time, double value) {
     samples_.push_back({time, value});
     if (samples_.size() > CAPACITY) samples_.pop_front();
@@ -26,6 +35,7 @@ class StripChart {
 
  private:
   std::deque<Sample> samples_;
+  std::deque<double> changes_;
 };
 
 }  // namespace odelab

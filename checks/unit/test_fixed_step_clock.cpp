@@ -14,10 +14,19 @@ TEST(FixedStepClock, RunsWholeStepsAndCarriesTheRemainder) {
 }
 
 TEST(FixedStepClock, ClampsLongFramesToMaximumElapsedTime) {
-  FixedStepClock clock;
+  FixedStepClock clock(FixedStepClock::THESIS_MAXIMUM_ELAPSED_TIME);
   // A 1 s hitch runs only 1/100 s of steps: 10 steps of 1 ms.
   EXPECT_EQ(clock.advance(1.0, 0.001), 10);
   EXPECT_LT(clock.timeCache(), 0.001);
+}
+
+TEST(FixedStepClock, DefaultClampIsAQuarterSecond) {
+  FixedStepClock clock;
+  // A 1 s hitch runs 0.25 s of steps (with 1e-12 of slack for rounding).
+  EXPECT_NEAR(clock.advance(1.0, 0.001), 250, 1);
+  // An ordinary frame is not clamped at all.
+  clock.reset();
+  EXPECT_NEAR(clock.advance(0.05, 0.001), 50, 1);
 }
 
 TEST(FixedStepClock, StepLongerThanAFrameWaitsForEnoughTime) {
@@ -37,6 +46,14 @@ TEST(FixedStepClock, IgnoresNegativeElapsedAndResets) {
 
 TEST(FixedStepClock, SixtyFramesOfOneSixtiethRunOneSecondOfSteps) {
   FixedStepClock clock;
+  int steps = 0;
+  for (int frame = 0; frame < 60; ++frame) steps += clock.advance(1.0 / 60.0, 0.001);
+  // The default clamp leaves a 60 Hz frame whole: real time.
+  EXPECT_NEAR(steps, 1000, 1);
+}
+
+TEST(FixedStepClock, TheThesisClampRunsSixtyHertzAtSixTenthsOfRealTime) {
+  FixedStepClock clock(FixedStepClock::THESIS_MAXIMUM_ELAPSED_TIME);
   int steps = 0;
   for (int frame = 0; frame < 60; ++frame) steps += clock.advance(1.0 / 60.0, 0.001);
   // Each 16.7 ms frame is clamped to 10 ms, so 60 frames give 0.6 s of steps.

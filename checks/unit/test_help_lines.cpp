@@ -23,8 +23,8 @@ class KeyScene : public AbstractWindow {
 TEST(HelpLines, ListEveryBinding) {
   KeyScene scene;
   const std::vector<std::string> lines = scene.helpLines();
-  ASSERT_FALSE(scene.keyBindings().empty());
-  for (const KeyBinding& binding : scene.keyBindings()) {
+  ASSERT_FALSE(scene.keys().bindings().empty());
+  for (const KeyBinding& binding : scene.keys().bindings()) {
     bool found = false;
     for (const std::string& line : lines)
       found = found || (line.rfind(binding.keyName + " ", 0) == 0 && line.find(binding.description) != std::string::npos);

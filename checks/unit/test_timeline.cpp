@@ -67,7 +67,7 @@ TEST(Timeline, ReplayReproducesKeysSettingsAndDragsBitForBit) {
 
   // From an earlier snapshot, running on follows the same motion.
   scene.replayTo(250);
-  EXPECT_TRUE(scene.paused());
+  EXPECT_TRUE(scene.time().paused());
   stepTo(scene, 800);
   EXPECT_EQ(scene.stateHash(), firstPass);
 }

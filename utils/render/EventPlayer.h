@@ -28,6 +28,9 @@ class EventPlayer {
 
   // Pushes the events of `frame` (frames count from 1).
   void pushDue(long long frame);
+  // Whether the script has events still to push: while it has, frames are
+  // counted as the script expects and the window never idles.
+  bool playing() const { return next_ < events_.size(); }
   // If `event` is a mark of this script: records it, calls `onMark` with its
   // label, and returns true.
   bool handle(const SDL_Event& event, AbstractWindow& scene, const std::function<void(const std::string&)>& onMark);

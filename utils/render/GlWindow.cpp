@@ -41,7 +41,7 @@ GlWindow::VideoSubsystem::VideoSubsystem() {
   }
 }
 
-GlWindow::GlWindow(const std::string& title, int width, int height) {
+GlWindow::GlWindow(const std::string& title, int width, int height, bool vsync) {
   const Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
   // Antialiased edges when the driver offers them; plain otherwise.
   for (int multisamples : {4, 0}) {
@@ -69,10 +69,10 @@ GlWindow::GlWindow(const std::string& title, int width, int height) {
     SDL_DestroyWindow(window_);
     throw RenderError("cannot load OpenGL functions (GLEW: " + reason + ")");
   }
-  // No vsync: the thesis's loop clamps each frame to MAXIMUM_ELAPSED_TIME
-  // (10 ms), so a 60 Hz vsync would run the simulation at 0.6x real time.
-  // The frame loop paces itself instead (see FRAME_PERIOD in WindowFrontend).
-  SDL_GL_SetSwapInterval(0);
+  // Vsync where the driver offers it; the frame loop's cap paces frames
+  // where it does not (a software renderer under Xvfb has no refresh).
+  vsync_ = vsync && SDL_GL_SetSwapInterval(1) == 0;
+  if (!vsync_) SDL_GL_SetSwapInterval(0);
   updateDrawableSize();
 }
 

@@ -20,7 +20,8 @@ class NoDisplayError : public RenderError {
 class GlWindow {
  public:
   // Throws NoDisplayError with SDL's reason, or RenderError if GLEW fails.
-  GlWindow(const std::string& title, int width, int height);
+  // `vsync`: ask the driver to wait for the display's refresh at each swap.
+  GlWindow(const std::string& title, int width, int height, bool vsync = true);
   ~GlWindow();
   GlWindow(const GlWindow&) = delete;
   GlWindow& operator=(const GlWindow&) = delete;
@@ -30,6 +31,7 @@ class GlWindow {
   int width() const { return width_; }
   int height() const { return height_; }
   void swap() { SDL_GL_SwapWindow(window_); }
+  bool vsync() const { return vsync_; }  // granted by the driver
   // Size in window coordinates, those of mouse events (differs from the
   // drawable size on high-DPI screens).
   void windowSize(int& width, int& height) const { SDL_GetWindowSize(window_, &width, &height); }
@@ -43,6 +45,7 @@ class GlWindow {
 
   VideoSubsystem video_;
   SDL_Window* window_ = nullptr;
+  bool vsync_ = false;
   SDL_GLContext context_ = nullptr;
   int width_ = 0, height_ = 0;
 };

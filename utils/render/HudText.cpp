@@ -19,6 +19,52 @@ TTF_Font* openFont(const std::string& path) {
   return font;
 }
 
+int textWidth(TTF_Font* font, const std::string& text) {
+  int w = 0, h = 0;
+  return TTF_SizeUTF8(font, text.c_str(), &w, &h) == 0 ? w : 0;
+}
+
+// Cuts `word` so that it and "..." fit in `maxWidth` (whole UTF-8 characters).
+std::string elide(TTF_Font* font, std::string word, int maxWidth) {
+  while (!word.empty() && textWidth(font, word + "...") > maxWidth) {
+    do word.pop_back();
+    while (!word.empty() && (static_cast<unsigned char>(word.back()) & 0xC0) == 0x80);
+    if (!word.empty() && (static_cast<unsigned char>(word.back()) & 0xC0) == 0xC0) word.pop_back();
+  }
+  return word + "...";
+}
+
+// Greedy word wrap of every line to `maxWidth` pixels; continuation lines
+// are indented so they read as part of the line above.
+std::vector<std::string> wrapLines(TTF_Font* font, const std::vector<std::string>& lines, int maxWidth) {
+  if (maxWidth <= 0) return lines;
+  std::vector<std::string> out;
+  for (const std::string& line : lines) {
+    if (textWidth(font, line) <= maxWidth) {
+      out.push_back(line);
+      continue;
+    }
+    std::string current;
+    size_t start = 0;
+    while (start <= line.size()) {
+      size_t end = line.find(' ', start);
+      if (end == std::string::npos) end = line.size();
+      const std::string word = line.substr(start, end - start);
+      const std::string joined = current.empty() ? word : current + ' ' + word;
+      if (textWidth(font, joined) <= maxWidth) {
+        current = joined;
+      } else {
+        if (!current.empty()) out.push_back(current);
+        current = "   " + word;
+        if (textWidth(font, current) > maxWidth) current = elide(font, current, maxWidth);
+      }
+      start = end + 1;
+    }
+    if (!current.empty()) out.push_back(current);
+  }
+  return out;
+}
+
 struct SurfaceFreer {
   void operator()(SDL_Surface* surface) const { SDL_FreeSurface(surface); }
 };
@@ -46,8 +92,19 @@ HudText::HudText(const std::string& fontPath, const std::string& shaderDir)
 
 HudText::~HudText() { glDeleteVertexArrays(1, &emptyVertexArray_); }
 
-void HudText::prepare(TextBlock& block, const std::vector<std::string>& lines) {
-  if (block.prepared_ && lines == block.lines_) return;
+void HudText::setSizeFor(int pixels, int viewportHeight) {
+  const int wanted = pixels > 0 ? pixels : std::min(28, std::max(12, viewportHeight / 45));
+  if (wanted == pixels_) return;
+  if (TTF_SetFontSize(font_.get(), wanted) != 0) return;  // keeps the size it had
+  pixels_ = wanted;
+  ++generation_;
+}
+
+void HudText::prepare(TextBlock& block, const std::vector<std::string>& unwrapped, int maxWidth) {
+  if (block.prepared_ && unwrapped == block.lines_ && maxWidth == block.maxWidth_ &&
+      block.generation_ == generation_)
+    return;
+  const std::vector<std::string> lines = wrapLines(font_.get(), unwrapped, maxWidth - 2 * PADDING);
   // Render each line, then compose them onto one RGBA image whose bytes are
   // in R, G, B, A order whatever the machine's endianness (SDL_PIXELFORMAT_RGBA32).
   const int padding = block.boxAlpha_ > 0 ? PADDING : 0;
@@ -90,7 +147,9 @@ void HudText::prepare(TextBlock& block, const std::vector<std::string>& lines) {
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
   block.width_ = width;
   block.height_ = height;
-  block.lines_ = lines;
+  block.lines_ = unwrapped;
+  block.maxWidth_ = maxWidth;
+  block.generation_ = generation_;
   block.prepared_ = true;
 }
 
@@ -118,7 +177,7 @@ void HudText::drawAt(const TextBlock& block, int x, int y, int viewportWidth, in
 
 void HudText::draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight) {
   if (lines.empty()) return;
-  prepare(hud_, lines);
+  prepare(hud_, lines, viewportWidth - 2 * MARGIN);
   drawAt(hud_, MARGIN, MARGIN, viewportWidth, viewportHeight);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);

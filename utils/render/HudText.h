@@ -31,6 +31,8 @@ class TextBlock {
   int boxAlpha_;
   GLuint texture_ = 0;
   std::vector<std::string> lines_;
+  int maxWidth_ = 0;
+  int generation_ = -1;  // the HudText font size it was rendered with
   bool prepared_ = false;
   int width_ = 0, height_ = 0;
 };
@@ -45,12 +47,18 @@ class HudText {
   HudText(const HudText&) = delete;
   HudText& operator=(const HudText&) = delete;
 
-  // The HUD: `lines` in a box in the top-left corner.
+  // The HUD: `lines` in a box in the top-left corner, wrapped to the window.
   void draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight);
 
+  // Text height in pixels: `pixels`, or when 0 one 45th of the window's
+  // height within [12, 28] (16 at 720 rows). Re-renders blocks on a change.
+  void setSizeFor(int pixels, int viewportHeight);
+
   // Renders `lines` into `block` unless it already shows them; then
-  // block.width() / height() give its size for placing it.
-  void prepare(TextBlock& block, const std::vector<std::string>& lines);
+  // block.width() / height() give its size for placing it. A line wider than
+  // `maxWidth` pixels (0: no limit) wraps at spaces; a word wider still is
+  // cut and ends in "...".
+  void prepare(TextBlock& block, const std::vector<std::string>& lines, int maxWidth = 0);
   // Draws a prepared block with its top-left corner at pixel (x, y) from
   // the window's top-left corner. Leaves depth testing off and blending on.
   void drawAt(const TextBlock& block, int x, int y, int viewportWidth, int viewportHeight);
@@ -73,6 +81,8 @@ class HudText {
   GLint rectUniform_, viewportUniform_, textUniform_;
   GLuint emptyVertexArray_ = 0;  // core profile needs one bound even without attributes
   TextBlock hud_;
+  int pixels_ = 0;
+  int generation_ = 0;
 };
 
 }  // namespace odelab

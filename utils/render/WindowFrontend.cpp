@@ -25,39 +25,15 @@ namespace odelab {
 
 namespace {
 
-const double FPS_AVERAGING_SECONDS = 0.5;
-// Frames are paced to at most 125 per second: short enough that no frame
-// exceeds the fixed-step loop's 10 ms clamp (so the simulation keeps real
-// time on a machine that can draw that fast), long enough not to spin.
-const double FRAME_PERIOD = 0.008;
+// A paused window with nothing to show redraws only when an event comes,
+// or after this long (the notices time out).
+const int IDLE_WAIT_MS = 250;
 // With --record every frame stands for 1/60 s of simulated time (times the
 // time scale), however long writing it takes, so the frames make a 60 fps
-// video that plays in real time. It is fed to the scene in two halves, each
-// within the fixed-step loop's 10 ms clamp.
+// video that plays in real time.
 const double RECORD_FRAME_SECONDS = 1.0 / 60.0;
 const double NOTICE_SECONDS = 4.0;
 const int MARGIN = 10;
-
-// Frames per second, averaged over about half a second so the HUD is readable.
-class FrameRateMeter {
- public:
-  // Returns true when a new average is ready in fps().
-  bool addFrame(double seconds) {
-    ++frames_;
-    seconds_ += seconds;
-    if (seconds_ < FPS_AVERAGING_SECONDS) return false;
-    fps_ = frames_ / seconds_;
-    frames_ = 0;
-    seconds_ = 0.0;
-    return true;
-  }
-  double fps() const { return fps_; }
-
- private:
-  int frames_ = 0;
-  double seconds_ = 0.0;
-  double fps_ = 0.0;
-};
 
 // Totals of the run, printed at exit and at each scripted mark (the
 // benchmark reads them): frames, real seconds, and the part of them spent
@@ -123,9 +99,12 @@ class FrameLoop {
   GlWindow& window_;
   Views& views_;
   EventPlayer& player_;
+  bool idle() const;
+  double seconds(Uint64 from, Uint64 to) const { return static_cast<double>(to - from) / ticksPerSecond_; }
+
   WindowInput input_;
-  FrameRateMeter meter_;
   FrameTotals totals_;
+  double ticksPerSecond_ = static_cast<double>(SDL_GetPerformanceFrequency());
   std::string notice_;
   double noticeUntil_ = 0.0;
 };
@@ -146,7 +125,7 @@ void FrameLoop::pollEvents(long long frame) {
 void FrameLoop::drawHelp(int width, int height) {
   std::vector<std::string> lines{scene_.title() + ": keys and mouse   (H closes this)", ""};
   for (const std::string& line : scene_.helpLines()) lines.push_back(line);
-  views_.text.prepare(views_.help, lines);
+  views_.text.prepare(views_.help, lines, width - 2 * MARGIN);
   const int x = std::max(MARGIN, (width - views_.help.width()) / 2);
   const int y = std::max(MARGIN, (height - views_.help.height()) / 2);
   views_.text.drawAt(views_.help, x, y, width, height);
@@ -154,7 +133,7 @@ void FrameLoop::drawHelp(int width, int height) {
 
 void FrameLoop::drawNotice(int width, int height) {
   if (notice_.empty() || totals_.seconds > noticeUntil_) return;
-  views_.text.prepare(views_.notice, {notice_});
+  views_.text.prepare(views_.notice, {notice_}, width - 2 * MARGIN);
   views_.text.drawAt(views_.notice, MARGIN, height - MARGIN - views_.notice.height(), width, height);
 }
 
@@ -164,7 +143,8 @@ void FrameLoop::draw() {
   glm::vec3 grabbed, target;
   const bool dragging = input_.dragLine(scene_, grabbed, target);
   views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
-  if (scene_.hudVisible()) views_.text.draw(scene_.hudLines(), width, height);
+  views_.text.setSizeFor(options_.textSize, height);
+  views_.text.draw(scene_.hudLines(), width, height);
   const ViewFlags& flags = scene_.viewFlags();
   if (flags.plot) views_.plot.draw(scene_.chart(), views_.text, width, height);
   if (flags.help) drawHelp(width, height);
@@ -200,30 +180,39 @@ void FrameLoop::recordFrame(long long frame) {
   saveScreenshot(joinPath(options_.recordDir, scene_.programName() + name), window_.width(), window_.height());
 }
 
+// Paused, with no script playing, no key flying the camera and no drag:
+// nothing changes until an event comes.
+bool FrameLoop::idle() const {
+  return scene_.time().paused() && !player_.playing() && !cameraKeysHeld() && !scene_.dragging() &&
+         options_.recordDir.empty() && options_.screenshot.empty();
+}
+
 int FrameLoop::run() {
   const bool screenshotRun = !options_.screenshot.empty();
   const bool recording = !options_.recordDir.empty();
   const int screenshotFrame = options_.frames > 0 ? options_.frames : 1;
-  const double ticksPerSecond = static_cast<double>(SDL_GetPerformanceFrequency());
+  // The frame cap, unless vsync already waits for the display.
+  const double period = options_.maxFps > 0 && !window_.vsync() ? 1.0 / options_.maxFps : 0.0;
   Uint64 previous = SDL_GetPerformanceCounter();
 
   for (long long frame = 1; !finished(scene_, options_); ++frame) {
+    if (idle()) SDL_WaitEventTimeout(nullptr, IDLE_WAIT_MS);
     const Uint64 start = SDL_GetPerformanceCounter();
     pollEvents(frame);
 
     const Uint64 now = SDL_GetPerformanceCounter();
-    const double elapsed = static_cast<double>(now - previous) / ticksPerSecond;
+    const double elapsed = seconds(previous, now);
     previous = now;
     moveCamera(scene_, elapsed);
+    const double simulatedBefore = scene_.simulatedTime();
+    const long long stepsBefore = scene_.steps();
     // An OdeError leaves through here; RAII cleans up.
-    if (recording) {
-      const double noBudget = std::numeric_limits<double>::infinity();
-      scene_.advanceFrame(RECORD_FRAME_SECONDS / 2, noBudget);
-      scene_.advanceFrame(RECORD_FRAME_SECONDS / 2, noBudget);
-    } else {
-      scene_.advanceFrame(elapsed);
-    }
-    if (meter_.addFrame(elapsed)) scene_.setFramesPerSecond(meter_.fps());
+    scene_.advanceFrame(recording ? RECORD_FRAME_SECONDS : elapsed,
+                        recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET);
+    const double stepping = seconds(now, SDL_GetPerformanceCounter());
+    // A reset or a rewind moves time back: only forward steps count.
+    const double advanced =
+        scene_.steps() > stepsBefore ? std::max(0.0, scene_.simulatedTime() - simulatedBefore) : 0.0;
 
     draw();
     // Read the back buffer before the swap leaves its contents undefined.
@@ -235,18 +224,17 @@ int FrameLoop::run() {
     ++totals_.frames;
     totals_.seconds += elapsed;
     totals_.longestFrame = std::max(totals_.longestFrame, elapsed);
+    if (!screenshotNow) window_.swap();  // a software renderer does much of its work here
+    const double busy = seconds(start, SDL_GetPerformanceCounter());
+    totals_.busySeconds += busy;
+    scene_.time().endFrame(elapsed, advanced, stepping, busy, period);
     if (screenshotNow) {
-      totals_.busySeconds += static_cast<double>(SDL_GetPerformanceCounter() - start) / ticksPerSecond;
       std::printf("screenshot: %s (%dx%d, frame %lld)\n", options_.screenshot.c_str(), window_.width(),
                   window_.height(), frame);
       printTotals("window", totals_);
       return exit_code::OK;
     }
-    // A software renderer does much of its work here, when the frame is flushed.
-    window_.swap();
-    totals_.busySeconds += static_cast<double>(SDL_GetPerformanceCounter() - start) / ticksPerSecond;
-    const double frameSeconds = static_cast<double>(SDL_GetPerformanceCounter() - now) / ticksPerSecond;
-    if (frameSeconds < FRAME_PERIOD) SDL_Delay(static_cast<Uint32>((FRAME_PERIOD - frameSeconds) * 1000.0));
+    if (busy < period) SDL_Delay(static_cast<Uint32>((period - busy) * 1000.0));
   }
   printTotals("window", totals_);
   return exit_code::OK;
@@ -280,7 +268,7 @@ int runWindow(AbstractWindow& scene, const RunOptions& options) {
 
   try {
     // Declared in this order so GL objects go before the context they live in.
-    GlWindow window(scene.title(), options.width, options.height);
+    GlWindow window(scene.title(), options.width, options.height, options.vsync);
     Views views(shaders.found, font.found);
     // Built only now that the window can run, so that a refused window run
     // (no display, unusable shaders or font) leaves no output file behind;

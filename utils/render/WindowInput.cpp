@@ -125,6 +125,11 @@ void moveCamera(AbstractWindow& scene, double frameSeconds) {
   scene.camera().move(forward * step, right * step);
 }
 
+bool cameraKeysHeld() {
+  const Uint8* keys = SDL_GetKeyboardState(nullptr);
+  return keys[SDL_SCANCODE_W] || keys[SDL_SCANCODE_S] || keys[SDL_SCANCODE_A] || keys[SDL_SCANCODE_D];
+}
+
 void syncMouseLook(const AbstractWindow& scene) {
   const SDL_bool wanted = scene.mouseLook() ? SDL_TRUE : SDL_FALSE;
   // May fail where relative mode is unsupported; the camera still turns by motion.

@@ -40,6 +40,8 @@ class WindowInput {
 // Flies the camera with W/S/A/D held, read from the keyboard state each
 // frame so movement is smooth rather than paced by key repeat.
 void moveCamera(AbstractWindow& scene, double frameSeconds);
+// Whether a camera key (W/S/A/D) is held: the window must keep drawing.
+bool cameraKeysHeld();
 
 // Keeps SDL's relative mouse mode (hidden, captured cursor) in step with the
 // scene's mouse-look flag, whoever changed it.

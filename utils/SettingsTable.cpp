@@ -1,0 +1,91 @@
+#include "SettingsTable.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "FormatValue.h"
+
+namespace odelab {
+
+const std::vector<SettingSpec>& settingsTable() {
+  static const std::vector<SettingSpec> table{
+      {SettingId::Erp, "ERP", "--erp", "", SDLK_F3, "F3", "ERP up by the increment (Shift: down), within [0, 1]",
+       "global error reduction parameter", &ranges::ERP, false, false},
+      {SettingId::Cfm, "CFM", "--cfm", "", SDLK_F4, "F4", "CFM up by the increment (Shift: down), within [0, 1]",
+       "global constraint force mixing", &ranges::CFM, true, false},
+      {SettingId::Iterations, "iterations", "--iterations", "", SDLK_F6, "F6",
+       "QuickStep iterations up (Shift: down): 1, 2, 3, 5, 8, 10, 15, 20, 30, 50 ... 1000", "QuickStep iterations",
+       &ranges::ITERATIONS, true, true},
+      {SettingId::Sor, "SOR w", "--sor", "", SDLK_F7, "F7", "SOR relaxation w up by 0.05 (Shift: down), within [0.05, 1.95]",
+       "QuickStep SOR over-relaxation w", &ranges::SOR, false, false},
+      {SettingId::Step, "step", "--step", "s", SDLK_F8, "F8", "step size up (Shift: down): 1e-5, 2e-5, 5e-5 ... 0.1 s",
+       "simulation step size in seconds", &ranges::STEP, true, false},
+      {SettingId::Solver, "solver", "--solver", "", SDLK_F9, "F9", "switch solver: dWorldQuickStep / dWorldStep",
+       "quick (dWorldQuickStep) or step (dWorldStep)", nullptr, false, true},
+  };
+  return table;
+}
+
+const SettingSpec& settingSpec(SettingId id) {
+  for (const SettingSpec& spec : settingsTable())
+    if (spec.id == id) return spec;
+  throw std::logic_error("settingSpec: no such setting");
+}
+
+double settingValue(const WorldSettings& s, SettingId id) {
+  switch (id) {
+    case SettingId::Erp: return s.erp;
+    case SettingId::Cfm: return s.cfm;
+    case SettingId::Iterations: return s.iterations;
+    case SettingId::Sor: return s.sor;
+    case SettingId::Step: return s.step;
+    case SettingId::Solver: return s.solver == Solver::QuickStep ? 0 : 1;
+  }
+  return 0;
+}
+
+void setSettingValue(WorldSettings& s, SettingId id, double value) {
+  if (std::isnan(value)) return;
+  const SettingSpec& spec = settingSpec(id);
+  if (spec.range) value = spec.range->clamp(value);
+  switch (id) {
+    case SettingId::Erp: s.erp = value; break;
+    case SettingId::Cfm: s.cfm = value; break;
+    case SettingId::Iterations: s.iterations = static_cast<int>(std::lround(value)); break;
+    case SettingId::Sor: s.sor = value; break;
+    case SettingId::Step: s.step = value; break;
+    case SettingId::Solver: s.solver = value < 0.5 ? Solver::QuickStep : Solver::WorldStep; break;
+  }
+}
+
+std::string settingText(SettingId id, double value) {
+  if (id == SettingId::Solver) return value < 0.5 ? "quick" : "step";
+  return formatValue(value);
+}
+
+std::string SettingChange::text() const {
+  return std::string(settingSpec(id).label) + ' ' + settingText(id, from) + " -> " + settingText(id, to);
+}
+
+SettingChange stepSetting(WorldSettings& s, SettingId id, int direction, const ParameterStepper& stepper) {
+  SettingChange change{id, settingValue(s, id), 0};
+  switch (id) {
+    case SettingId::Erp: stepper.stepErp(s, direction); break;
+    case SettingId::Cfm: stepper.stepCfm(s, direction); break;
+    case SettingId::Iterations: ParameterStepper::stepIterations(s, direction); break;
+    case SettingId::Sor: ParameterStepper::stepSor(s, direction); break;
+    case SettingId::Step: ParameterStepper::stepStepSize(s, direction); break;
+    case SettingId::Solver: s.solver = s.solver == Solver::QuickStep ? Solver::WorldStep : Solver::QuickStep; break;
+  }
+  change.to = settingValue(s, id);
+  return change;
+}
+
+SettingChange assignSetting(WorldSettings& s, SettingId id, double value) {
+  SettingChange change{id, settingValue(s, id), 0};
+  setSettingValue(s, id, value);
+  change.to = settingValue(s, id);
+  return change;
+}
+
+}  // namespace odelab

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <SDL2/SDL_keycode.h>
+
+#include <string>
+#include <vector>
+
+#include "WorldSettings.h"
+
+namespace odelab {
+
+// The world settings a user tunes, as one table: the F-keys, the command
+// line, the control panel, the HUD and the run log are all built from it,
+// so a setting's name, range and key are written once.
+enum class SettingId { Erp, Cfm, Iterations, Sor, Step, Solver };
+
+struct SettingSpec {
+  SettingId id;
+  const char* label;   // on the HUD, the panel and in change messages: "ERP"
+  const char* option;  // on the command line: "--erp"
+  const char* unit;    // "" or "s"
+  SDL_Keycode key;     // the thesis's F-key
+  const char* keyName;
+  const char* keyHelp;
+  const char* optionHelp;
+  const ParameterRange* range;  // nullptr for the solver (a choice of two)
+  bool logScale;                // the panel's slider: CFM and the step span decades
+  bool integer;
+};
+
+const std::vector<SettingSpec>& settingsTable();
+const SettingSpec& settingSpec(SettingId id);
+
+// A setting's value as a number (the solver: 0 QuickStep, 1 dWorldStep).
+double settingValue(const WorldSettings& settings, SettingId id);
+// Sets a value, clamped to the setting's range (integers rounded).
+void setSettingValue(WorldSettings& settings, SettingId id, double value);
+// "0.2", "20", "quick".
+std::string settingText(SettingId id, double value);
+
+// What one action did to a setting.
+struct SettingChange {
+  SettingId id;
+  double from, to;
+  bool changed() const { return from != to; }
+  std::string text() const;  // "ERP 0.2 -> 0.21"
+};
+
+// One F-key press: the next value by the F2 increment (ERP, CFM) or the
+// setting's ladder (iterations, SOR, step), or the other solver.
+SettingChange stepSetting(WorldSettings& settings, SettingId id, int direction, const ParameterStepper& stepper);
+// A typed or dragged value from the panel.
+SettingChange assignSetting(WorldSettings& settings, SettingId id, double value);
+
+}  // namespace odelab
