@@ -99,3 +99,10 @@ if(TARGET test5)
                     DEPENDS test5
                     USES_TERMINAL)
 endif()
+
+# The control panel drives the world through the settings table: a CFM typed
+# into its field reaches dWorldSetCFM, Test2_output.txt and the run log.
+add_test(NAME test2_window_panel_sets_cfm
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_panel_cfm.sh ${XVFB_RUN} $<TARGET_FILE:test2>
+                 $<TARGET_FILE:expect_metrics> ${CMAKE_CURRENT_SOURCE_DIR}/scripts/panel_cfm.events
+                 ${CMAKE_CURRENT_BINARY_DIR}/window_runs/panel_cfm)

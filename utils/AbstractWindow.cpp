@@ -396,6 +396,11 @@ Metrics AbstractWindow::metrics() const {
     m.set("window_failures", static_cast<double>(failures_));
   }
   m.set("dropped_steps", static_cast<double>(time_.droppedSteps()));
+  // Read back from the world: what a key or the panel set reached ODE.
+  if (world_) {
+    m.set("world_erp", dWorldGetERP(world_));
+    m.set("world_cfm", dWorldGetCFM(world_));
+  }
   m.set("bodies", bodyCount());
   m.set("disabled_bodies", disabledBodyCount());
   m.set("contacts", contactsLastStep_);

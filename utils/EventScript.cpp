@@ -149,11 +149,16 @@ std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& f
       if (words.size() != 3 || !isLabel(words[2]))
         fail("mark: expected '<frame> mark <label>', the label made of letters, digits and _ (at most 64)");
       event.label = words[2];
+    } else if (verb == "text") {
+      event.kind = ScriptEvent::Kind::Text;
+      // SDL carries typed text in events of at most 31 bytes.
+      if (words.size() != 3 || words[2].size() > 31) fail("text: expected '<frame> text <characters>', at most 31, no spaces");
+      event.label = words[2];
     } else if (verb == "quit") {
       event.kind = ScriptEvent::Kind::Quit;
       if (words.size() != 2) fail("quit: expected '<frame> quit'");
     } else {
-      fail("unknown event '" + verb + "' (key, down, move, up, wheel, resize, mark, quit)");
+      fail("unknown event '" + verb + "' (key, down, move, up, wheel, resize, mark, quit, text)");
     }
     for (int i = 0; i < repeat; ++i) events.push_back(event);
   }

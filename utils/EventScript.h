@@ -20,13 +20,14 @@ namespace odelab {
 //   <frame> resize <width> <height>                the window resized (SDL_SetWindowSize)
 //   <frame> mark <label>                           record metrics mark_<label>_steps, _sim_seconds, _hash
 //   <frame> quit                                   close the window, as the user would
+//   <frame> text <characters>                      type characters into the focused field (no spaces)
 //
 // Frames count from 1 (the first frame). Events of one frame run in the
 // order of the file; lines need not be in frame order. Key names are SDL's
 // (SDL_GetKeyFromName: "P", "F3", ",", "Escape"; one with a space is quoted:
 // "Left Shift"), case-insensitive.
 struct ScriptEvent {
-  enum class Kind { Key, Down, Move, Up, Wheel, Resize, Mark, Quit };
+  enum class Kind { Key, Down, Move, Up, Wheel, Resize, Mark, Quit, Text };
   enum class Button { Left, Middle, Right };
   long long frame = 1;
   Kind kind = Kind::Key;
@@ -39,7 +40,7 @@ struct ScriptEvent {
   // Down, Move, Up: window pixels from the top-left corner. Wheel: notches
   // right (x) and away from the user (y). Resize: the new size in pixels.
   int x = 0, y = 0;
-  std::string label;       // Mark
+  std::string label;       // Mark: the label; Text: the characters typed
   int line = 0;            // where it was written, for messages
 };
 

@@ -114,6 +114,12 @@ void EventPlayer::pushDue(long long frame) {
         event.type = SDL_QUIT;
         push(event);
         break;
+      case ScriptEvent::Kind::Text:
+        event.type = SDL_TEXTINPUT;
+        event.text.windowID = windowId_;
+        SDL_strlcpy(event.text.text, e.label.c_str(), sizeof event.text.text);
+        push(event);
+        break;
     }
   }
 }

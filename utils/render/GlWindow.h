@@ -32,6 +32,7 @@ class GlWindow {
   int height() const { return height_; }
   void swap() { SDL_GL_SwapWindow(window_); }
   bool vsync() const { return vsync_; }  // granted by the driver
+  void* glContext() const { return context_; }
   // Size in window coordinates, those of mouse events (differs from the
   // drawable size on high-DPI screens).
   void windowSize(int& width, int& height) const { SDL_GetWindowSize(window_, &width, &height); }

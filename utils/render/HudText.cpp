@@ -175,9 +175,9 @@ void HudText::drawAt(const TextBlock& block, int x, int y, int viewportWidth, in
   glBindVertexArray(0);
 }
 
-void HudText::draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight) {
+void HudText::draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight, int reservedRight) {
   if (lines.empty()) return;
-  prepare(hud_, lines, viewportWidth - 2 * MARGIN);
+  prepare(hud_, lines, std::max(80, viewportWidth - reservedRight - 2 * MARGIN));
   drawAt(hud_, MARGIN, MARGIN, viewportWidth, viewportHeight);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);

@@ -48,7 +48,8 @@ class HudText {
   HudText& operator=(const HudText&) = delete;
 
   // The HUD: `lines` in a box in the top-left corner, wrapped to the window.
-  void draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight);
+  // `reservedRight`: pixels at the right edge the HUD must leave free (the panel).
+  void draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight, int reservedRight = 0);
 
   // Text height in pixels: `pixels`, or when 0 one 45th of the window's
   // height within [12, 28] (16 at 720 rows). Re-renders blocks on a change.

@@ -12,6 +12,7 @@
 #include "../ExitCodes.h"
 #include "../MeasurementLog.h"
 #include "../ResourcePaths.h"
+#include "ControlPanel.h"
 #include "DebugDraw.h"
 #include "EventPlayer.h"
 #include "GlWindow.h"
@@ -63,12 +64,19 @@ bool finished(const AbstractWindow& scene, const RunOptions& options) {
 // Everything drawn in a window, built once the GL context exists and
 // destroyed before it goes.
 struct Views {
-  Views(const std::string& shaderDir, const std::string& fontPath)
-      : renderer(shaderDir), text(fontPath, shaderDir), debug(shaderDir), plot(shaderDir) {}
+  Views(const std::string& shaderDir, const std::string& fontPath, GlWindow& window, const RunOptions& options)
+      : renderer(shaderDir),
+        text(fontPath, shaderDir),
+        debug(shaderDir),
+        plot(shaderDir),
+        panel(window.sdlWindow(), window.glContext(), fontPath,
+              options.textSize > 0 ? options.textSize : std::min(28, std::max(12, window.height() / 45)),
+              options.panel) {}
   Renderer renderer;
   HudText text;
   DebugDraw debug;
   LivePlot plot;
+  ControlPanel panel;
   TextBlock help{240};
   TextBlock notice{200};
 };
@@ -117,6 +125,11 @@ void FrameLoop::pollEvents(long long frame) {
   while (SDL_PollEvent(&event)) {
     if (player_.handle(event, scene_, [this](const std::string& label) { printTotals(("mark " + label).c_str(), totals_); }))
       continue;
+    if (views_.panel.handleEvent(event)) continue;
+    if (event.type == SDL_KEYDOWN && event.key.keysym.sym == SDLK_TAB && !event.key.repeat) {
+      views_.panel.toggle();
+      continue;
+    }
     if (input_.handleEvent(event, scene_, windowWidth, windowHeight)) window_.updateDrawableSize();
   }
   syncMouseLook(scene_);
@@ -144,11 +157,12 @@ void FrameLoop::draw() {
   const bool dragging = input_.dragLine(scene_, grabbed, target);
   views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
   views_.text.setSizeFor(options_.textSize, height);
-  views_.text.draw(scene_.hudLines(), width, height);
+  views_.text.draw(scene_.hudLines(), width, height, views_.panel.coveredWidth());
   const ViewFlags& flags = scene_.viewFlags();
   if (flags.plot) views_.plot.draw(scene_.chart(), views_.text, width, height);
   if (flags.help) drawHelp(width, height);
   drawNotice(width, height);
+  views_.panel.draw(scene_, width, height);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }
@@ -269,7 +283,7 @@ int runWindow(AbstractWindow& scene, const RunOptions& options) {
   try {
     // Declared in this order so GL objects go before the context they live in.
     GlWindow window(scene.title(), options.width, options.height, options.vsync);
-    Views views(shaders.found, font.found);
+    Views views(shaders.found, font.found, window, options);
     // Built only now that the window can run, so that a refused window run
     // (no display, unusable shaders or font) leaves no output file behind;
     // a runner that built it already is fine too.

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <SDL2/SDL.h>
+
+#include <map>
+#include <string>
+
+#include "../AbstractWindow.h"
+
+namespace odelab {
+
+// The on-screen control panel (Dear ImGui, Tab shows and hides it): the
+// world settings of the settings table, the scene's own parameters, and
+// buttons for pause, step, time scale, rewind and reset. Every change goes
+// through the scene's changeSetting / changeParameter / handleKey, the same
+// path as the F-keys: clamped, recorded for rewind, logged, and written to
+// the output files.
+class ControlPanel {
+ public:
+  // Needs the window's GL context current. `textPixels` sizes the font.
+  ControlPanel(SDL_Window* window, void* glContext, const std::string& fontPath, int textPixels, bool visible);
+  ~ControlPanel();
+  ControlPanel(const ControlPanel&) = delete;
+  ControlPanel& operator=(const ControlPanel&) = delete;
+
+  // Feeds an event to the panel. True when the panel takes it (the pointer
+  // is over the panel, or a field is being typed in): the scene must not.
+  bool handleEvent(const SDL_Event& event);
+  void toggle() { visible_ = !visible_; }
+  bool visible() const { return visible_; }
+  // Width the panel covers at the window's right edge (0 when hidden).
+  int coveredWidth() const { return visible_ ? static_cast<int>(width_) + MARGIN : 0; }
+  // Builds and draws this frame's panel over the scene.
+  void draw(AbstractWindow& scene, int windowWidth, int windowHeight);
+
+ private:
+  static constexpr int MARGIN = 10;
+  bool contains(int x, int y) const;
+  void timeButtons(AbstractWindow& scene);
+  void settings(AbstractWindow& scene);
+  void parameters(AbstractWindow& scene);
+  // A value edited by slider or typing, committed when the edit ends, so a
+  // drag is one change on the timeline, not one per frame.
+  bool edit(const std::string& label, double& value, double min, double max, bool logScale, bool integer);
+
+  bool visible_;
+  float width_ = 0, x_ = 0, y_ = 0, height_ = 0;
+  int mouseX_ = -1, mouseY_ = -1;
+  bool leftDown_ = false, leftPressed_ = false;
+  std::map<std::string, double> editing_;
+};
+
+}  // namespace odelab
