@@ -5,8 +5,9 @@
 //
 // It must start with "# key: value" header lines naming every setting in
 // force (ode_version, ode_precision, step_seconds, erp, cfm, solver,
-// iterations at least), then a "# columns:" line with exactly the given
-// names, then tab-separated rows of that many finite numbers. Row i must be
+// iterations at least), then a line of tab-separated column names (the
+// first line not starting with '#') with exactly the given names, then
+// tab-separated rows of that many finite numbers. Row i must be
 // at time i * SECONDS within half a step (the step is read from the header),
 // and there must be exactly N rows. Lines starting with "# t=" (F-key changes)
 // may appear between rows. Exit status 0 when all holds, 1 otherwise.
@@ -84,19 +85,14 @@ int main(int argc, char** argv) {
     }
     if (line.rfind("# ", 0) == 0) {
       if (rows > 0) failures.push_back(where + "header line after the first row: " + line);
-      if (line.rfind("# columns:", 0) == 0) {
-        for (const auto& name : split(line.substr(10), ' '))
-          if (!name.empty()) columns.push_back(name);
-        continue;
-      }
       const auto colon = line.find(": ");
       if (colon != std::string::npos) header[line.substr(2, colon - 2)] = line.substr(colon + 2);
       if (header.count("step_seconds")) parseNumber(header["step_seconds"], step);
       continue;
     }
     if (columns.empty()) {
-      failures.push_back(where + "row before the '# columns:' line");
-      break;
+      columns = split(line, '\t');  // the first line that is not a comment names the columns
+      continue;
     }
     const auto fields = split(line, '\t');
     if (fields.size() != columns.size()) {

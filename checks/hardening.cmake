@@ -276,8 +276,8 @@ endforeach()
 # no metrics JSON exists.
 foreach(_case "test2;kill;Test2_output.txt;time_s,potential_J,kinetic_J,total_J"
               "test2;file-limit;Test2_output.txt;time_s,potential_J,kinetic_J,total_J"
-              "test8;kill;Test8_output.txt;time_s,relative_elongation"
-              "test8;file-limit;Test8_output.txt;time_s,relative_elongation")
+              "test8;kill;Test8_output.txt;time_s,relative_elongation,deflection_rad"
+              "test8;file-limit;Test8_output.txt;time_s,relative_elongation,deflection_rad")
   list(GET _case 0 _program)
   list(GET _case 1 _how)
   list(GET _case 2 _file)
@@ -516,7 +516,8 @@ bytes=$(wc -c < "$file")
 complete=$(tr -cd '\n' < "$file" | wc -c)
 head -n "$complete" "$file" > complete.txt
 tail_bytes=$((bytes - $(wc -c < complete.txt)))
-rows=$(grep -vc '^#' complete.txt)
+# Every line that is not a comment is a row, but the first: the column names.
+rows=$(($(grep -vc '^#' complete.txt) - 1))
 echo "$file: $bytes bytes, $complete complete lines ($rows rows), $tail_bytes bytes of an unfinished line after them"
 "$checker" complete.txt --columns "$columns" --interval "$interval" --rows "$rows" || failures=$((failures + 1))
 [ "$failures" = 0 ]

@@ -137,13 +137,14 @@ class HingeStability : public PendulumScene {
     header.emplace_back("sample_interval_s", formatValue(sampleInterval_));
     header.emplace_back("relative_elongation", "(l - l0) / l0, l = distance from the hinge anchor to the composite "
                                                "centre of mass, l0 = l before the run");
+    header.emplace_back("deflection_rad", "angle of the centre of mass from straight down, positive towards +x");
     log_.open(joinPath(options().outDir, "Test8_output.txt"), "test8 - Hinge stability: relative elongation", header,
-              {"time_s", "relative_elongation"});
+              {"time_s", "relative_elongation", "deflection_rad"});
   }
 
   void sampleIfDue() {
     if (!sampler_.due(simulatedTime(), settings().step)) return;
-    log_.row({simulatedTime(), (anchorToCentreOfMass() - startLength_) / startLength_});
+    log_.row({simulatedTime(), (anchorToCentreOfMass() - startLength_) / startLength_, deflection()});
   }
 
   double bobMass_ = HEAVY_BOB_MASS;

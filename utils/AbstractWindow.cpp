@@ -432,10 +432,8 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
 void AbstractWindow::applySettings(const std::string& change) {
   settings_.applyTo(world_);
   chart_.markChange(simulatedTime_);
-  std::ostringstream line;
-  line << "t=" << formatValue(simulatedTime_) << " s: " << change;
   // A replay repeats changes the user has seen already.
-  if (!rewind_.replaying()) notify(line.str());
+  if (!rewind_.replaying()) notify(timeStamp(simulatedTime_) + ": " + change);
   onSettingChanged(change);
 }
 

@@ -5,6 +5,7 @@
 
 #include "AbstractWindow.h"
 #include "FormatValue.h"
+#include "MeasurementLog.h"
 #include "OdeMessages.h"
 
 namespace odelab {
@@ -95,7 +96,7 @@ void AbstractWindow::applyEvent(const TimelineEvent& event) {
       const std::string change = parameters_.set(event.index, event.value);
       if (change.empty()) break;
       logAction("panel: " + change);
-      notify("t=" + formatValue(simulatedTime_) + " s: " + change);
+      notify(timeStamp(simulatedTime_) + ": " + change);
       onParameterChanged(parameters_.all()[event.index]);
       break;
     }

@@ -1,5 +1,7 @@
 #include "MeasurementLog.h"
 
+#include "FormatValue.h"
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -18,8 +20,11 @@ void MeasurementLog::open(const std::string& path, const std::string& title,
   if (!file_) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
   check(std::fprintf(file_, "# %s\n", title.c_str()));
   for (const auto& [key, value] : settings) check(std::fprintf(file_, "# %s: %s\n", key.c_str(), value.c_str()));
-  std::string header = "# columns:";
-  for (const auto& column : columns) header += " " + column;
+  // The column names are the first line that is not a comment, so the file
+  // loads as a table: pandas.read_csv(f, sep='\t', comment='#'), gnuplot's
+  // columnheaders.
+  std::string header;
+  for (const auto& column : columns) header += (header.empty() ? "" : "\t") + column;
   check(std::fprintf(file_, "%s\n", header.c_str()));
   check(std::fflush(file_));
 }
@@ -34,7 +39,7 @@ void MeasurementLog::row(const std::vector<double>& values) {
 
 void MeasurementLog::comment(double time, const std::string& text) {
   if (!file_) return;
-  check(std::fprintf(file_, "# t=%.6g s: %s\n", time, text.c_str()));
+  check(std::fprintf(file_, "# %s: %s\n", timeStamp(time).c_str(), text.c_str()));
   check(std::fflush(file_));
 }
 
@@ -46,6 +51,8 @@ void MeasurementLog::close() {
 void MeasurementLog::check(int result) {
   if (result < 0) throw std::runtime_error("cannot write '" + path_ + "': " + std::strerror(errno));
 }
+
+std::string timeStamp(double simulatedTime) { return "t=" + formatValue(simulatedTime) + " s"; }
 
 std::string joinPath(const std::string& folder, const std::string& name) {
   if (folder.empty() || folder == ".") return name;

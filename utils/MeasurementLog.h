@@ -8,8 +8,8 @@
 namespace odelab {
 
 // A scene's output file (Test2_output.txt, Test8_output.txt): a header of
-// "# key: value" lines naming every setting in force, a "# columns:" line,
-// then tab-separated rows. Every row and comment is flushed at once, so a
+// "# key: value" lines naming every setting in force, a line of column names
+// (the first line not starting with '#'), then tab-separated rows. Every row and comment is flushed at once, so a
 // crash or kill loses at most the row being written.
 class MeasurementLog {
  public:
@@ -37,6 +37,9 @@ class MeasurementLog {
   std::string path_;
   long rows_ = 0;
 };
+
+// "t=1.234 s": how every change message names its simulated time.
+std::string timeStamp(double simulatedTime);
 
 // Joins a folder and a file name.
 std::string joinPath(const std::string& folder, const std::string& name);

@@ -3,6 +3,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "MeasurementLog.h"
+
 namespace odelab {
 
 RunLog::~RunLog() {
@@ -24,7 +26,7 @@ std::string RunLog::write(double simulatedTime, long long step, const std::strin
     std::fprintf(file_, "# %s: inputs that changed the simulation, with their simulated time\n", title_.c_str());
   }
   // Flushed entry by entry: a crash keeps every input made before it.
-  if (std::fprintf(file_, "t=%.6g s (step %lld): %s\n", simulatedTime, step, text.c_str()) < 0 ||
+  if (std::fprintf(file_, "%s (step %lld): %s\n", timeStamp(simulatedTime).c_str(), step, text.c_str()) < 0 ||
       std::fflush(file_) != 0)
     return fail(std::strerror(errno));
   return {};

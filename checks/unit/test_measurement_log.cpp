@@ -18,7 +18,7 @@ TEST(MeasurementLog, WritesHeaderRowsAndCommentsFlushedAsItGoes) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(),
-            "# test2 - Pendulum\n# erp: 0.4\n# cfm: 0\n# columns: time_s total_J\n0\t29.5\n"
+            "# test2 - Pendulum\n# erp: 0.4\n# cfm: 0\ntime_s\ttotal_J\n0\t29.5\n"
             "# t=0.5 s: ERP 0.4 -> 0.5\n1\t29.4\n");
   EXPECT_EQ(log.rows(), 2);
   log.close();
