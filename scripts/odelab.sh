@@ -56,14 +56,26 @@ command=${1:-}
 case "$command" in
   run)
     program=test0
-    if [ $# -gt 0 ] && [[ "$1" == test* ]]; then program=$1; shift; fi
+    if [ $# -gt 0 ] && [[ "$1" != -* ]]; then program=$1; shift; fi
+    if ! [[ "$program" =~ ^test([0-9]|10)$ ]]; then
+      say "error: no program '$program'; the programs are test0 ... test10 (see README.md)"
+      exit 2
+    fi
     install_missing
     build
     if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
       say "no display (DISPLAY is not set): running $program headless instead of in a window"
       exec "$build_dir/tests/$program" --headless "$@"
     fi
-    exec "$build_dir/tests/$program" "$@"
+    # A display that is set but cannot be opened (exit status 6) falls back
+    # to a headless run too.
+    status=0
+    "$build_dir/tests/$program" "$@" || status=$?
+    if [ "$status" -eq 6 ]; then
+      say "cannot open a window on DISPLAY='${DISPLAY:-}': running $program headless instead"
+      exec "$build_dir/tests/$program" --headless "$@"
+    fi
+    exit "$status"
     ;;
   test)
     install_missing

@@ -76,7 +76,7 @@ class DifferentWeights : public AbstractWindow {
   DifferentWeights() : AbstractWindow("test4 - Different Weights", settingsForThisScene()) {
     bindKey(SDLK_F5, "F5", "big cube's mass up the ladder 500 ... 500000 kg (Shift: down); rebuilds the scene",
             [this](int direction) { stepBigMass(direction); });
-    keepAcrossRewind(bigMass_);
+    addParameter({"big cube mass", "kg", &bigMass_, 1.0, 1e6, true});
   }
 
   void addOptions(CLI::App& app) override {
@@ -88,6 +88,8 @@ class DifferentWeights : public AbstractWindow {
  protected:
   // Auto-disable off: a disabled body would hide the instability the scene is about.
   void configureWorld() override { dWorldSetAutoDisableFlag(world(), 0); }
+  // A new mass is a new experiment: the scene is built again, as with F5.
+  void onParameterChanged(const SceneParameter&) override { reset(); }
 
   void buildScene() override {
     Box& platform = add<Box>(world(), space(), PLATFORM_SIDE, PLATFORM_THICKNESS, PLATFORM_SIDE, 1.0);

@@ -51,6 +51,7 @@ class HingeStability : public PendulumScene {
       reset();
       notify("scene reset; Test8_output.txt truncated");
     });
+    addParameter({"bob mass", "kg", &bobMass_, 1.0, 1e7, true});
   }
 
   void addOptions(CLI::App& app) override {
@@ -121,6 +122,8 @@ class HingeStability : public PendulumScene {
   }
 
   double defaultHeadlessSeconds() const override { return RUN_SECONDS; }
+  // A new bob is a new pendulum: built again from horizontal.
+  void onParameterChanged(const SceneParameter&) override { reset(); }
 
  private:
   double meanElongation() const { return measuredSteps_ ? elongationSum_ / measuredSteps_ : 0.0; }

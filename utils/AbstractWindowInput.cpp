@@ -76,8 +76,10 @@ void AbstractWindow::changeParameter(int index, double value) {
 }
 
 void AbstractWindow::recordAndApply(const TimelineEvent& event) {
+  // An input that rebuilt the scene began a new run: nothing to record.
+  const long long epochBefore = rewind_.epoch();
   applyEvent(event);
-  rewind_.record(event);
+  if (rewind_.epoch() == epochBefore) rewind_.record(event);
 }
 
 void AbstractWindow::applyEvent(const TimelineEvent& event) {

@@ -89,7 +89,7 @@ bool ControlPanel::edit(const std::string& label, double& value, double min, dou
   ImGui::TextUnformatted(label.c_str());
   ImGui::SetNextItemWidth(width_ * 0.45f);
   const ImGuiSliderFlags flags = (logScale ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
-  ImGui::SliderScalar("##slider", ImGuiDataType_Double, &shown, &min, &max, integer ? "%.0f" : "%.3g", flags);
+  ImGui::SliderScalar("##slider", ImGuiDataType_Double, &shown, &min, &max, integer ? "%.0f" : "%.4g", flags);
   bool done = ImGui::IsItemDeactivatedAfterEdit();
   bool active = ImGui::IsItemActive();
   ImGui::SameLine();
