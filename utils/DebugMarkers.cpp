@@ -42,6 +42,11 @@ std::vector<JointMarker> collectJointMarkers(const std::vector<std::unique_ptr<A
     }
     copy3(marker.anchor, a);
     copy3(marker.anchor2, b);
+    const dBodyID body1 = dJointGetBody(joint, 0), body2 = dJointGetBody(joint, 1);
+    marker.hasBody1 = body1 != nullptr;
+    marker.hasBody2 = body2 != nullptr;
+    if (body1) copy3(marker.body1, dBodyGetPosition(body1));
+    if (body2) copy3(marker.body2, dBodyGetPosition(body2));
     markers.push_back(marker);
   }
   return markers;

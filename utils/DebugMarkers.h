@@ -21,6 +21,9 @@ struct JointMarker {
   float anchor2[3];  // on the second body (equal to anchor when the joint holds)
   float axis[3];
   bool hasAxis;      // hinges have an axis; ball joints do not
+  // The centres of the joined bodies (a joint to the static world has one).
+  float body1[3], body2[3];
+  bool hasBody1, hasBody2;
 };
 
 std::vector<JointMarker> collectJointMarkers(const std::vector<std::unique_ptr<AbstractObject>>& objects);

@@ -21,6 +21,7 @@ const Rgba NORMAL_COLOR{255, 225, 40, 255};
 const Rgba ANCHOR_COLOR{40, 230, 255, 255};
 const Rgba ANCHOR2_COLOR{255, 60, 230, 255};
 const Rgba SEPARATION_COLOR{255, 255, 255, 255};
+const Rgba LINK_COLOR{255, 215, 90, 255};  // a ball joint's link
 const Rgba AXIS_COLOR{255, 150, 30, 255};
 const Rgba DRAG_COLOR{255, 255, 255, 255};
 
@@ -87,14 +88,26 @@ void DebugDraw::addJoints(const AbstractWindow& scene, const glm::vec3& eye) {
   }
 }
 
+// A ball joint has no visible part: its link, from each body's centre to
+// its anchor, is always drawn (test6, test7), over the bodies.
+void DebugDraw::addBallLinks(const AbstractWindow& scene) {
+  for (const JointMarker& joint : scene.jointMarkers()) {
+    if (joint.hasAxis) continue;
+    if (joint.hasBody1) overlay_.line(vec(joint.body1), vec(joint.anchor), LINK_COLOR);
+    if (joint.hasBody2) overlay_.line(vec(joint.body2), vec(joint.anchor2), LINK_COLOR);
+    points_.point(vec(joint.anchor), LINK_COLOR);
+  }
+}
+
 void DebugDraw::draw(const AbstractWindow& scene, const glm::mat4& viewProjection, bool dragging,
                      const glm::vec3& dragFrom, const glm::vec3& dragTo) {
   const ViewFlags& flags = scene.viewFlags();
-  if (!flags.boxes && !flags.contacts && !flags.joints && !dragging) return;
-  const glm::vec3 eye = scene.camera().position();
   lines_.clear();
   overlay_.clear();
   points_.clear();
+  addBallLinks(scene);
+  if (!flags.boxes && !flags.contacts && !flags.joints && !dragging && overlay_.size() == 0) return;
+  const glm::vec3 eye = scene.camera().position();
   if (flags.boxes) addBoxes(scene);
   if (flags.contacts) addContacts(scene, eye);
   if (flags.joints) addJoints(scene, eye);

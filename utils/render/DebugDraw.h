@@ -26,6 +26,7 @@ class DebugDraw {
   void addBoxes(const AbstractWindow& scene);
   void addContacts(const AbstractWindow& scene, const glm::vec3& eye);
   void addJoints(const AbstractWindow& scene, const glm::vec3& eye);
+  void addBallLinks(const AbstractWindow& scene);
 
   LineProgram program_;
   VertexStream stream_;

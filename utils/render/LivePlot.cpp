@@ -10,14 +10,18 @@ namespace odelab {
 namespace {
 
 const int MIN_BOX_WIDTH = 480;
-const int BOX_HEIGHT = 220;
-const int MARGIN = 10;       // from the window's edges
-const int PADDING = 8;       // inside the box
-const int AXIS_LABELS = 78;  // room left of the plot for the value labels
+const int MIN_BOX_HEIGHT = 220;
+const int MARGIN = 10;   // from the window's edges
+const int PADDING = 8;   // inside the box
+// Room left of the plot for the value labels ("%.4g": at most 10
+// characters such as -1.234e-05), in text lines: a character is narrower
+// than half a line.
+const int AXIS_LABEL_LINES = 5;
 const Rgba BACKGROUND{12, 14, 18, 185};
 const Rgba FRAME_COLOR{120, 130, 145, 255};
 const Rgba ZERO_COLOR{80, 88, 100, 255};
 const Rgba CURVE_COLOR{110, 220, 255, 255};
+const Rgba CHANGE_COLOR{255, 190, 70, 255};  // where a setting changed
 
 std::string number(double value) {
   char text[32];
@@ -32,10 +36,10 @@ LivePlot::LivePlot(const std::string& shaderDir) : program_(shaderDir) {}
 void LivePlot::rebuild(const StripChart& chart, int viewportWidth, int viewportHeight, int lineSkip) {
   const auto& samples = chart.samples();
   boxWidth_ = std::max(MIN_BOX_WIDTH, title_.width() + 2 * PADDING);
-  boxHeight_ = BOX_HEIGHT;
+  boxHeight_ = std::max(MIN_BOX_HEIGHT, 11 * lineSkip);
   boxX_ = viewportWidth - boxWidth_ - MARGIN;
   boxY_ = viewportHeight - boxHeight_ - MARGIN;
-  plotLeft_ = boxX_ + AXIS_LABELS;
+  plotLeft_ = boxX_ + PADDING + AXIS_LABEL_LINES * lineSkip;
   plotRight_ = boxX_ + boxWidth_ - PADDING - 4;
   plotTop_ = boxY_ + PADDING + title_.height() + lineSkip / 2;
   plotBottom_ = boxY_ + boxHeight_ - PADDING - lineSkip - 4;
@@ -84,6 +88,9 @@ void LivePlot::rebuild(const StripChart& chart, int viewportWidth, int viewportH
     const double t0 = samples.front().time, t1 = samples.back().time;
     const double span = t1 > t0 ? t1 - t0 : 1.0;
     auto xOf = [&](double time) { return left + static_cast<float>((time - t0) / span) * (right - left); };
+    // A setting changed (key or panel) at these times: a vertical mark.
+    for (const double time : chart.changes())
+      if (time >= t0 && time <= t1) vertices_.line({xOf(time), top, 0}, {xOf(time), bottom, 0}, CHANGE_COLOR);
     // Segments between neighbouring finite samples: a non-finite one leaves a gap.
     for (std::size_t i = 1; i < samples.size(); ++i) {
       const auto& a = samples[i - 1];
@@ -96,6 +103,7 @@ void LivePlot::rebuild(const StripChart& chart, int viewportWidth, int viewportH
   stream_.upload(vertices_);
 
   builtSamples_ = samples.size();
+  builtChanges_ = chart.changes().size();
   builtFirst_ = samples.empty() ? 0.0 : samples.front().time;
   builtLast_ = samples.empty() ? 0.0 : samples.back().time;
   builtWidth_ = viewportWidth;
@@ -109,7 +117,7 @@ void LivePlot::draw(const StripChart& chart, HudText& text, int viewportWidth, i
   if (!samples.empty()) latest = "latest " + number(samples.back().value) + "  at t = " + number(samples.back().time) + " s";
   text.prepare(title_, {chart.label.empty() ? std::string("live plot") : chart.label, latest});
 
-  const bool changed = samples.size() != builtSamples_ ||
+  const bool changed = samples.size() != builtSamples_ || chart.changes().size() != builtChanges_ ||
                        (!samples.empty() && (samples.front().time != builtFirst_ || samples.back().time != builtLast_));
   if (changed || viewportWidth != builtWidth_ || viewportHeight != builtHeight_ || title_.width() != builtBoxWidth_)
     rebuild(chart, viewportWidth, viewportHeight, text.lineSkip());

@@ -29,6 +29,7 @@ class LivePlot {
   std::size_t backgroundCount_ = 0, lineCount_ = 0;
   // What the vertices were built from.
   std::size_t builtSamples_ = static_cast<std::size_t>(-1);
+  std::size_t builtChanges_ = 0;
   double builtFirst_ = 0.0, builtLast_ = 0.0;
   int builtWidth_ = 0, builtHeight_ = 0, builtBoxWidth_ = 0;
   // Layout of the last build, in window pixels.
