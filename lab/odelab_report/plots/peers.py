@@ -13,11 +13,13 @@ def peers_speed_accuracy(out_dir, stem, rows, label, lower_is_better, havok, zer
     Havok figure (a horizontal line) or None; errors below `zero_floor` are
     drawn at it."""
     fig, ax = new_figure(width=10.0, height=5.6)
+    pointless = []  # curves with no figure at any step (e.g. no 20th bounce): named under the plot
     for (engine, setting) in dict.fromkeys((r["engine"], r["setting"]) for r in rows):
         points = sorted(((r["wall_s_per_sim_s"], r["value"], r["step"]) for r in rows
                          if r["engine"] == engine and r["setting"] == setting and r["value"] is not None
                          and r["wall_s_per_sim_s"]), key=lambda p: -p[2])
         if not points:
+            pointless.append(f"{engine} {setting}")
             continue
         ys = [max(v, zero_floor) if lower_is_better else v for _, v, _ in points]
         ax.plot([x for x, _, _ in points], ys, color=ENGINE_COLOURS[engine], markersize=5, linewidth=1.3,
@@ -32,6 +34,9 @@ def peers_speed_accuracy(out_dir, stem, rows, label, lower_is_better, havok, zer
         ax.axhline(zero_floor, color="grey", linewidth=0.8)
         ax.text(0.01, zero_floor, f"exact to rounding (drawn at {zero_floor:g})", va="bottom", fontsize=7.5,
                 color="grey", transform=ax.get_yaxis_transform())
+    if pointless:
+        ax.text(0.0, -0.14, "no figure at any step (see the table): " + ", ".join(pointless), fontsize=8,
+                color="grey", transform=ax.transAxes)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("cost: wall seconds per simulated second (this machine)")
