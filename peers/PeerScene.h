@@ -85,6 +85,22 @@ class Engine {
   virtual std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& options) = 0;
 };
 
+// An engine made of its four scene models: the factories written once.
+template <class Pendulum, class Ball, class Stack, class Launch>
+class EngineOf : public Engine {
+ public:
+  std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& o) override {
+    return std::make_unique<Pendulum>(bobMass, o);
+  }
+  std::unique_ptr<BallModel> ball(const RunOptions& o) override { return std::make_unique<Ball>(o); }
+  std::unique_ptr<StackModel> stack(double bigMass, const RunOptions& o) override {
+    return std::make_unique<Stack>(bigMass, o);
+  }
+  std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& o) override {
+    return std::make_unique<Launch>(velocity, o);
+  }
+};
+
 // The whole program: options, the scene's measurement, metrics. Exit status
 // 0 done, 2 bad usage, 3 the state became non-finite.
 int runPeer(int argc, char** argv, Engine& engine);

@@ -244,7 +244,7 @@ class BulletLaunch : public LaunchModel {
   btRigidBody* cube_ = nullptr;
 };
 
-class Bullet : public Engine {
+class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLaunch> {
  public:
   std::string name() const override { return "bullet"; }
   bool hasContinuousCollision() const override { return true; }
@@ -263,16 +263,6 @@ class Bullet : public Engine {
       text += best ? "continuous collision on" : "Bullet's defaults (no continuous collision)";
     if (o.ccd || (best && o.scene == "test10")) text += "; CCD: motion threshold 0.1 m, swept sphere radius 0.18 m";
     return text;
-  }
-  std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& o) override {
-    return std::make_unique<BulletPendulum>(bobMass, o);
-  }
-  std::unique_ptr<BallModel> ball(const RunOptions& o) override { return std::make_unique<BulletBall>(o); }
-  std::unique_ptr<StackModel> stack(double bigMass, const RunOptions& o) override {
-    return std::make_unique<BulletStack>(bigMass, o);
-  }
-  std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& o) override {
-    return std::make_unique<BulletLaunch>(velocity, o);
   }
 };
 

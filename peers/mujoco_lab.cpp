@@ -238,7 +238,7 @@ class MujocoLaunch : public LaunchModel {
   MujocoScene scene_;
 };
 
-class Mujoco : public Engine {
+class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLaunch> {
  public:
   std::string name() const override { return "mujoco"; }
   std::string settingText(const RunOptions& o) const override {
@@ -254,16 +254,6 @@ class Mujoco : public Engine {
     else
       text += best ? "contact time constant 2 steps (solref 2h 1)" : "MuJoCo's defaults (solref 0.02 1)";
     return text;
-  }
-  std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& o) override {
-    return std::make_unique<MujocoPendulum>(bobMass, o);
-  }
-  std::unique_ptr<BallModel> ball(const RunOptions& o) override { return std::make_unique<MujocoBall>(o); }
-  std::unique_ptr<StackModel> stack(double bigMass, const RunOptions& o) override {
-    return std::make_unique<MujocoStack>(bigMass, o);
-  }
-  std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& o) override {
-    return std::make_unique<MujocoLaunch>(velocity, o);
   }
 };
 
