@@ -258,6 +258,7 @@ class ManyCollisions : public AbstractWindow {
     m.set("ms_per_step", cost_.meanMilliseconds());
     m.set("max_axis_offset", maxAxisOffset());
     m.set("stack_height", stackHeight());
+    m.set("plate_thickness_m", PLATE_THICKNESS);  // the lab's stack rule needs it
     m.set("max_twist_degrees", maxTwistDegrees());
     m.set("plates_frozen_in_air", frozenInAirCount());
     m.set("auto_disable", autoDisable_ ? 1 : 0);

@@ -116,6 +116,11 @@ class HingeStability : public PendulumScene {
     m.set("mean_relative_elongation", meanElongation());
     m.set("deflection_at_max_elongation_deg", deflectionAtMax_ * 180.0 / M_PI);
     m.set("start_length_m", startLength_);
+    // The pendulum as built, so the lab's load estimate needs no copy of the scene.
+    const MassProperties p = massProperties(bobMass_);
+    m.set("composite_mass_kg", p.mass);
+    m.set("inertia_about_axis_kg_m2", p.inertiaAboutAxis);
+    m.set("gravity_m_s2", settings().gravity);
     m.set("lowest_bob_height_m", lowestBob_);
     m.set("output_rows", static_cast<double>(log_.rows()));
   }

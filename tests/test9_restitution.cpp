@@ -100,6 +100,8 @@ class RestitutionAccuracy : public AbstractWindow {
 
   void addMetrics(Metrics& m) const override {
     for (int bounces : REPORTED_BOUNCES) m.set("apex_error_" + std::to_string(bounces), errorAfter(bounces));
+    // Every apex, for the lab (the printed lines carry six decimals only).
+    for (size_t i = 0; i < relativeErrors_.size(); ++i) m.set("apex_error_" + std::to_string(i + 1), relativeErrors_[i]);
     m.set("max_horizontal_drift", maxHorizontalDrift_);
     m.set("bounces", tracker_.count());
     m.set("last_apex_error", lastRelativeError());
