@@ -74,3 +74,8 @@ foreach(_peer bullet_lab mujoco_lab)
   endforeach()
 endforeach()
 set_tests_properties(${ODELAB_PEER_CHECKS} PROPERTIES LABELS peers)
+
+# Bad input: refused with status 2 and no metrics file (expect_metrics checks both).
+odelab_check(peers_refuse_unknown_scene bullet_lab STATUS 2 ARGS --scene test7)
+odelab_check(peers_refuse_mujoco_ccd mujoco_lab STATUS 2 ARGS --scene test10 --ccd)
+set_tests_properties(peers_refuse_unknown_scene peers_refuse_mujoco_ccd PROPERTIES LABELS peers)

@@ -68,7 +68,9 @@ int runPeer(int argc, char** argv, Engine& engine) {
       throw CLI::ValidationError("--ccd", engine.name() + " has no continuous collision detection");
     if (options.ccd && options.scene != "test10") throw CLI::ValidationError("--ccd", "only test10 uses it");
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);  // 0 for --help, 2 (with the reason on stderr) for a bad option
+    // --help: 0; a bad option: its reason on stderr and 2, as the ODE programs
+    // (CLI11's own codes are 1xx).
+    return app.exit(error) == 0 ? 0 : 2;
   }
   options.setting = setting == "best" ? Setting::Best : Setting::Default;
 
