@@ -51,6 +51,8 @@ list(APPEND ODELAB_PEER_CHECKS peers_bullet_exact_bounce peers_bullet_default_bo
 # One source of truth: each peer builds the ODE program's scene. The metrics
 # compared follow from the scene's constants alone (peers/check_same_scene.py).
 # Rows: scene, metrics compared, the one argument both programs get.
+# (test10: once the test10 branch, whose program writes cube_half_size_m,
+# wall_thickness_m, ... as the peers do, is merged, those names join its row.)
 set(ODELAB_SAME_SCENE
   test2  energy_start_J                                  --seconds=0.01
   test8  start_length_m                                  --seconds=0.01
