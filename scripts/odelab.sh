@@ -16,6 +16,8 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 # Debian packages: compiler and build tools, the libraries, the HUD font; for
 # the windowed checks an X server with Mesa's software OpenGL; for the lab's
 # report (lab/odelab-report) Debian's Python with matplotlib.
+# The peer engines (peers/, doc/peers.md): Bullet and MuJoCo (whose CMake
+# package needs qhull).
 packages=(
   g++ make cmake pkg-config
   libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev libglu1-mesa-dev
@@ -23,6 +25,7 @@ packages=(
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
   python3 python3-matplotlib
+  libbullet-dev libmujoco-dev libqhull-dev
 )
 
 say() { printf 'odelab: %s\n' "$*" >&2; }

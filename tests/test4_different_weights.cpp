@@ -22,23 +22,15 @@
 #include "Box.h"
 #include "CommandLine.h"
 #include "TestMain.h"
+#include "shared/SceneConstants.h"
 
 namespace {
 
 using namespace odelab;
 
-constexpr double PLATFORM_SIDE = 10.0;
-constexpr double PLATFORM_THICKNESS = 0.2;  // top face at y = 0
-constexpr double SMALL_SIDE = 0.5;
-constexpr double SMALL_MASS = 5.0;
-constexpr double BIG_SIDE = 5.0;
-constexpr double DEFAULT_BIG_MASS = 5000.0;
-constexpr double BIG_START_HEIGHT = SMALL_SIDE + BIG_SIDE / 2;  // 3.0: resting on the small cube
-
-// "Held" ends when the big cube's centre leaves the axis by more than this
-// sideways, or drops below BIG_FALLEN_HEIGHT (0.1 m below where it starts).
-constexpr double SIDEWAYS_LIMIT = 0.5;
-constexpr double BIG_FALLEN_HEIGHT = 2.9;
+// Dimensions, masses and the "held" rule's limits: SceneConstants.h (shared
+// with the peer engines in peers/).
+using namespace scene::test4;
 // The thesis's limits: above this global CFM, or below this ERP, both cubes
 // sink through the platform. Allowed (to be shown), but flagged on the HUD.
 constexpr double THESIS_MAX_CFM = 1e-6;
@@ -157,7 +149,7 @@ class DifferentWeights : public AbstractWindow {
   }
   std::string plotLabel() const override { return "big cube's tilt (degrees)"; }
 
-  double defaultHeadlessSeconds() const override { return 20.0; }
+  double defaultHeadlessSeconds() const override { return RUN_SECONDS; }
 
   // Low, nearly level with the small cube, so it shows under the big one.
   void initialCamera(Camera& camera) const override { camera.lookAt({10, 1.2, 14}, {0, 3.4, 0}); }

@@ -30,6 +30,7 @@
 #include "Box.h"
 #include "CommandLine.h"
 #include "TestMain.h"
+#include "shared/SceneConstants.h"
 
 #include <ode/threading_impl.h>
 
@@ -39,9 +40,9 @@ using namespace odelab;
 
 constexpr double PLATFORM_SIDE = 10.0;
 constexpr double PLATFORM_THICKNESS = 0.2;  // top face at y = 0
-constexpr double PLATE_WIDTH = 5.0;
-constexpr double PLATE_THICKNESS = 0.05;
-constexpr double PLATE_MASS = 1.0;         // (proposed)
+using scene::test5::PLATE_MASS;  // the plate: SceneConstants.h (shared with peers/)
+using scene::test5::PLATE_THICKNESS;
+using scene::test5::PLATE_WIDTH;
 constexpr double SPAWN_HEIGHT = 6.0;       // plate centre when dropped
 constexpr double SPAWN_ABOVE_STACK = 1.0;  // (proposed) once the stack nears 6 m, drop this far above its top
 constexpr double DEFAULT_SPAWN_INTERVAL = 0.3;  // s, headless (proposed): 50 plates land within 20 s
@@ -257,6 +258,7 @@ class ManyCollisions : public AbstractWindow {
     m.set("ms_per_step", cost_.meanMilliseconds());
     m.set("max_axis_offset", maxAxisOffset());
     m.set("stack_height", stackHeight());
+    m.set("plate_thickness_m", PLATE_THICKNESS);  // the lab's stack rule needs it
     m.set("max_twist_degrees", maxTwistDegrees());
     m.set("plates_frozen_in_air", frozenInAirCount());
     m.set("auto_disable", autoDisable_ ? 1 : 0);

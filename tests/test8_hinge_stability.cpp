@@ -27,13 +27,13 @@ namespace {
 using namespace odelab;
 using namespace odelab::pendulum;
 
-constexpr double HEAVY_BOB_MASS = 5000.0;  // kg, the thesis
+constexpr double HEAVY_BOB_MASS = scene::test8::HEAVY_BOB_MASS;
 constexpr double THESIS_ERP = 0.4;         // the thesis's recommendation for this test
 // The thesis's headline figure (about 1e-3 at ERP 0.4, CFM 1e-4) and the
 // upper end of what it called the safe range; see doc/tests/test8.md.
 constexpr double DEFAULT_CFM = 1e-4;
 constexpr double SAMPLE_INTERVAL = 0.01;  // s between rows of Test8_output.txt (proposed)
-constexpr double RUN_SECONDS = 60.0;      // as test2
+constexpr double RUN_SECONDS = scene::test8::RUN_SECONDS;
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 
 WorldSettings settingsForThisScene() {
@@ -117,6 +117,11 @@ class HingeStability : public PendulumScene {
     m.set("mean_relative_elongation", meanElongation());
     m.set("deflection_at_max_elongation_deg", deflectionAtMax_ * 180.0 / M_PI);
     m.set("start_length_m", startLength_);
+    // The pendulum as built, so the lab's load estimate needs no copy of the scene.
+    const MassProperties p = massProperties(bobMass_);
+    m.set("composite_mass_kg", p.mass);
+    m.set("inertia_about_axis_kg_m2", p.inertiaAboutAxis);
+    m.set("gravity_m_s2", settings().gravity);
     m.set("lowest_bob_height_m", lowestBob_);
     m.set("output_rows", static_cast<double>(log_.rows()));
   }

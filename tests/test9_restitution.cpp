@@ -17,20 +17,18 @@
 #include "Sphere.h"
 #include "TestMain.h"
 #include "shared/ApexTracker.h"
+#include "shared/SceneConstants.h"
 
 namespace {
 
 using namespace odelab;
 
-constexpr double START_HEIGHT = 5.0;    // centre above the ground (thesis)
-constexpr double BALL_RADIUS = 0.5;     // (proposed)
-constexpr double BALL_MASS = 1.0;       // kg (proposed)
-constexpr double BOUNCE = 1.0;          // restitution: a perfect bounce (thesis)
+// Ball, drop height, bounce, gravity factor and run length: SceneConstants.h
+// (shared with the peer engines in peers/).
+using namespace scene::test9;
 constexpr double BOUNCE_VELOCITY = 0.01;  // m/s, slower impacts do not bounce (proposed)
-constexpr double GRAVITY_FACTOR = 4.0;  // x SURFACE_GRAVITY, for many bounces quickly (thesis)
 constexpr double THESIS_ERP = 0.2;
 constexpr double THESIS_CFM = 0.0;      // the thesis's "ideal" setting
-constexpr double RUN_SECONDS = 25.0;    // about 26 bounces at CFM 0 (one every 0.957 s)
 constexpr int REPORTED_BOUNCES[] = {5, 10, 20};
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -102,9 +100,14 @@ class RestitutionAccuracy : public AbstractWindow {
 
   void addMetrics(Metrics& m) const override {
     for (int bounces : REPORTED_BOUNCES) m.set("apex_error_" + std::to_string(bounces), errorAfter(bounces));
+    // Every apex, for the lab (the printed lines carry six decimals only).
+    for (size_t i = 0; i < relativeErrors_.size(); ++i) m.set("apex_error_" + std::to_string(i + 1), relativeErrors_[i]);
     m.set("max_horizontal_drift", maxHorizontalDrift_);
     m.set("bounces", tracker_.count());
     m.set("last_apex_error", lastRelativeError());
+    // The scene as built, for the lab and the peer engines' constants check.
+    m.set("start_height_m", START_HEIGHT);
+    m.set("ball_radius_m", BALL_RADIUS);
   }
 
   double defaultHeadlessSeconds() const override { return RUN_SECONDS; }

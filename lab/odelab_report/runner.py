@@ -234,7 +234,7 @@ class Runner:
         if self._aborted:
             raise LabError("interrupted")
         executable = self.build_dir / spec.program
-        workdir = Path(tempfile.mkdtemp(prefix=spec.program + "-", dir=self._tmp_root))
+        workdir = Path(tempfile.mkdtemp(prefix=Path(spec.program).name + "-", dir=self._tmp_root))  # a peer is ../peers/NAME
         argv = [str(executable), "--headless", *spec.args, "--metrics-json", "metrics.json"]
         self._slots.acquire(spec.priority, spec.timed)
         try:

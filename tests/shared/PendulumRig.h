@@ -13,17 +13,20 @@
 #include "Box.h"
 #include "Plane.h"
 #include "Sphere.h"
+#include "SceneConstants.h"
 
 namespace odelab::pendulum {
 
-constexpr double ANCHOR_HEIGHT = 7.0;  // thesis: dJointSetHingeAnchor(hinge, 0.0, 7.0, 0.0)
-constexpr double ROD_LENGTH = 3.0;     // (proposed) rod [3.0, 0.1, 0.1] from the anchor along +x
-constexpr double ROD_THICKNESS = 0.1;  // (proposed)
-constexpr double ROD_MASS = 0.1;       // kg (proposed)
-constexpr double BOB_RADIUS = 0.3;     // (proposed)
-constexpr double BOB_MASS = 0.33;      // kg, test2's bob (proposed: start energy ~29.6 J against the thesis's ~29.4 J)
-constexpr double BOB_DISTANCE = 3.3;   // anchor to the bob's centre (proposed)
-constexpr double START_DEFLECTION = M_PI / 2;  // thesis: horizontal
+// The rig's dimensions and masses live in SceneConstants.h (shared with the
+// peer engines in peers/).
+using scene::test2::ANCHOR_HEIGHT;
+using scene::test2::BOB_DISTANCE;
+using scene::test2::BOB_MASS;
+using scene::test2::BOB_RADIUS;
+using scene::test2::ROD_LENGTH;
+using scene::test2::ROD_MASS;
+using scene::test2::ROD_THICKNESS;
+using scene::test2::START_DEFLECTION;
 constexpr double ANCHOR_MARKER_RADIUS = 0.08;  // drawn at the hinge; collides with nothing
 
 // Mass properties worked out by hand from the constants above (not read back

@@ -6,6 +6,7 @@ from .limit_test5 import LimitTest5
 from .limit_test8 import LimitTest8
 from .limit_test9 import LimitTest9
 from .limit_test10 import LimitTest10
+from .peers import Peers
 from .remedy_test4 import RemedyTest4
 from .remedy_test5 import RemedyTest5
 from .remedy_test6 import RemedyTest6
@@ -18,6 +19,7 @@ ALL = [
     LimitTest4(), LimitTest10(), LimitTest5(), LimitTest8(), LimitTest9(), EnergyTest2(),
     SpeedTest2(), SpeedTest8(), SpeedTest9(),
     RemedyTest10(), RemedyTest4(), RemedyTest6(), RemedyTest5(),
+    Peers(),
 ]
 
 SECTIONS = {
@@ -25,6 +27,7 @@ SECTIONS = {
     2: "Stability limits",
     3: "Speed against accuracy",
     4: "Remedies",
+    5: "Other engines, live",
 }
 
 # Names --only accepts besides the experiments' own.

@@ -13,12 +13,11 @@ SETTLE = 2.0           # s after the last plate is dropped: it lands within 1 s,
 MIN_HEIGHT_FRACTION = 0.95  # the stack must stand at least this fraction of N plates tall
 MAX_OFFSET = 0.1      # m: 2% of the plate's width
 MAX_TWIST = 2.0       # degrees
-PLATE = 0.05          # m: plate thickness
 RULE = ("a stack of N plates fails when its cost per step exceeds the step (1 ms at step 0.001: slower than "
         "real time); the cost is the mean wall time of collide + step over the last simulated second (test5's "
         "`ms_per_step`, every plate dropped) times the run's CPU share (CPU time / wall time, at most 1), i.e. the "
         "wall time with a core to itself; or when it is not an aligned stack: lower than "
-        f"{MIN_HEIGHT_FRACTION:g} x N x {PLATE} m (`stack_height`: plates missing from it), a plate centre more than "
+        f"{MIN_HEIGHT_FRACTION:g} x N x the plate's thickness (`stack_height` against `plate_thickness_m`: plates missing from it), a plate centre more than "
         f"{MAX_OFFSET} m from the axis (`max_axis_offset`) or turned more than {MAX_TWIST:g} degrees "
         "(`max_twist_degrees`), or a non-finite state")
 
@@ -34,8 +33,9 @@ def judge(r, plates, step):
         return False, "non-finite state" if r.blew_up else "ODE error"
     if r.m("plates_frozen_in_air", 0) > 0:  # only with auto-disable (remedy-test5)
         return False, f"{r.m('plates_frozen_in_air'):.0f} plates frozen in the air"
-    if r.m("stack_height", 0) < MIN_HEIGHT_FRACTION * plates * PLATE:
-        return False, f"stack {r.m('stack_height', 0):.3g} m tall, not {plates * PLATE:.3g}"
+    plate = r.m("plate_thickness_m")
+    if r.m("stack_height", 0) < MIN_HEIGHT_FRACTION * plates * plate:
+        return False, f"stack {r.m('stack_height', 0):.3g} m tall, not {plates * plate:.3g}"
     if r.m("max_axis_offset", 0) > MAX_OFFSET:
         return False, f"offset {r.m('max_axis_offset'):.3g} m"
     if r.m("max_twist_degrees", 0) > MAX_TWIST:

@@ -15,14 +15,15 @@ def apex_error(out_dir, stem, series, failure, resolution):
         points = [(n, e) for n, e in points if e and e > 0]
         if not points:
             continue
-        label = f"CFM {cfm:g}" + (" (metrics apex_error_5/10/20)" if cfm == 0 else "")
+        label = f"CFM {cfm:g}"
         ax.plot([n for n, _ in points], [e for _, e in points], marker="o", markersize=4, color=colour, label=label)
     ax.axhline(failure, color="red", linestyle="--", linewidth=1, label=f"failure rule: {failure:.0%} of the drop")
-    ax.axhline(resolution, color="grey", linestyle=":", linewidth=1,
-               label=f"six-decimal print resolution ({resolution:.1g})")
+    if resolution:  # the resolution of the figures, when they are not full precision
+        ax.axhline(resolution, color="grey", linestyle=":", linewidth=1,
+                   label=f"six-decimal print resolution ({resolution:.1g})")
     ax.set_yscale("log")
     ax.set_xlabel("bounce count (apex after the n-th bounce)")
-    ax.set_ylabel("relative apex error |apex - start| / 4.5 m")
+    ax.set_ylabel("relative apex error |apex - start| / drop height")
     ax.set_title("test9: apex error of a perfect bounce (ERP 0.2, step 0.001, QuickStep 20)")
     ax.legend(loc="lower right")
     return save(fig, out_dir, stem)

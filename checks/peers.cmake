@@ -1,0 +1,83 @@
+# ---- the peer engines (peers/, doc/peers.md): physical facts per engine, and
+# one source of truth for the scenes. CTest label: peers.
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+
+# Each claim below was measured first (doc/peers.md has the figures); the
+# bound states what is physically true, with the margin said beside it.
+set(ODELAB_PEER_CHECKS)
+
+# Bullet at its exact-bounce setting (no speculative contacts, contact ERP 0,
+# restitution at any speed): the apex after 20 bounces is the start height to
+# 1e-6 relative (4.5 um of 4.5 m; measured 6e-16).
+odelab_check(peers_bullet_exact_bounce bullet_lab EXPECT apex_error_20<1e-6 bounces>=20
+             ARGS --scene test9 --setting best)
+# ...and at its defaults it does not bounce 20 times: the speculative contact
+# solves the impact before it happens and takes the bounce (measured: 2 apexes).
+odelab_check(peers_bullet_default_bounce_lost bullet_lab EXPECT bounces<20 ARGS --scene test9)
+# The pendulum keeps its energy within 0.1% over 20 s at step 0.001 on each
+# engine's defaults (semi-implicit Euler on both: measured 3.2e-4).
+odelab_check(peers_bullet_pendulum_energy bullet_lab EXPECT energy_max_deviation<1e-3
+             ARGS --scene test2 --seconds 20 --step 0.001)
+odelab_check(peers_mujoco_pendulum_energy mujoco_lab EXPECT energy_max_deviation<1e-3
+             ARGS --scene test2 --seconds 20 --step 0.001)
+# MuJoCo with RK4 keeps it to 1e-9 (fourth order; measured 1.5e-14).
+odelab_check(peers_mujoco_pendulum_energy_rk4 mujoco_lab EXPECT energy_max_deviation<1e-9
+             ARGS --scene test2 --seconds 20 --setting best)
+# MuJoCo's hinge cannot stretch: in generalized coordinates the pendulum's
+# length is not a degree of freedom (measured 8e-16 with the 5000 kg bob).
+odelab_check(peers_mujoco_hinge_rigid mujoco_lab EXPECT max_relative_elongation<1e-12
+             ARGS --scene test8 --seconds 20)
+# Bullet's hinge, like ODE's, is a constraint between free bodies: it
+# stretches under the 5000 kg bob, but stays within 1e-4 (measured 1.5e-5).
+odelab_check(peers_bullet_hinge_stretch bullet_lab EXPECT max_relative_elongation<1e-4 max_relative_elongation>1e-9
+             ARGS --scene test8 --seconds 20)
+# MuJoCo's undamped spring contact (its stand-in for restitution 1) keeps the
+# 20th apex within 0.1% (measured 1.7e-4).
+odelab_check(peers_mujoco_spring_bounce mujoco_lab EXPECT apex_error_20<1e-3 ARGS --scene test9 --setting best)
+# Without continuous collision a cube at 1000 m/s (4 steps' travel past the
+# 0.25 m that (h + t) allows at step 0.001) passes Bullet's wall; with its CCD
+# it is stopped.
+odelab_check(peers_bullet_wall_passed bullet_lab EXPECT passed_through==1 ARGS --scene test10 --velocity 1000)
+odelab_check(peers_bullet_ccd_stops bullet_lab EXPECT stopped==1 ARGS --scene test10 --velocity 1000 --ccd)
+# MuJoCo at its stiffest contact holds the 5000 kg cube on the 5 kg cube for
+# 20 s (measured: tilt 3e-5 degrees, overlap 0.1 mm).
+odelab_check(peers_mujoco_stack_holds mujoco_lab EXPECT held==1 max_penetration<1e-3
+             ARGS --scene test4 --setting best)
+list(APPEND ODELAB_PEER_CHECKS peers_bullet_exact_bounce peers_bullet_default_bounce_lost
+     peers_bullet_pendulum_energy peers_mujoco_pendulum_energy peers_mujoco_pendulum_energy_rk4
+     peers_mujoco_hinge_rigid peers_bullet_hinge_stretch peers_mujoco_spring_bounce peers_bullet_wall_passed
+     peers_bullet_ccd_stops peers_mujoco_stack_holds)
+
+# One source of truth: each peer builds the ODE program's scene. The metrics
+# compared follow from the scene's constants alone (peers/check_same_scene.py).
+# Rows: scene, metrics compared, the one argument both programs get.
+# (test10: once the test10 branch, whose program writes cube_half_size_m,
+# wall_thickness_m, ... as the peers do, is merged, those names join its row.)
+set(ODELAB_SAME_SCENE
+  test2  energy_start_J                                  --seconds=0.01
+  test8  start_length_m                                  --seconds=0.01
+  test9  start_height_m,ball_radius_m                    --seconds=0.01
+  test4  big_mass                                        --seconds=0.01
+  test10 geometric_prediction,guaranteed_stop_velocity   --velocity=50
+)
+list(LENGTH ODELAB_SAME_SCENE _same_count)
+math(EXPR _same_last "${_same_count} - 1")
+foreach(_peer bullet_lab mujoco_lab)
+  foreach(_i RANGE 0 ${_same_last} 3)
+    math(EXPR _j "${_i} + 1")
+    math(EXPR _k "${_i} + 2")
+    list(GET ODELAB_SAME_SCENE ${_i} _scene)
+    list(GET ODELAB_SAME_SCENE ${_j} _metrics)
+    list(GET ODELAB_SAME_SCENE ${_k} _args)
+    add_test(NAME peers_same_scene_${_peer}_${_scene}
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_same_scene.py ${_metrics}
+                     $<TARGET_FILE:${_scene}> $<TARGET_FILE:${_peer}> ${_scene} ${_args})
+    list(APPEND ODELAB_PEER_CHECKS peers_same_scene_${_peer}_${_scene})
+  endforeach()
+endforeach()
+set_tests_properties(${ODELAB_PEER_CHECKS} PROPERTIES LABELS peers)
+
+# Bad input: refused with status 2 and no metrics file (expect_metrics checks both).
+odelab_check(peers_refuse_unknown_scene bullet_lab STATUS 2 ARGS --scene test7)
+odelab_check(peers_refuse_mujoco_ccd mujoco_lab STATUS 2 ARGS --scene test10 --ccd)
+set_tests_properties(peers_refuse_unknown_scene peers_refuse_mujoco_ccd PROPERTIES LABELS peers)

@@ -1,0 +1,244 @@
+"""Live peers: the thesis's measurement scenes on ODE, Bullet and MuJoCo at
+the same steps, each engine at its defaults and at its best (doc/peers.md).
+
+ODE runs its own program (build/tests/testN); the peers run
+build/peers/bullet_lab and build/peers/mujoco_lab, found in the folder
+`peers/` beside the --build-dir folder. Every program writes the same metric
+names, so one reading serves all three engines. The thesis's Havok figures
+come from lab/reference/thesis-figures.csv, quoted, never measured here."""
+
+import re
+
+from .. import markdown as md
+from ..plots import peers as plots
+from ..runner import LabError, RunSpec
+from ..search import highest_passing
+from .base import Experiment, Outcome
+from .limit_test4 import judge as judge_test4
+from .thesis import reference_rows
+
+ENGINES = ("ode", "bullet", "mujoco")
+PEER_PROGRAMS = {"bullet": "bullet_lab", "mujoco": "mujoco_lab"}
+# Below this an error is rounding, not physics: such settings tie, and the cheapest wins.
+ROUNDING = 1e-12
+COMPARE_STEP = 0.001  # the step of the thesis's figures and of the headline
+
+# Each engine's settings per scene: (name, program arguments). A peer's
+# "default" and "best" are defined in its program (peers/*_lab.cpp, printed
+# on its first line); ODE's best is the ODE program's own remedy for the scene.
+PEER_SETTINGS = [("default", ["--setting", "default"]), ("best", ["--setting", "best"])]
+ODE_SETTINGS = {
+    "test2": [("default", []), ("best", ["--solver", "step"])],
+    "test8": [("default", []), ("best", ["--erp", 1.0, "--cfm", 0, "--solver", "step"])],
+    "test9": [("default", [])],  # ERP 0.2, CFM 0 is already the exact bounce
+    "test4": [("default", []), ("best", ["--solver", "step"])],
+    "test10": [("default", []), ("best", ["--ccd"])],
+}
+ODE_SETTING_TEXT = {
+    "test2": "default: the program's (ERP 0.4, CFM 0, QuickStep 20); best: dWorldStep",
+    "test8": "default: the program's (ERP 0.4, CFM 1e-4, QuickStep 20); best: ERP 1.0, CFM 0, dWorldStep (the thesis's most rigid hinge)",
+    "test9": "default: the program's (ERP 0.2, CFM 0, bounce 1.0), already exact",
+    "test4": "default: the program's (ERP 0.2, CFM 1e-6, QuickStep 20); best: dWorldStep",
+    "test10": "default: the program's (ERP 0.3, CFM 0, surface layer 0); best: its --ccd sweep",
+}
+
+
+class Scene:
+    """One measurement scene: what is read, how it is run, which way is better."""
+
+    def __init__(self, name, quantity, metric, label, lower_is_better, quick_steps, full_steps, args, in_quick=True,
+                 not_reached="not reached"):
+        self.name, self.quantity, self.metric, self.label = name, quantity, metric, label
+        self.not_reached = not_reached  # what an empty value means
+        self.lower_is_better = lower_is_better
+        self.quick_steps, self.full_steps = quick_steps, full_steps
+        self.args = args  # quick -> arguments every engine's run of this scene gets
+        self.in_quick = in_quick
+
+    def steps(self, quick):
+        return self.quick_steps if quick else self.full_steps
+
+
+STEPS = [0.01, 0.003, 0.001, 0.0003, 0.0001]
+SCENES = [
+    Scene("test2", "energy_max_deviation", "energy_max_deviation", "largest energy error |E - E0| / E0", True,
+          [0.01, 0.001], STEPS, lambda q: ["--seconds", 5 if q else 20]),
+    Scene("test8", "max_relative_elongation", "max_relative_elongation",
+          "largest relative elongation |l - l0| / l0 (5000 kg bob)", True, [], STEPS,
+          lambda q: ["--seconds", 20], in_quick=False),
+    Scene("test9", "apex_error_20", "apex_error_20", "apex error after 20 bounces", True,
+          [0.01, 0.001], STEPS, lambda q: ["--seconds", 21], not_reached="fewer than 20 bounces"),
+    Scene("test4", "heaviest_held_kg", None, "heaviest big cube held on the 5 kg cube (kg)", False,
+          [], [0.001, 0.0005], lambda q: ["--seconds", 20], in_quick=False, not_reached="not even 50 kg"),
+    Scene("test10", "max_velocity_stopped", "max_velocity", "highest velocity with every launch stopped (m/s)", False,
+          [0.001], [0.01, 0.001, 0.0001], lambda q: ["--find-max-velocity"]),
+]
+ODE_ONLY_ARGS = {  # what only the ODE program needs: no output file rows; test10's scan stops at its first failure
+    "test2": ["--sample-interval", 3600], "test8": ["--sample-interval", 3600], "test10": ["--band-factor", 1.0]}
+
+
+def program_of(engine, scene):
+    return scene.name if engine == "ode" else "../peers/" + PEER_PROGRAMS[engine]
+
+
+def settings_of(engine, scene):
+    return ODE_SETTINGS[scene.name] if engine == "ode" else PEER_SETTINGS
+
+
+def base_args(engine, scene, quick):
+    own = ODE_ONLY_ARGS.get(scene.name, []) if engine == "ode" else ["--scene", scene.name]
+    return [*own, *scene.args(quick)]
+
+
+def per_sim_second(r, seconds):
+    sim = r.m("sim_seconds")
+    return seconds / sim if seconds is not None and sim else None
+
+
+def havok_quote(scene_name):
+    """(text, number or None, conditions) of the thesis's quoted Havok figure for a scene."""
+    for row in reference_rows():
+        if row["test"] == scene_name and row["havok_6_5_quoted_by_thesis"]:
+            text = row["havok_6_5_quoted_by_thesis"]
+            found = re.search(r"([\d.]+)\s*(%|kg|m/s)", text)
+            number = None
+            if found:
+                number = float(found.group(1)) / (100 if found.group(2) == "%" else 1)
+            return text, number, row["conditions"]
+    return None, None, None
+
+
+def thesis_ode(scene_name):
+    rows = [r for r in reference_rows() if r["test"] == scene_name]
+    return "; ".join(f"{r['ode_0_11_1_thesis']} ({r['conditions']})" for r in rows)
+
+
+class Peers(Experiment):
+    name = "peers"
+    title = "ODE, Bullet and MuJoCo on the same scenes"
+    section = 5
+    programs = ("test2", "test4", "test8", "test9", "test10")
+    cost = (400.0, 12.0)
+
+    def run(self, ctx):
+        peers_dir = ctx.runner.build_dir.parent / "peers"
+        missing = [p for p in PEER_PROGRAMS.values() if not (peers_dir / p).exists()]
+        if missing:
+            raise LabError(f"no {', '.join(missing)} in {peers_dir}: the peers are built with the rest "
+                           "(`cmake --build build`, needs libbullet-dev and libmujoco-dev); the lab looks for "
+                           "them in peers/ beside the --build-dir folder")
+        scenes = [s for s in SCENES if s.in_quick or not ctx.quick]
+        plan = [(scene, engine, setting, args, step) for scene in scenes for engine in ENGINES
+                for setting, args in settings_of(engine, scene) for step in scene.steps(ctx.quick)]
+        ctx.expect(len(plan))
+
+        def one(point):
+            scene, engine, setting, args, step = point
+            value, r = (self.heaviest(ctx, scene, engine, args, step) if scene.name == "test4"
+                        else self.measure(ctx, scene, engine, args, step))
+            ctx.advance()
+            return dict(scene=scene.name, engine=engine, setting=setting, step=step, quantity=scene.quantity,
+                        value=value, wall_s_per_sim_s=per_sim_second(r, r.m("wall_seconds")) if r else None,
+                        cpu_s_per_sim_s=per_sim_second(r, r.cpu_seconds) if r else None,
+                        capped=bool(r) and scene.name == "test10" and r.m("first_failure_velocity") == 0,
+                        exit_status=r.rc if r else None)
+
+        rows = ctx.runner.parallel([lambda p=p: one(p) for p in plan])
+        columns = ["scene", "engine", "setting", "step", "quantity", "value", "wall_s_per_sim_s", "cpu_s_per_sim_s"]
+        csv = ctx.write_csv("peers", columns, rows, notes=[
+            "engines at the same step; settings: doc/peers.md; value: the quantity named (empty: not reached, "
+            "e.g. no 20th bounce)",
+            "wall_s_per_sim_s: the program's own run-loop wall_seconds / sim_seconds; cpu_s_per_sim_s: the "
+            "process's user + system time (start-up included) / sim_seconds",
+            "max_velocity_stopped: the ODE program's and the peers' max_velocity metric (test10's scan, stopped at "
+            "the first failure); heaviest_held_kg: the search of limit-test4 on each engine"])
+        parts, headline = [], []
+        for scene in scenes:
+            mine = [r for r in rows if r["scene"] == scene.name]
+            text, line = self.scene_part(ctx, scene, mine)
+            parts.append(text)
+            headline += line
+        intro = f"""Each scene runs on ODE (its own program), Bullet 3.24 and MuJoCo 2.2.2 (the
+programs in `peers/`, doc/peers.md) with the same geometry, masses, gravity,
+step and run length, and each engine at its defaults and at its best for the
+scene. Cost is wall (and CPU) seconds per simulated second on this machine.
+Havok's figures are quoted from the thesis, not measured. ODE's settings:
+{"; ".join(f"{k}: {v}" for k, v in ODE_SETTING_TEXT.items() if any(s.name == k for s in scenes))}.
+
+{md.files_line([csv])}"""
+        return Outcome(intro + "\n\n" + "\n\n".join(parts), headline)
+
+    # ---- one point ---------------------------------------------------------------
+    def measure(self, ctx, scene, engine, args, step):
+        r = ctx.runner.run(RunSpec(program_of(engine, scene),
+                                   [*base_args(engine, scene, ctx.quick), *args, "--step", step], timed=True))
+        return (r.m(scene.metric) if r.rc == 0 else None), r
+
+    def heaviest(self, ctx, scene, engine, args, step):
+        """limit-test4's search and failure rule on any engine: (heaviest held kg, its run)."""
+        def probe(mass):
+            r = ctx.runner.run(RunSpec(program_of(engine, scene),
+                                       [*base_args(engine, scene, ctx.quick), *args, "--big-mass", mass,
+                                        "--step", step], priority=0))
+            passed, reason = judge_test4(r)
+            return passed, r
+
+        result = highest_passing(probe, start=5000.0, factor=4.0, ratio=1.1, low=50.0, high=1e9)
+        held = next((info for value, passed, info in result.probes if value == result.highest_pass), None)
+        return result.highest_pass, held
+
+    # ---- one scene's part of the report ----------------------------------------------
+    def scene_part(self, ctx, scene, rows):
+        havok_text, havok_number, havok_conditions = havok_quote(scene.name)
+        ctx.register_files(plots.peers_speed_accuracy(ctx.out_dir, f"peers-{scene.name}", rows, scene.label,
+                                                      scene.lower_is_better, havok_number, ROUNDING))
+        table = [[r["engine"], r["setting"], md.num(r["step"]), self.value_text(scene, r),
+                  md.num(r["wall_s_per_sim_s"], 3), md.num(r["cpu_s_per_sim_s"], 3)] for r in rows]
+        ties = self.best_at_compare_step(scene, rows)
+        verdict = f"No engine reached a figure at step {COMPARE_STEP}."
+        headline = []
+        if ties:
+            winner = min(ties, key=lambda r: r["wall_s_per_sim_s"] or 0)
+            ode = [r for r in rows if r["engine"] == "ode" and r["setting"] == "default" and r["step"] == COMPARE_STEP]
+            ode_text = f"; ODE at its default {self.value_text(scene, ode[0])}" if ode else ""
+            names = ", ".join(f"{r['engine']} ({r['setting']})" for r in ties)
+            how = "exact to rounding" if self.exact(scene, winner) else "best"
+            verdict = (f"At step {COMPARE_STEP}: {names} {'is' if len(ties) == 1 else 'are'} {how} with "
+                       f"{self.value_text(scene, winner)}" +
+                       (f", the cheapest {winner['engine']} ({winner['setting']})" if len(ties) > 1 else "") +
+                       f" at {md.num(winner['wall_s_per_sim_s'], 3)} wall s per simulated s{ode_text}.")
+            headline.append(f"peers {scene.name} ({scene.label}): {verdict[0].lower() + verdict[1:]}")
+        havok = (f"Havok 6.5, quoted by the thesis ({havok_conditions}): **{havok_text}**."
+                 if havok_text else "The thesis quotes no Havok figure for this scene.")
+        text = f"""#### {scene.name}: {scene.label}
+
+{verdict} {havok} The thesis's ODE 0.11.1: {thesis_ode(scene.name) or "-"}.
+
+{md.table(["engine", "setting", "step (s)", scene.quantity, "wall s / sim s", "CPU s / sim s"], table)}
+
+{md.figure(f"peers-{scene.name}", f"{scene.name}: {scene.label} against wall seconds per simulated second, "
+           "one curve per engine and setting (steps large to small)" +
+           (", Havok's quoted figure as a line" if havok_number is not None else ""))}"""
+        return text, headline
+
+    @staticmethod
+    def exact(scene, r):
+        return scene.lower_is_better and r["value"] is not None and r["value"] < ROUNDING
+
+    def value_text(self, scene, r):
+        if r["value"] is None:
+            return scene.not_reached if r["exit_status"] in (0, None) else f"blew up (exit {r['exit_status']})"
+        text = md.num(r["value"], 3)
+        return text + " (scan limit)" if r.get("capped") else text
+
+    @staticmethod
+    def best_at_compare_step(scene, rows):
+        """The most accurate settings at COMPARE_STEP (errors below ROUNDING tie); [] if none has a figure."""
+        at = [r for r in rows if r["step"] == COMPARE_STEP and r["value"] is not None]
+        if not at:
+            return []
+        if scene.lower_is_better:
+            best = min(max(r["value"], ROUNDING) for r in at)
+            return [r for r in at if max(r["value"], ROUNDING) == best]
+        best = max(r["value"] for r in at)
+        return [r for r in at if r["value"] == best]

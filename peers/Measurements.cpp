@@ -1,0 +1,246 @@
+#include "Measurements.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "Test10Scene.h"
+#include "WorldSettings.h"
+#include "shared/ApexTracker.h"
+#include "shared/SceneConstants.h"
+
+namespace odelab::peers {
+
+namespace {
+
+constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+long stepsFor(const RunOptions& options) {
+  const double seconds = options.seconds >= 0 ? options.seconds : defaultSeconds(options.scene);
+  return std::lround(seconds / options.step);
+}
+
+double distance(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z); }
+
+}  // namespace
+
+double defaultSeconds(const std::string& scene) {
+  if (scene == "test2") return scene::test2::RUN_SECONDS;
+  if (scene == "test8") return scene::test8::RUN_SECONDS;
+  if (scene == "test9") return scene::test9::RUN_SECONDS;
+  if (scene == "test4") return scene::test4::RUN_SECONDS;
+  return 0.0;  // test10 runs launches until each is resolved
+}
+
+// test2: total energy m g y + kinetic, its largest deviation from the start.
+Tally measureEnergy(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  auto pendulum = engine.pendulum(scene::test2::BOB_MASS, options);
+  const double weight = pendulum->mass() * SURFACE_GRAVITY;
+  auto energy = [&] { return weight * pendulum->centreOfMass().y + pendulum->kineticEnergy(); };
+  const double start = energy();
+  double low = start, high = start, last = start;
+  Tally tally;
+  for (long i = 0, n = stepsFor(options); i < n; ++i) {
+    pendulum->step();
+    last = energy();
+    if (!std::isfinite(last)) {
+      tally.finite = false;
+      break;
+    }
+    low = std::min(low, last);
+    high = std::max(high, last);
+    ++tally.steps;
+  }
+  tally.simSeconds = tally.steps * options.step;
+  metrics.set("energy_rel_variation", (high - low) / high);
+  metrics.set("energy_drift", (last - start) / start);
+  metrics.set("energy_max_deviation", std::max(high - start, start - low) / start);
+  metrics.set("energy_start_J", start);
+  metrics.set("energy_min_J", low);
+  metrics.set("energy_max_J", high);
+  metrics.set("energy_last_J", last);
+  metrics.set("composite_mass_kg", pendulum->mass());
+  return tally;
+}
+
+// test8: relative elongation (l - l0) / l0 of the anchor-to-centre-of-mass distance.
+Tally measureElongation(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  const double bobMass = options.bobMass > 0 ? options.bobMass : scene::test8::HEAVY_BOB_MASS;
+  auto pendulum = engine.pendulum(bobMass, options);
+  const Vec3 anchor{0.0, scene::test2::ANCHOR_HEIGHT, 0.0};
+  const double startLength = distance(pendulum->centreOfMass(), anchor);
+  double largest = 0.0, sum = 0.0;
+  Tally tally;
+  for (long i = 0, n = stepsFor(options); i < n; ++i) {
+    pendulum->step();
+    const Vec3 centre = pendulum->centreOfMass();
+    if (!finite(centre)) {
+      tally.finite = false;
+      break;
+    }
+    const double elongation = (distance(centre, anchor) - startLength) / startLength;
+    largest = std::max(largest, std::fabs(elongation));
+    sum += elongation;
+    ++tally.steps;
+  }
+  tally.simSeconds = tally.steps * options.step;
+  metrics.set("max_relative_elongation", largest);
+  metrics.set("mean_relative_elongation", tally.steps ? sum / tally.steps : 0.0);
+  metrics.set("start_length_m", startLength);
+  metrics.set("composite_mass_kg", pendulum->mass());
+  return tally;
+}
+
+// test9: apex error relative to the start height above the contact, after 5, 10, 20 bounces.
+Tally measureBounces(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  using namespace scene::test9;
+  auto ball = engine.ball(options);
+  const Vec3 start = ball->centre();
+  const double startPosition[3] = {start.x, start.y, start.z};
+  ApexTracker tracker;  // the ODE program's: the vertex of the parabola through three steps
+  tracker.restart(0.0, startPosition);
+  std::vector<double> errors;
+  double drift = 0.0;
+  Tally tally;
+  for (long i = 0, n = stepsFor(options); i < n; ++i) {
+    ball->step();
+    const Vec3 c = ball->centre();
+    if (!finite(c)) {
+      tally.finite = false;
+      break;
+    }
+    ++tally.steps;
+    drift = std::max(drift, std::hypot(c.x, c.z));
+    const double position[3] = {c.x, c.y, c.z};
+    Apex apex;
+    if (tracker.update(tally.steps * options.step, position, apex))
+      errors.push_back(std::fabs(apex.position[1] - tracker.releaseApex().position[1]) / (START_HEIGHT - BALL_RADIUS));
+  }
+  tally.simSeconds = tally.steps * options.step;
+  for (int bounces : {5, 10, 20})
+    metrics.set("apex_error_" + std::to_string(bounces),
+                bounces <= static_cast<int>(errors.size()) ? errors[bounces - 1] : NaN);
+  metrics.set("max_horizontal_drift", drift);
+  metrics.set("bounces", static_cast<double>(tracker.count()));
+  metrics.set("last_apex_error", errors.empty() ? NaN : errors.back());
+  metrics.set("start_height_m", start.y);
+  metrics.set("ball_radius_m", BALL_RADIUS);
+  return tally;
+}
+
+// test4: how long the big cube stays balanced on the small one (test4's rule).
+Tally measureHold(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  using namespace scene::test4;
+  const double bigMass = options.bigMass > 0 ? options.bigMass : DEFAULT_BIG_MASS;
+  auto stack = engine.stack(bigMass, options);
+  double heldUntil = -1.0, maxTilt = 0.0, maxPenetration = 0.0;
+  Tally tally;
+  for (long i = 0, n = stepsFor(options); i < n; ++i) {
+    stack->step();
+    const Vec3 p = stack->bigCentre();
+    if (!finite(p)) {
+      tally.finite = false;
+      break;
+    }
+    ++tally.steps;
+    const double time = tally.steps * options.step;
+    if (heldUntil < 0 && (std::hypot(p.x, p.z) > SIDEWAYS_LIMIT || p.y < BIG_FALLEN_HEIGHT)) heldUntil = time;
+    maxTilt = std::max(maxTilt, stack->bigTiltDegrees());
+    maxPenetration = std::max(maxPenetration, stack->deepestPenetration());
+  }
+  tally.simSeconds = tally.steps * options.step;
+  const bool held = heldUntil < 0 && tally.finite;
+  metrics.set("big_mass", bigMass);
+  metrics.set("seconds_held", held ? tally.simSeconds : std::max(heldUntil, 0.0));
+  metrics.set("held", held ? 1 : 0);
+  metrics.set("max_tilt_degrees", maxTilt);
+  metrics.set("max_penetration", maxPenetration);
+  return tally;
+}
+
+namespace {
+
+enum class Outcome { InFlight, Stopped, Passed, BlewUp };
+
+// One launch, stepped until test10's rule decides it.
+Outcome launchAndResolve(Engine& engine, const RunOptions& options, double velocity, Tally& tally) {
+  using namespace test10;
+  const double half = CUBE_SIDE / 2, farFace = WALL_X + WALL_THICKNESS / 2;
+  const double reachSeconds = (farFace + half - LAUNCH_X) / velocity;
+  auto cube = engine.launch(velocity, options);
+  for (long steps = 1;; ++steps) {
+    cube->step();
+    ++tally.steps;
+    tally.simSeconds += options.step;
+    const Vec3 p = cube->cubeCentre();
+    const double vx = cube->cubeVelocityX();
+    if (!finite(p) || !std::isfinite(vx)) return Outcome::BlewUp;
+    if (p.x - half > farFace) return Outcome::Passed;
+    if (vx <= 0.0 && p.x < WALL_X) return Outcome::Stopped;
+    if (steps * options.step > reachSeconds + SETTLE_SECONDS) return p.x > farFace ? Outcome::Passed : Outcome::Stopped;
+  }
+}
+
+}  // namespace
+
+// test10: one launch at --velocity, or the scan for the highest velocity with
+// every launch up to it stopped (test10's --find-max-velocity, without its band).
+Tally measureWall(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  using namespace test10;
+  Tally tally;
+  int launched = 0, stopped = 0, passed = 0;
+  auto run = [&](double velocity) {
+    const Outcome outcome = launchAndResolve(engine, options, velocity, tally);
+    ++launched;
+    if (outcome == Outcome::Stopped) ++stopped;
+    if (outcome == Outcome::Passed) ++passed;
+    if (outcome == Outcome::BlewUp) tally.finite = false;
+    return outcome;
+  };
+  const double half = CUBE_SIDE / 2;
+  metrics.set("launch_velocity", options.findMaxVelocity ? 0.0 : options.velocity);
+  metrics.set("geometric_prediction", (half + WALL_THICKNESS) / options.step);
+  metrics.set("guaranteed_stop_velocity", (half + WALL_THICKNESS / 2) / options.step);
+  metrics.set("ccd", options.ccd ? 1 : 0);
+  // The scene as built, under the names test10 writes them (the constants check).
+  metrics.set("cube_half_size_m", half);
+  metrics.set("cube_mass_kg", CUBE_MASS);
+  metrics.set("wall_thickness_m", WALL_THICKNESS);
+  metrics.set("wall_x_m", WALL_X);
+  metrics.set("wall_height_m", WALL_HEIGHT);
+  metrics.set("wall_width_m", WALL_WIDTH);
+  metrics.set("launch_x_m", LAUNCH_X);
+  metrics.set("launch_y_m", LAUNCH_Y);
+  if (!options.findMaxVelocity) {
+    run(options.velocity);
+  } else {
+    double maxVelocity = 0.0, firstFailure = 0.0;
+    int tested = 0;
+    for (double v = SCAN_FINE_STEP; v <= SCAN_LIMIT * (1 + 1e-12);
+         v = v < SCAN_FINE_LIMIT ? v + SCAN_FINE_STEP : v * (1 + SCAN_COARSE_RATIO)) {
+      const Outcome outcome = run(v);
+      if (outcome == Outcome::BlewUp) break;
+      ++tested;
+      if (outcome != Outcome::Stopped) {
+        firstFailure = v;
+        break;
+      }
+      maxVelocity = v;
+    }
+    metrics.set("max_velocity", maxVelocity);
+    metrics.set("max_velocity_resolution", maxVelocity < SCAN_FINE_LIMIT ? SCAN_FINE_STEP : maxVelocity * SCAN_COARSE_RATIO);
+    metrics.set("first_failure_velocity", firstFailure);
+    metrics.set("tested_velocities", tested);
+  }
+  metrics.set("launches", launched);
+  metrics.set("stopped", stopped);
+  metrics.set("passed_through", passed);
+  return tally;
+}
+
+}  // namespace odelab::peers

@@ -1,0 +1,108 @@
+#pragma once
+
+// What a peer engine (Bullet, MuJoCo) must provide to run the thesis's
+// measurement scenes: one small model per scene that steps and reads back the
+// state the measurement needs. The measurements themselves (Measurements.cpp)
+// and the command line (PeerMain.cpp) are written once for every engine, so
+// the engines differ only where they really do: how a scene is built and set.
+//
+// Every position and velocity is given in the thesis's frame: y up, gravity
+// along -y, whatever the engine's own convention.
+
+#include <memory>
+#include <string>
+
+namespace odelab::peers {
+
+struct Vec3 {
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+
+// "default": what a user gets from the engine with the scene built as the
+// thesis describes it and nothing else changed. "best": the engine's settings
+// that make this scene most accurate (named per engine in settingText).
+enum class Setting { Default, Best };
+
+struct RunOptions {
+  std::string scene = "test2";
+  double step = 0.001;    // s, the ODE programs' default
+  double seconds = -1.0;  // < 0: the ODE program's default run length for the scene
+  Setting setting = Setting::Default;
+  bool ccd = false;       // continuous collision (Bullet's; MuJoCo has none)
+  double velocity = 200.0;  // test10: launch velocity, m/s (the ODE program's default)
+  bool findMaxVelocity = false;
+  double bigMass = 0.0;   // test4: 0 means the scene's default
+  double bobMass = 0.0;   // test8: 0 means the scene's default
+};
+
+// test2 / test8: the composite pendulum hinged to the world.
+class PendulumModel {
+ public:
+  virtual ~PendulumModel() = default;
+  virtual void step() = 0;
+  virtual Vec3 centreOfMass() const = 0;
+  virtual double kineticEnergy() const = 0;  // translation and rotation, J
+  virtual double mass() const = 0;           // as the engine holds it, kg
+};
+
+// test9: the bouncing ball.
+class BallModel {
+ public:
+  virtual ~BallModel() = default;
+  virtual void step() = 0;
+  virtual Vec3 centre() const = 0;
+};
+
+// test4: the big cube on the small cube on the platform.
+class StackModel {
+ public:
+  virtual ~StackModel() = default;
+  virtual void step() = 0;
+  virtual Vec3 bigCentre() const = 0;
+  virtual double bigTiltDegrees() const = 0;      // local y against world y
+  virtual double deepestPenetration() const = 0;  // m, 0 when nothing overlaps
+};
+
+// test10: one cube launched at the wall.
+class LaunchModel {
+ public:
+  virtual ~LaunchModel() = default;
+  virtual void step() = 0;
+  virtual Vec3 cubeCentre() const = 0;
+  virtual double cubeVelocityX() const = 0;
+};
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+  virtual std::string name() const = 0;
+  virtual bool hasContinuousCollision() const { return false; }
+  // One line saying what the chosen setting is for this scene and why.
+  virtual std::string settingText(const RunOptions& options) const = 0;
+  virtual std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& options) = 0;
+  virtual std::unique_ptr<BallModel> ball(const RunOptions& options) = 0;
+  virtual std::unique_ptr<StackModel> stack(double bigMass, const RunOptions& options) = 0;
+  virtual std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& options) = 0;
+};
+
+// An engine made of its four scene models: the factories written once.
+template <class Pendulum, class Ball, class Stack, class Launch>
+class EngineOf : public Engine {
+ public:
+  std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& o) override {
+    return std::make_unique<Pendulum>(bobMass, o);
+  }
+  std::unique_ptr<BallModel> ball(const RunOptions& o) override { return std::make_unique<Ball>(o); }
+  std::unique_ptr<StackModel> stack(double bigMass, const RunOptions& o) override {
+    return std::make_unique<Stack>(bigMass, o);
+  }
+  std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& o) override {
+    return std::make_unique<Launch>(velocity, o);
+  }
+};
+
+// The whole program: options, the scene's measurement, metrics. Exit status
+// 0 done, 2 bad usage, 3 the state became non-finite.
+int runPeer(int argc, char** argv, Engine& engine);
+
+}  // namespace odelab::peers

@@ -1,0 +1,270 @@
+// mujoco_lab: the thesis's measurement scenes on MuJoCo 2 (generalized
+// coordinates, soft contacts), each scene an MJCF text generated here and
+// loaded from memory through a virtual file system: no files beside the
+// binary. Same geometry, masses, gravity and step as the ODE programs;
+// MuJoCo's z-up habit is kept out of the way by pointing gravity along -y and
+// turning the ground plane's normal (its local z) to +y.
+#include <mujoco/mujoco.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "PeerScene.h"
+#include "Test10Scene.h"
+#include "WorldSettings.h"
+#include "shared/SceneConstants.h"
+
+namespace {
+
+using namespace odelab;
+using namespace odelab::peers;
+
+constexpr char MODEL_FILE[] = "scene.xml";
+
+// Best for the bounce: MuJoCo has no restitution coefficient; its documented
+// way to a bouncy contact is a negative solref, "-stiffness -damping", here
+// with zero damping (an undamped spring contact), integrated with RK4. The
+// stiffness is the contact's acceleration per metre of overlap: 5e3 /s^2
+// lasts pi / sqrt(5e3) = 44 ms (44 steps at 0.001 s) and sinks the ball
+// 0.27 m at the scene's 18.8 m/s impact. Stiffer springs (2e4, 1e5) were
+// measured less accurate at step 0.001 (apex error after 20 bounces 5e-3 and
+// 8e-3 against 1.7e-4): fewer steps per contact.
+constexpr double BOUNCE_STIFFNESS = 5e3;
+
+struct ModelDeleter {
+  void operator()(mjModel* m) const { mj_deleteModel(m); }
+};
+struct DataDeleter {
+  void operator()(mjData* d) const { mj_deleteData(d); }
+};
+
+// Loads MJCF text through a virtual file (the VFS is about 2 MB: on the heap).
+mjModel* loadModel(const std::string& xml) {
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  if (mj_makeEmptyFileVFS(vfs.get(), MODEL_FILE, static_cast<int>(xml.size())) != 0)
+    throw std::runtime_error("MuJoCo: cannot make the virtual model file");
+  const int index = mj_findFileVFS(vfs.get(), MODEL_FILE);
+  std::memcpy(vfs->filedata[index], xml.data(), xml.size());
+  char error[1000] = "";
+  mjModel* model = mj_loadXML(MODEL_FILE, vfs.get(), error, sizeof error);
+  mj_deleteVFS(vfs.get());
+  if (!model) throw std::runtime_error(std::string("MuJoCo rejected the generated model: ") + error);
+  return model;
+}
+
+// A loaded scene: the model, its data, and the fixed step.
+class MujocoScene {
+ public:
+  explicit MujocoScene(const std::string& xml) : model_(loadModel(xml)), data_(mj_makeData(model_.get())) {
+    mj_forward(model_.get(), data_.get());
+  }
+  void step() { mj_step(model_.get(), data_.get()); }
+  mjModel* m() const { return model_.get(); }
+  mjData* d() const { return data_.get(); }
+
+ private:
+  std::unique_ptr<mjModel, ModelDeleter> model_;
+  std::unique_ptr<mjData, DataDeleter> data_;
+};
+
+// The <mujoco> header every scene shares: step, gravity along -y, integrator.
+std::string header(const char* name, double step, double gravity, const char* integrator,
+                   const std::string& extraOptions = "") {
+  std::ostringstream s;
+  s.precision(17);
+  s << "<mujoco model=\"" << name << "\">\n"
+    << "  <compiler angle=\"radian\"/>\n"
+    << "  <option timestep=\"" << step << "\" gravity=\"0 " << -gravity << " 0\" integrator=\"" << integrator
+    << "\" " << extraOptions << "/>\n";
+  return s.str();
+}
+
+const char* GROUND = "    <geom name=\"ground\" type=\"plane\" size=\"0 0 1\" zaxis=\"0 1 0\"/>\n";
+
+// ---- test2 / test8 ---------------------------------------------------------------
+// Best for the pendulum: RK4 instead of MuJoCo's default semi-implicit Euler.
+class MujocoPendulum : public PendulumModel {
+ public:
+  MujocoPendulum(double bobMass, const RunOptions& o) : scene_(xml(bobMass, o)) {
+    // One hinge to the world: the joint-space inertia is the body's moment
+    // about the axis, the same in every pose.
+    axisInertia_ = scene_.d()->qM[0];
+  }
+  void step() override {
+    scene_.step();
+    mj_kinematics(scene_.m(), scene_.d());  // positions of the new state (mj_step leaves the old ones)
+  }
+  Vec3 centreOfMass() const override {
+    const double* c = scene_.d()->xipos + 3;  // body 1
+    return {c[0], c[1], c[2]};
+  }
+  double kineticEnergy() const override { return 0.5 * axisInertia_ * scene_.d()->qvel[0] * scene_.d()->qvel[0]; }
+  double mass() const override { return scene_.m()->body_mass[1]; }
+
+ private:
+  static std::string xml(double bobMass, const RunOptions& o) {
+    using namespace scene::test2;
+    std::ostringstream s;
+    s.precision(17);
+    s << header("odelab-pendulum", o.step, SURFACE_GRAVITY, o.setting == Setting::Best ? "RK4" : "Euler")
+      << "  <worldbody>\n" << GROUND
+      << "    <body pos=\"0 " << ANCHOR_HEIGHT << " 0\">\n"
+      << "      <joint type=\"hinge\" axis=\"0 0 1\" pos=\"0 0 0\"/>\n"
+      << "      <geom type=\"box\" pos=\"" << ROD_LENGTH / 2 << " 0 0\" size=\"" << ROD_LENGTH / 2 << ' '
+      << ROD_THICKNESS / 2 << ' ' << ROD_THICKNESS / 2 << "\" mass=\"" << ROD_MASS << "\"/>\n"
+      << "      <geom type=\"sphere\" pos=\"" << BOB_DISTANCE << " 0 0\" size=\"" << BOB_RADIUS << "\" mass=\""
+      << bobMass << "\"/>\n"
+      << "    </body>\n  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  MujocoScene scene_;
+  double axisInertia_ = 0.0;
+};
+
+// ---- test9 -------------------------------------------------------------------
+class MujocoBall : public BallModel {
+ public:
+  explicit MujocoBall(const RunOptions& o) : scene_(xml(o)) {}
+  void step() override { scene_.step(); }
+  Vec3 centre() const override {
+    const double* q = scene_.d()->qpos;  // free joint: position first
+    return {q[0], q[1], q[2]};
+  }
+
+ private:
+  static std::string xml(const RunOptions& o) {
+    using namespace scene::test9;
+    const bool best = o.setting == Setting::Best;
+    std::ostringstream s;
+    s.precision(17);
+    s << header("odelab-test9", o.step, GRAVITY_FACTOR * SURFACE_GRAVITY, best ? "RK4" : "Euler")
+      << "  <worldbody>\n" << GROUND
+      << "    <body pos=\"0 " << START_HEIGHT << " 0\">\n      <freejoint/>\n"
+      << "      <geom type=\"sphere\" size=\"" << BALL_RADIUS << "\" mass=\"" << BALL_MASS << "\"";
+    if (best) s << " solref=\"" << -BOUNCE_STIFFNESS << " 0\"";
+    s << "/>\n    </body>\n  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  MujocoScene scene_;
+};
+
+// ---- test4 -------------------------------------------------------------------
+// Best for the stack: the stiffest contacts MuJoCo accepts at this step (time
+// constant 2 steps, its safe minimum, instead of 0.02 s), impedance near 1
+// (a harder contact: less of the load is let through as overlap) and
+// elliptic friction cones.
+const char* BEST_SOLIMP = "0.99 0.999 0.001";
+class MujocoStack : public StackModel {
+ public:
+  MujocoStack(double bigMass, const RunOptions& o) : scene_(xml(bigMass, o)) {}
+  void step() override { scene_.step(); }
+  Vec3 bigCentre() const override {
+    const double* q = scene_.d()->qpos + 7;  // second free joint: the big cube
+    return {q[0], q[1], q[2]};
+  }
+  double bigTiltDegrees() const override {
+    const double* q = scene_.d()->qpos + 10;  // its quaternion w, x, y, z
+    const double up = 1 - 2 * (q[1] * q[1] + q[3] * q[3]);  // world y of the local y axis
+    return std::acos(std::max(-1.0, std::min(1.0, up))) * 180.0 / M_PI;
+  }
+  double deepestPenetration() const override {
+    double deepest = 0.0;
+    for (int i = 0; i < scene_.d()->ncon; ++i) deepest = std::max(deepest, -scene_.d()->contact[i].dist);
+    return deepest;
+  }
+
+ private:
+  static std::string xml(double bigMass, const RunOptions& o) {
+    using namespace scene::test4;
+    const bool best = o.setting == Setting::Best;
+    std::ostringstream s;
+    s.precision(17);
+    s << header("odelab-test4", o.step, SURFACE_GRAVITY, "Euler", best ? "cone=\"elliptic\"" : "");
+    if (best) s << "  <default><geom solref=\"" << 2 * o.step << " 1\" solimp=\"" << BEST_SOLIMP << "\"/></default>\n";
+    s << "  <worldbody>\n"
+      << "    <geom type=\"box\" pos=\"0 " << -PLATFORM_THICKNESS / 2 << " 0\" size=\"" << PLATFORM_SIDE / 2 << ' '
+      << PLATFORM_THICKNESS / 2 << ' ' << PLATFORM_SIDE / 2 << "\"/>\n"
+      << "    <body pos=\"0 " << SMALL_SIDE / 2 << " 0\">\n      <freejoint/>\n"
+      << "      <geom type=\"box\" size=\"" << SMALL_SIDE / 2 << ' ' << SMALL_SIDE / 2 << ' ' << SMALL_SIDE / 2
+      << "\" mass=\"" << SMALL_MASS << "\"/>\n    </body>\n"
+      << "    <body pos=\"0 " << BIG_START_HEIGHT << " 0\">\n      <freejoint/>\n"
+      << "      <geom type=\"box\" size=\"" << BIG_SIDE / 2 << ' ' << BIG_SIDE / 2 << ' ' << BIG_SIDE / 2
+      << "\" mass=\"" << bigMass << "\"/>\n    </body>\n"
+      << "  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  MujocoScene scene_;
+};
+
+// ---- test10 ------------------------------------------------------------------
+// Best for the wall: the stiffest contact MuJoCo accepts at this step (time
+// constant 2 steps, its safe minimum; the default is 0.02 s), so that a cube
+// sinks less far into the wall before it is pushed back.
+class MujocoLaunch : public LaunchModel {
+ public:
+  MujocoLaunch(double velocity, const RunOptions& o) : scene_(xml(o)) {
+    scene_.d()->qvel[0] = velocity;
+    mj_forward(scene_.m(), scene_.d());
+  }
+  void step() override { scene_.step(); }
+  Vec3 cubeCentre() const override {
+    const double* q = scene_.d()->qpos;
+    return {q[0], q[1], q[2]};
+  }
+  double cubeVelocityX() const override { return scene_.d()->qvel[0]; }
+
+ private:
+  static std::string xml(const RunOptions& o) {
+    using namespace odelab::peers::test10;
+    const bool best = o.setting == Setting::Best;
+    std::ostringstream s;
+    s.precision(17);
+    s << header("odelab-test10", o.step, SURFACE_GRAVITY, "Euler");
+    if (best) s << "  <default><geom solref=\"" << 2 * o.step << " 1\"/></default>\n";
+    s << "  <worldbody>\n" << GROUND
+      << "    <geom type=\"box\" pos=\"" << WALL_X << ' ' << WALL_HEIGHT / 2 << " 0\" size=\"" << WALL_THICKNESS / 2
+      << ' ' << WALL_HEIGHT / 2 << ' ' << WALL_WIDTH / 2 << "\"/>\n"
+      << "    <body pos=\"" << LAUNCH_X << ' ' << LAUNCH_Y << ' ' << LAUNCH_Z << "\">\n      <freejoint/>\n"
+      << "      <geom type=\"box\" size=\"" << CUBE_SIDE / 2 << ' ' << CUBE_SIDE / 2 << ' ' << CUBE_SIDE / 2
+      << "\" mass=\"" << CUBE_MASS << "\"/>\n    </body>\n"
+      << "  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  MujocoScene scene_;
+};
+
+class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLaunch> {
+ public:
+  std::string name() const override { return "mujoco"; }
+  std::string settingText(const RunOptions& o) const override {
+    const bool best = o.setting == Setting::Best;
+    std::string text = "MJCF from memory, Newton solver, pyramidal cones unless said; ";
+    if (o.scene == "test2" || o.scene == "test8")
+      text += best ? "RK4 integrator" : "semi-implicit Euler (MuJoCo's default)";
+    else if (o.scene == "test9")
+      text += best ? "no restitution in MuJoCo: undamped spring contact solref \"-5e3 0\", RK4"
+                   : "no restitution in MuJoCo: its default contact (solref 0.02 1, critically damped)";
+    else if (o.scene == "test4")
+      text += best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones" : "MuJoCo's defaults";
+    else
+      text += best ? "contact time constant 2 steps (solref 2h 1)" : "MuJoCo's defaults (solref 0.02 1)";
+    return text;
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Mujoco mujoco;
+  try {
+    return odelab::peers::runPeer(argc, argv, mujoco);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "error: %s\n", error.what());
+    return 1;
+  }
+}
