@@ -13,7 +13,7 @@ namespace odelab {
 
 namespace {
 // The panel's width in text heights: room for a label, a slider and a field.
-constexpr float WIDTH_IN_LINES = 22.0f;
+constexpr float WIDTH_IN_LINES = 18.0f;
 }  // namespace
 
 ControlPanel::ControlPanel(SDL_Window* window, void* glContext, const std::string& fontPath, int textPixels,
@@ -165,10 +165,12 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
     x_ = static_cast<float>(windowWidth) - width_ - MARGIN;
     y_ = MARGIN;
     ImGui::SetNextWindowPos(ImVec2(x_, y_), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(width_, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(width_, 0), ImVec2(width_, static_cast<float>(windowHeight - 2 * MARGIN)));
+    // The whole column, so the scene's view ends where the panel begins;
+    // what does not fit scrolls.
+    ImGui::SetNextWindowSize(ImVec2(width_, static_cast<float>(std::max(1, windowHeight - 2 * MARGIN))),
+                             ImGuiCond_Always);
     ImGui::Begin("Controls (Tab hides)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                                      ImGuiWindowFlags_AlwaysAutoResize);
+                                                      ImGuiWindowFlags_NoCollapse);
     timeButtons(scene);
     ImGui::Separator();
     settings(scene);

@@ -28,8 +28,8 @@ class ControlPanel {
   bool handleEvent(const SDL_Event& event);
   void toggle() { visible_ = !visible_; }
   bool visible() const { return visible_; }
-  // Width the panel covers at the window's right edge (0 when hidden).
-  int coveredWidth() const { return visible_ ? static_cast<int>(width_) + MARGIN : 0; }
+  // Width the panel's column takes at the window's right edge (0 when hidden).
+  int coveredWidth() const { return visible_ ? static_cast<int>(width_) + 2 * MARGIN : 0; }
   // Builds and draws this frame's panel over the scene.
   void draw(AbstractWindow& scene, int windowWidth, int windowHeight);
 

@@ -130,7 +130,10 @@ void FrameLoop::pollEvents(long long frame) {
       views_.panel.toggle();
       continue;
     }
-    if (input_.handleEvent(event, scene_, windowWidth, windowHeight)) window_.updateDrawableSize();
+    // The scene's view is the window less the panel's column (in window
+    // coordinates, which differ from pixels on a high-DPI display).
+    const int covered = window_.width() > 0 ? views_.panel.coveredWidth() * windowWidth / window_.width() : 0;
+    if (input_.handleEvent(event, scene_, windowWidth - covered, windowHeight)) window_.updateDrawableSize();
   }
   syncMouseLook(scene_);
 }
@@ -151,18 +154,21 @@ void FrameLoop::drawNotice(int width, int height) {
 }
 
 void FrameLoop::draw() {
-  const int width = window_.width(), height = window_.height();
+  // The panel is a column at the right edge; the scene, the HUD and the
+  // overlays share the rest, so the panel never covers the subject.
+  const int windowWidth = window_.width(), height = window_.height();
+  const int width = std::max(1, windowWidth - views_.panel.coveredWidth());
   views_.renderer.render(scene_, width, height);
   glm::vec3 grabbed, target;
   const bool dragging = input_.dragLine(scene_, grabbed, target);
   views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
   views_.text.setSizeFor(options_.textSize, height);
-  views_.text.draw(scene_.hudLines(), width, height, views_.panel.coveredWidth());
+  views_.text.draw(scene_.hudLines(), width, height);
   const ViewFlags& flags = scene_.viewFlags();
   if (flags.plot) views_.plot.draw(scene_.chart(), views_.text, width, height);
   if (flags.help) drawHelp(width, height);
   drawNotice(width, height);
-  views_.panel.draw(scene_, width, height);
+  views_.panel.draw(scene_, windowWidth, height);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }
