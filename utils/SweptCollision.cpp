@@ -54,6 +54,7 @@ struct ShapeAt {
   double half[3];  // box half-sides
   double radius;   // sphere
   double normal[3], offset;  // plane: normal . x = offset, solid below
+  bool exact = true;         // false: another shape, held by this bounding box
 
   // Half-width along the unit direction n (the support): exact for boxes and spheres.
   double halfWidthAlong(const double* n) const {
@@ -110,6 +111,7 @@ ShapeAt describe(dGeomID geom) {
   dReal aabb[6];
   dGeomGetAABB(geom, aabb);
   shape.kind = ShapeAt::Box;
+  shape.exact = false;
   shape.rotation = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
   for (int k = 0; k < 3; ++k) {
     shape.centre[k] = 0.5 * (aabb[2 * k] + aabb[2 * k + 1]);
@@ -122,7 +124,7 @@ ShapeAt describe(dGeomID geom) {
 // axes (the 3 + 3 face normals and the 9 edge-edge cross products). It is
 // at most the distance (a projection never lengthens), and positive exactly
 // when they are apart (the separating axis theorem).
-double boxBoxSeparation(const ShapeAt& a, const ShapeAt& b) {
+double boxBoxSeparation(const ShapeAt& a, const ShapeAt& b, double enough) {
   const double between[3] = {b.centre[0] - a.centre[0], b.centre[1] - a.centre[1], b.centre[2] - a.centre[2]};
   double best = -INF;
   auto tryAxis = [&](const double* axis) {
@@ -132,6 +134,9 @@ double boxBoxSeparation(const ShapeAt& a, const ShapeAt& b) {
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k) axesA[i][k] = a.rotation.column(k, i), axesB[i][k] = b.rotation.column(k, i);
   for (int i = 0; i < 3; ++i) tryAxis(axesA[i]), tryAxis(axesB[i]);
+  // Any axis gives a lower bound: far apart, the face normals are enough
+  // and the edge axes are left out (most of a far sweep's cost).
+  if (best > enough) return best;
   for (const auto& u : axesA)
     for (const auto& v : axesB) {
       double axis[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
@@ -144,8 +149,9 @@ double boxBoxSeparation(const ShapeAt& a, const ShapeAt& b) {
 }
 
 // A lower bound on the distance between a moving box or sphere and a fixed
-// box, sphere or plane; zero or less exactly when they overlap.
-double separation(const ShapeAt& moving, const ShapeAt& fixed) {
+// box, sphere or plane; zero or less exactly when they overlap. Where it is
+// above `enough`, it may be less tight than it could be.
+double separation(const ShapeAt& moving, const ShapeAt& fixed, double enough = 0.0) {
   if (fixed.kind == ShapeAt::Plane)
     return dot(fixed.normal, moving.centre) - fixed.offset - moving.halfWidthAlong(fixed.normal);
   if (moving.kind == ShapeAt::Sphere && fixed.kind == ShapeAt::Sphere) {
@@ -156,7 +162,7 @@ double separation(const ShapeAt& moving, const ShapeAt& fixed) {
   double closest[3];
   if (fixed.kind == ShapeAt::Sphere) return moving.boxDistance(fixed.centre, closest) - fixed.radius;
   if (moving.kind == ShapeAt::Sphere) return fixed.boxDistance(moving.centre, closest) - moving.radius;
-  return boxBoxSeparation(moving, fixed);
+  return boxBoxSeparation(moving, fixed, enough);
 }
 
 // The moving geom's shape at fraction s of the motion, from its shape at the
@@ -219,11 +225,14 @@ Impact advance(const BodyPose& pose, dGeomID moving, const ShapeAt& start, const
   const double speed = speedBound(start, pose.position, motion);
   double s = 0.0;
   for (int i = 0; i < maxIterations; ++i) {
-    const double gap = separation(shapeAtFraction(start, pose.position, motion, s), fixed);
-    if (gap <= 0.0) {
-      pose.moveTo(motion, s);
-      if (collides(moving, fixedGeom)) return {s == 0.0 ? Impact::AlreadyTouching : Impact::At, s};
-    }
+    const double gap = separation(shapeAtFraction(start, pose.position, motion, s), fixed, depth);
+    // Boxes, spheres and planes overlap exactly where the bound is below
+    // zero; for other shapes, held by their bounding boxes, ODE's own
+    // dCollide says.
+    const bool overlap = start.exact && fixed.exact
+                             ? gap < 0.0
+                             : gap <= 0.0 && (pose.moveTo(motion, s), collides(moving, fixedGeom));
+    if (overlap) return {s == 0.0 ? Impact::AlreadyTouching : Impact::At, s};
     if (s >= 1.0 || speed <= 0.0) return {Impact::None, 0.0};
     // No point comes closer than gap in gap / speed; past the depth, step
     // so that the overlap stays within it.
@@ -300,29 +309,45 @@ double smallestHalfExtent(const ShapeAt& shape) {
 SweepResult SweptCollision::sweep(dBodyID body, dGeomID geom, double step, const double gravity[3], dWorldID world,
                                   dJointGroupID contacts) {
   if (!dBodyIsEnabled(body)) return SweepResult::Slow;
+  // The speed test and the quick rejection come first and touch only
+  // positions and sizes: most steps of a fast body end there.
   const StepMotion motion = nextStepMotion(body, gravity, step);
+  const dReal* origin = dBodyGetPosition(body);
+  const dReal* centre = dGeomGetPosition(geom);
+  const double p[3] = {origin[0], origin[1], origin[2]};
+  const double offset[3] = {centre[0] - p[0], centre[1] - p[1], centre[2] - p[2]};
+  double smallest, radius;
+  if (dGeomGetClass(geom) == dSphereClass) {
+    smallest = radius = dGeomSphereGetRadius(geom);
+  } else if (dGeomGetClass(geom) == dBoxClass) {
+    dVector3 sides;
+    dGeomBoxGetLengths(geom, sides);
+    smallest = 0.5 * std::min({sides[0], sides[1], sides[2]});
+    radius = 0.5 * std::sqrt(sides[0] * sides[0] + sides[1] * sides[1] + sides[2] * sides[2]);
+  } else {
+    const ShapeAt bounds = describe(geom);  // another shape: its bounding box
+    smallest = smallestHalfExtent(bounds), radius = bounds.boundingRadius();
+  }
+  const double reach = length(offset) + radius;
+  if (length(motion.travel) + length(motion.turn) * reach <= options_.fastFraction * smallest)
+    return SweepResult::Slow;
+  ++counts_.sweeps;
+  near_.clear();
+  for (const StaticGeom& fixed : statics_)
+    if (fixed.geom != geom && !sweptSphereMisses(fixed, p, motion.travel, reach)) near_.push_back(&fixed);
+  if (near_.empty()) return SweepResult::Clear;
   const ShapeAt start = describe(geom);
   const BodyPose pose(body);
-  const double speed = speedBound(start, pose.position, motion);
-  if (speed <= options_.fastFraction * smallestHalfExtent(start)) return SweepResult::Slow;
-  ++counts_.sweeps;
-  const double offset[3] = {start.centre[0] - pose.position[0], start.centre[1] - pose.position[1],
-                            start.centre[2] - pose.position[2]};
-  const double reach = length(offset) + start.boundingRadius();
-  std::vector<const StaticGeom*> near;
   Impact first{Impact::None, INF};
   bool touching = false, unresolved = false;
-  for (const StaticGeom& fixed : statics_) {
-    if (fixed.geom == geom || sweptSphereMisses(fixed, pose.position, motion.travel, reach)) continue;
-    near.push_back(&fixed);
-    const Impact impact = advance(pose, geom, start, motion, fixed.geom, describe(fixed.geom),
+  for (const StaticGeom* fixed : near_) {
+    const Impact impact = advance(pose, geom, start, motion, fixed->geom, describe(fixed->geom),
                                   options_.contactDepth, options_.maxIterations);
     touching = touching || impact.kind == Impact::AlreadyTouching;
     unresolved = unresolved || impact.kind == Impact::Unresolved;
     if (impact.kind == Impact::At && impact.fraction < first.fraction) first = impact;
   }
   SweepResult result = SweepResult::Clear;
-  if (near.empty()) return result;
   // A body touching one geom now is not moved: its contact is found anyway,
   // and moving it on could push it deeper into that geom.
   const bool speculative = options_.speculativeContacts && start.kind == ShapeAt::Box;
@@ -335,10 +360,13 @@ SweepResult SweptCollision::sweep(dBodyID body, dGeomID geom, double step, const
     if (touching) result = SweepResult::Touching;
     if (unresolved && !touching) ++counts_.unresolved, result = SweepResult::Unresolved;
   }
-  if (speculative) {
+  // Corners get contacts only where the body meets a static geom in this
+  // step (or may: a search that ran out); a clear sweep has no corner that
+  // reaches one.
+  if (speculative && result != SweepResult::Clear) {
     double velocity[3];
     for (int k = 0; k < 3; ++k) velocity[k] = motion.travel[k] / step;
-    for (const StaticGeom* fixed : near)
+    for (const StaticGeom* fixed : near_)
       counts_.speculativeContacts += addSpeculativeContacts(body, geom, fixed->geom, velocity, step, options_.speculativeClosing, world, contacts);
   }
   return result;

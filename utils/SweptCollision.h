@@ -13,8 +13,8 @@
 //    reaches the first touching pose, with rotation bounded. The distance
 //    bounds are exact in sign (zero exactly when the shapes touch) for boxes
 //    and spheres against boxes, planes and spheres: the separating axes of
-//    two boxes, closest points otherwise. ODE's own dCollide confirms the
-//    contact at the pose found.
+//    two boxes, closest points otherwise. Other shapes are held by their
+//    bounding boxes, and ODE's own dCollide decides where they touch.
 // 2. Clamp: the body is moved along its motion (position and orientation)
 //    to that pose, overlapping by at most `contactDepth`, velocities
 //    unchanged, so that the coming collide finds the contact.
@@ -60,8 +60,9 @@ struct Impact {
 };
 
 // The first fraction of `motion` at which `moving` (a geom on `body`)
-// overlaps the static geom `fixed` by at most `depth` (m), as ODE's
-// dCollide reports it. Leaves the body where it was.
+// overlaps the static geom `fixed` by at most `depth` (m): exactly for
+// boxes, spheres and planes, as ODE's dCollide reports it for other shapes.
+// Leaves the body where it was.
 Impact timeOfImpact(dBodyID body, dGeomID moving, const StepMotion& motion, dGeomID fixed, double depth,
                     int maxIterations = 200);
 
@@ -134,6 +135,7 @@ class SweptCollision {
 
   Options options_;
   std::vector<StaticGeom> statics_;
+  std::vector<const StaticGeom*> near_;  // this sweep's statics past the quick rejection (kept: no allocation a step)
   Counts counts_;
 };
 
