@@ -33,3 +33,15 @@ odelab_check(test10_ccd_stops_turned_cubes_up_to_10000_seed_2 test10
   EXPECT max_velocity>=9990 first_failure_velocity==0 passed_through==0 non_finite==0
   ARGS --headless --ccd --random-orientation --phase-jitter --seed 2 --find-max-velocity --launches 5
        --scan-limit 10000 --band-factor 1)
+
+# --spin (rad/s at launch, to measure the sweep's limit with fast-turning
+# cubes): a finite rate from 0 to 1e6, else status 2 and nothing written.
+odelab_check(test10_refuses_negative_spin test10 STATUS 2 ARGS --headless --spin=-1)
+odelab_check(test10_refuses_nan_spin test10 STATUS 2 ARGS --headless --spin=nan)
+odelab_check(test10_refuses_huge_spin test10 STATUS 2 ARGS --headless --spin=1e7)
+# A cube turning at 1000 rad/s (one radian a step) toward the wall at
+# 10,000 m/s, corner or edge first, at a random phase: every one of 200 is
+# stopped with --ccd (measured: none of 1000 passed; at 30,000 rad/s, 5 of 1000).
+odelab_check(test10_ccd_stops_spinning_cubes_at_10000 test10
+  EXPECT passed_through==0 stopped==200 launch_spin==1000 non_finite==0
+  ARGS --headless --ccd --random-orientation --phase-jitter --spin 1000 --velocity 10000 --launches 200)

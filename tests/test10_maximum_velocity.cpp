@@ -126,6 +126,11 @@ class MaximumVelocity : public AbstractWindow {
     app.add_flag("--random-orientation", randomOrientation_,
                  "launch each cube turned to a uniformly random orientation (from --seed), so it meets the wall "
                  "with a corner or an edge first; off: unturned, face on (the thesis's)");
+    app.add_option("--spin", spin_,
+                   "launch each cube turning at this rate (rad/s) about a random axis (from --seed): a limit of "
+                   "--ccd, whose step model is a constant turn")
+        ->check(cli::finiteRange(0.0, 1e6))
+        ->capture_default_str();
     app.add_flag("--ccd", ccd_,
                  "continuous collision for fast bodies: before each step, a body whose points may move more than "
                  "half its smallest half-extent in the step is swept along its motion (turning included) against "
@@ -215,6 +220,7 @@ class MaximumVelocity : public AbstractWindow {
     m.set("launch_y_m", LAUNCH_Y);
     m.set("ground_y_m", GROUND_Y);
     m.set("launch_velocity", findMaxVelocity_ ? 0.0 : velocity_);
+    m.set("launch_spin", spin_);
     m.set("launches", launched_);
     m.set("stopped", stopped_);
     m.set("passed_through", passed_);
@@ -273,6 +279,7 @@ class MaximumVelocity : public AbstractWindow {
     cube.setPosition(startX, LAUNCH_Y, LAUNCH_Z);
     cube.setLinearVelocity(velocity, 0.0, 0.0);
     if (randomOrientation_) turnAtRandom(cube);
+    if (spin_ > 0.0) spinAtRandom(cube);
     cube.color = Color{0.95f, 0.8f, 0.2f};
     ++launched_;
     launchesInScene_.push_back({&cube, velocity, simulatedTime(), mechanicalEnergy(cube.getBody(), world())});
@@ -287,6 +294,14 @@ class MaximumVelocity : public AbstractWindow {
     const dQuaternion q = {a * std::sin(turn * u2), a * std::cos(turn * u2), b * std::sin(turn * u3),
                            b * std::cos(turn * u3)};
     dBodySetQuaternion(cube.getBody(), q);
+  }
+
+  // A turn about a uniformly random axis (a normalised Gaussian vector).
+  void spinAtRandom(Box& cube) {
+    std::normal_distribution<double> normal(0.0, 1.0);
+    double axis[3] = {normal(random()), normal(random()), normal(random())};
+    const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+    dBodySetAngularVel(cube.getBody(), spin_ * axis[0] / n, spin_ * axis[1] / n, spin_ * axis[2] / n);
   }
 
   // Passed: the whole cube is beyond the far face. Stopped: on the near side
@@ -358,6 +373,7 @@ class MaximumVelocity : public AbstractWindow {
   double bandFactor_ = DEFAULT_BAND_FACTOR;
   bool phaseJitter_ = false;
   bool randomOrientation_ = false;
+  double spin_ = 0.0;  // rad/s at launch
   bool ccd_ = false;
 
   std::vector<Launch> launchesInScene_;
