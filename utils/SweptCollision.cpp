@@ -339,26 +339,35 @@ SweepResult SweptCollision::sweep(dBodyID body, dGeomID geom, double step, const
   const ShapeAt start = describe(geom);
   const BodyPose pose(body);
   Impact first{Impact::None, INF};
-  bool touching = false, unresolved = false;
+  bool unresolved = false;
+  touching_.clear();
   for (const StaticGeom* fixed : near_) {
     const Impact impact = advance(pose, geom, start, motion, fixed->geom, describe(fixed->geom),
                                   options_.contactDepth, options_.maxIterations);
-    touching = touching || impact.kind == Impact::AlreadyTouching;
+    if (impact.kind == Impact::AlreadyTouching) touching_.push_back(fixed);
     unresolved = unresolved || impact.kind == Impact::Unresolved;
     if (impact.kind == Impact::At && impact.fraction < first.fraction) first = impact;
   }
+  // A body that already touches a geom keeps that contact wherever it is
+  // moved, but is moved on only where that does not take it deeper into the
+  // geom (a box sliding along the ground into a wall is; one driven into
+  // the ground is not).
+  bool clamp = first.kind == Impact::At;
+  for (const StaticGeom* fixed : touching_) {
+    const ShapeAt geomNow = describe(fixed->geom);
+    const ShapeAt there = shapeAtFraction(start, pose.position, motion, first.fraction);
+    clamp = clamp && separation(there, geomNow) >= separation(start, geomNow) - options_.contactDepth;
+  }
   SweepResult result = SweepResult::Clear;
-  // A body touching one geom now is not moved: its contact is found anyway,
-  // and moving it on could push it deeper into that geom.
   const bool speculative = options_.speculativeContacts && start.kind == ShapeAt::Box;
-  if (first.kind == Impact::At && !touching) {
+  if (clamp) {
     pose.moveTo(motion, first.fraction);
     ++counts_.clamps;
     result = SweepResult::Clamped;
   } else {
     pose.restore();
-    if (touching) result = SweepResult::Touching;
-    if (unresolved && !touching) ++counts_.unresolved, result = SweepResult::Unresolved;
+    if (!touching_.empty()) result = SweepResult::Touching;
+    if (unresolved && touching_.empty()) ++counts_.unresolved, result = SweepResult::Unresolved;
   }
   // Corners get contacts only where the body meets a static geom in this
   // step (or may: a search that ran out); a clear sweep has no corner that
@@ -367,7 +376,8 @@ SweepResult SweptCollision::sweep(dBodyID body, dGeomID geom, double step, const
     double velocity[3];
     for (int k = 0; k < 3; ++k) velocity[k] = motion.travel[k] / step;
     for (const StaticGeom* fixed : near_)
-      counts_.speculativeContacts += addSpeculativeContacts(body, geom, fixed->geom, velocity, step, options_.speculativeClosing, world, contacts);
+      counts_.speculativeContacts +=
+          addSpeculativeContacts(body, geom, fixed->geom, velocity, step, options_.speculativeClosing, world, contacts);
   }
   return result;
 }

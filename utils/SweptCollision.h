@@ -75,7 +75,7 @@ double separationBound(dGeomID moving, dGeomID fixed);
 enum class SweepResult {
   Slow,        // no point of the body moves far in the step: not swept
   Clear,       // swept: it touches no static geom during the step
-  Touching,    // it already touches one: the coming collide finds that contact
+  Touching,    // it already touches one and is not moved: the coming collide finds that contact
   Clamped,     // moved along its motion to the first touching pose
   Unresolved,  // the search ran out of iterations: left where it was
 };
@@ -135,7 +135,9 @@ class SweptCollision {
 
   Options options_;
   std::vector<StaticGeom> statics_;
-  std::vector<const StaticGeom*> near_;  // this sweep's statics past the quick rejection (kept: no allocation a step)
+  // This sweep's statics past the quick rejection, and those the body
+  // touches now (members: no allocation a step).
+  std::vector<const StaticGeom*> near_, touching_;
   Counts counts_;
 };
 

@@ -263,4 +263,26 @@ TEST(SweptCollision, CornerFirstCubeAt10000IsStoppedByContactsNotByAVelocityEdit
   EXPECT_LT(std::fabs(dBodyGetLinearVel(body)[0]), 100.0);
 }
 
+// A cube sliding along the ground (touching it, 0.5 mm deep) at 10,000 m/s
+// toward the wall is still moved to the wall: moving on along the ground
+// takes it no deeper into the ground. One falling into the ground is not
+// moved (the ground's contact stops it first).
+TEST(SweptCollision, BoxSlidingOnTheGroundIsStillMovedToTheWall) {
+  Scene scene;
+  dGeomID cube = scene.movingBox(-4.0, HALF - 0.0005, 0.0);
+  dBodyID body = dGeomGetBody(cube);
+  dBodySetLinearVel(body, 10000.0, 0, 0);
+  SweptCollision sweep;
+  dGeomID wall = scene.wall();
+  sweep.setStaticGeoms({scene.ground(), wall});
+  const double noGravity[3] = {0, 0, 0};
+  EXPECT_EQ(sweep.sweep(body, cube, 0.001, noGravity, scene.world, scene.contacts), odelab::SweepResult::Clamped);
+  EXPECT_LE(odelab::separationBound(cube, wall), 0.0);
+  EXPECT_GE(odelab::separationBound(cube, wall), -DEPTH);
+  dBodySetPosition(body, -4.0, HALF - 0.0005, 0.0);
+  dBodySetLinearVel(body, 10000.0, -100.0, 0);  // into the ground as well: 0.1 m deeper by the wall
+  EXPECT_EQ(sweep.sweep(body, cube, 0.001, noGravity, scene.world, scene.contacts), odelab::SweepResult::Touching);
+  EXPECT_EQ(dBodyGetPosition(body)[0], -4.0);
+}
+
 }  // namespace
