@@ -148,7 +148,7 @@ class MaximumVelocity : public AbstractWindow {
   void configureWorld() override { dWorldSetContactSurfaceLayer(world(), SURFACE_LAYER); }
 
   void buildScene() override {
-    Plane& ground = add<Plane>(space());
+    Plane& ground = add<Plane>(space(), 0.0, 1.0, 0.0, GROUND_Y);
     Box& wall = add<Box>(world(), space(), WALL_THICKNESS, WALL_HEIGHT, WALL_WIDTH, 1.0);
     wall.setAsFixedGeom();
     wall.setPosition(WALL_X, GROUND_Y + WALL_HEIGHT / 2, 0.0);
