@@ -76,6 +76,7 @@ const char* outcomeName(Outcome outcome) {
 
 struct Launch {
   Box* cube;
+  SweptCollision::Body sweptBody;  // the cube's sizes, for the sweep
   double velocity;
   double launchedAt;
   double launchEnergy;  // J, with the ground (y = 0) as zero of height
@@ -168,8 +169,7 @@ class MaximumVelocity : public AbstractWindow {
     dVector3 gravity;
     dWorldGetGravity(world(), gravity);
     const double g[3] = {gravity[0], gravity[1], gravity[2]};
-    for (const Launch& l : launchesInScene_)
-      sweep_.sweep(l.cube->getBody(), l.cube->getGeom(), settings().step, g, world(), contactGroup());
+    for (const Launch& l : launchesInScene_) sweep_.sweep(l.sweptBody, settings().step, g, world(), contactGroup());
   }
 
   void afterStep() override {
@@ -282,7 +282,8 @@ class MaximumVelocity : public AbstractWindow {
     if (spin_ > 0.0) spinAtRandom(cube);
     cube.color = Color{0.95f, 0.8f, 0.2f};
     ++launched_;
-    launchesInScene_.push_back({&cube, velocity, simulatedTime(), mechanicalEnergy(cube.getBody(), world())});
+    launchesInScene_.push_back({&cube, SweptCollision::describeBody(cube.getBody(), cube.getGeom()), velocity,
+                                simulatedTime(), mechanicalEnergy(cube.getBody(), world())});
   }
 
   // A uniformly random orientation (Shoemake's unit quaternion from three

@@ -306,30 +306,37 @@ double smallestHalfExtent(const ShapeAt& shape) {
 
 }  // namespace
 
-SweepResult SweptCollision::sweep(dBodyID body, dGeomID geom, double step, const double gravity[3], dWorldID world,
-                                  dJointGroupID contacts) {
-  if (!dBodyIsEnabled(body)) return SweepResult::Slow;
-  // The speed test and the quick rejection come first and touch only
-  // positions and sizes: most steps of a fast body end there.
-  const StepMotion motion = nextStepMotion(body, gravity, step);
+SweptCollision::Body SweptCollision::describeBody(dBodyID body, dGeomID geom) {
   const dReal* origin = dBodyGetPosition(body);
   const dReal* centre = dGeomGetPosition(geom);
-  const double p[3] = {origin[0], origin[1], origin[2]};
-  const double offset[3] = {centre[0] - p[0], centre[1] - p[1], centre[2] - p[2]};
+  const double offset[3] = {centre[0] - origin[0], centre[1] - origin[1], centre[2] - origin[2]};
   double smallest, radius;
   if (dGeomGetClass(geom) == dSphereClass) {
     smallest = radius = dGeomSphereGetRadius(geom);
-  } else if (dGeomGetClass(geom) == dBoxClass) {
-    dVector3 sides;
-    dGeomBoxGetLengths(geom, sides);
-    smallest = 0.5 * std::min({sides[0], sides[1], sides[2]});
-    radius = 0.5 * std::sqrt(sides[0] * sides[0] + sides[1] * sides[1] + sides[2] * sides[2]);
   } else {
-    const ShapeAt bounds = describe(geom);  // another shape: its bounding box
-    smallest = smallestHalfExtent(bounds), radius = bounds.boundingRadius();
+    const ShapeAt shape = describe(geom);  // a box, or another shape's bounding box
+    smallest = smallestHalfExtent(shape), radius = shape.boundingRadius();
   }
-  const double reach = length(offset) + radius;
-  if (length(motion.travel) + length(motion.turn) * reach <= options_.fastFraction * smallest)
+  return {body, geom, smallest, length(offset) + radius};
+}
+
+SweepResult SweptCollision::sweep(dBodyID body, dGeomID geom, double step, const double gravity[3], dWorldID world,
+                                  dJointGroupID contacts) {
+  return sweep(describeBody(body, geom), step, gravity, world, contacts);
+}
+
+SweepResult SweptCollision::sweep(const Body& moving, double step, const double gravity[3], dWorldID world,
+                                  dJointGroupID contacts) {
+  const dBodyID body = moving.body;
+  const dGeomID geom = moving.geom;
+  if (!dBodyIsEnabled(body)) return SweepResult::Slow;
+  // The speed test and the quick rejection come first and touch only the
+  // velocities and the position: most steps of a fast body end there.
+  const StepMotion motion = nextStepMotion(body, gravity, step);
+  const dReal* origin = dBodyGetPosition(body);
+  const double p[3] = {origin[0], origin[1], origin[2]};
+  const double reach = moving.reach;
+  if (length(motion.travel) + length(motion.turn) * reach <= options_.fastFraction * moving.smallestHalfExtent)
     return SweepResult::Slow;
   ++counts_.sweeps;
   near_.clear();
@@ -392,8 +399,16 @@ struct Corner {
   double normal[3];
 };
 
-std::vector<Corner> cornersOutside(const ShapeAt& box, const ShapeAt& wall) {
-  std::vector<Corner> corners;
+// At most eight, on the stack: this runs in the step of every impact.
+struct Corners {
+  Corner corner[8];
+  int count = 0;
+  const Corner* begin() const { return corner; }
+  const Corner* end() const { return corner + count; }
+};
+
+Corners cornersOutside(const ShapeAt& box, const ShapeAt& wall) {
+  Corners corners;
   for (int index = 0; index < 8; ++index) {
     const double local[3] = {(index & 1 ? 1 : -1) * box.half[0], (index & 2 ? 1 : -1) * box.half[1],
                              (index & 4 ? 1 : -1) * box.half[2]};
@@ -416,7 +431,7 @@ std::vector<Corner> cornersOutside(const ShapeAt& box, const ShapeAt& wall) {
       if (c.gap > 0.0)
         for (int k = 0; k < 3; ++k) c.normal[k] = (x[k] - closest[k]) / c.gap;
     }
-    if (c.gap > 0.0) corners.push_back(c);
+    if (c.gap > 0.0) corners.corner[corners.count++] = c;
   }
   return corners;
 }

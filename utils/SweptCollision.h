@@ -110,9 +110,20 @@ class SweptCollision {
 
   // The static geoms to sweep against (the bounding data is taken now: they must not move).
   void setStaticGeoms(const std::vector<dGeomID>& geoms);
-  // Before a step (after forces, before collision): sweeps `geom` on `body`
-  // and, where it would touch a static geom in the step, clamps it and adds
+  // A body to sweep with the sizes its speed test needs, fixed for a rigid
+  // geom: taken once (when the body is made), not every step.
+  struct Body {
+    dBodyID body;
+    dGeomID geom;
+    double smallestHalfExtent;  // m
+    double reach;               // m: the farthest point of the geom from the body's origin
+  };
+  static Body describeBody(dBodyID body, dGeomID geom);
+  // Before a step (after forces, before collision): sweeps the body and,
+  // where it would touch a static geom in the step, clamps it and adds
   // speculative contacts to `contacts` (emptied by the caller after the step).
+  SweepResult sweep(const Body& moving, double step, const double gravity[3], dWorldID world,
+                    dJointGroupID contacts);
   SweepResult sweep(dBodyID body, dGeomID geom, double step, const double gravity[3], dWorldID world,
                     dJointGroupID contacts);
 
