@@ -5,7 +5,7 @@ import re
 
 from .. import markdown as md
 from ..plots import remedies as plots
-from ..runner import median
+from ..runner import RunSpec, median
 from .base import Experiment, Outcome
 from .limit_test10 import scan_row, scan_spec
 
@@ -35,23 +35,25 @@ class RemedyTest10(Experiment):
         steps = [1e-3] if ctx.quick else [1e-2, 1e-3, 1e-4]
         variants = [("plain", [])] + ([("--ccd", ["--ccd"])] if has_ccd else [])
         launches = 5000 if ctx.quick else 50000
-        repeats = 1 if ctx.quick else 5
+        repeats = 3 if ctx.quick else 11
         cases = [c for c in CASES if all(option in help_text for option in c[1])]
         scans = [(name, case, step, scan_spec(step, [*extra, *case_extra, "--scan-limit", SCAN_LIMIT],
                                               launches=per_velocity))
                  for name, extra in variants for case, case_extra, per_velocity in cases for step in steps]
-        costs = [(name, v, ["--velocity", v, "--launches", launches, *extra])
-                 for name, extra in variants for v in (ORDINARY_VELOCITY, FAST_VELOCITY)]
-        ctx.expect(len(scans) + len(costs))
+        # Side by side: each repeat's plain and --ccd runs are queued together,
+        # so that they run at the same time on the two slots and meet the same
+        # load; the extra time is the median over repeats of the pair's ratio.
+        cost_specs = [(name, v, RunSpec("test10", ["--velocity", v, "--launches", launches, *extra], timed=True,
+                                        repeat=r))
+                      for v in (ORDINARY_VELOCITY, FAST_VELOCITY) for r in range(repeats) for name, extra in variants]
+        ctx.expect(len(scans) + len(cost_specs))
         scan_results = ctx.runner.map([spec for _, _, _, spec in scans])
         ctx.advance(len(scans))
-
-        def timed(cost):
-            results = ctx.runner.run_timed("test10", cost[2], repeats)
-            ctx.advance()
-            return results
-
-        cost_results = ctx.runner.parallel([lambda c=c: timed(c) for c in costs])
+        cost_runs = ctx.runner.map([spec for _, _, spec in cost_specs])
+        ctx.advance(len(cost_specs))
+        by_setting = {}  # (setting, velocity): the runs in repeat order
+        for (name, v, _), result in zip(cost_specs, cost_runs):
+            by_setting.setdefault((name, v), []).append(result)
         rows = []
         for (name, case, step, _), r in zip(scans, scan_results):
             row = dict(kind="scan", setting=name, case=case, **scan_row(step, r))
@@ -60,8 +62,9 @@ class RemedyTest10(Experiment):
             for metric in ("ccd_clamps", "ccd_speculative_contacts", "ccd_unresolved", "max_stop_energy_ratio"):
                 row[metric] = r.m(metric)
             rows.append(row)
-        for (name, velocity, _), results in zip(costs, cost_results):
+        for (name, velocity), results in by_setting.items():
             walls = [r.m("wall_seconds") for r in results]
+            base = by_setting[("plain", velocity)]
             steps_run = results[0].m("steps")
             rows.append(dict(kind="cost", setting=name, step_s=0.001, launch_velocity=velocity, launches=launches,
                              repeats=repeats, wall_seconds_median=median(walls),
@@ -72,17 +75,19 @@ class RemedyTest10(Experiment):
                              cpu_us_per_launch=1e6 * median([r.cpu_seconds for r in results]) / launches,
                              cpu_share=median([r.cpu_share for r in results]),
                              stopped=results[0].m("stopped"), passed_through=results[0].m("passed_through"),
-                             ccd_sweeps=results[0].m("ccd_sweeps"), ccd_clamps=results[0].m("ccd_clamps")))
-        for x in rows:
-            if x["kind"] == "cost" and x["setting"] == "plain":
-                x["extra_wall_per_launch"] = x["extra_cpu_per_launch"] = 0.0
+                             ccd_sweeps=results[0].m("ccd_sweeps"), ccd_clamps=results[0].m("ccd_clamps"),
+                             extra_wall_per_launch=median([r.m("wall_seconds") / b.m("wall_seconds")
+                                                           for r, b in zip(results, base)]) - 1,
+                             extra_cpu_per_launch=median([r.cpu_seconds / b.cpu_seconds
+                                                          for r, b in zip(results, base)]) - 1))
         columns = []
         for row in rows:
             columns += [c for c in row if c not in columns]
         csv = ctx.write_csv("remedy-test10", columns, rows, notes=[
             f"kind=scan: test10 --find-max-velocity up to --scan-limit {SCAN_LIMIT:g}, launches per velocity "
             "as the case says (x5: 5)",
-            f"kind=cost: {launches} launches at the velocity, the program's wall_seconds, median of {repeats} runs"])
+            f"kind=cost: {launches} launches at the velocity, the program's wall_seconds, median of {repeats} runs; "
+            "extra_*: median over the repeats of --ccd's over plain's, each pair run at the same time"])
         ctx.register_files(plots.ccd(ctx.out_dir, "remedy-test10", rows, SCAN_LIMIT, TARGET))
         scan_table = [[x["setting"], x["case"], md.num(x["step_s"]),
                        (f"none up to {md.num(SCAN_LIMIT)}" if not x["first_failure_velocity"]
@@ -90,12 +95,8 @@ class RemedyTest10(Experiment):
                        md.num(x["max_velocity"], 5), "yes" if x["passes_up_to_10000"] else "no",
                        "-" if x["setting"] == "plain" else md.num(x["ccd_unresolved"])]
                       for x in rows if x["kind"] == "scan"]
-        plain = {x["launch_velocity"]: x for x in rows if x["kind"] == "cost" and x["setting"] == "plain"}
         cost_table = []
         for x in (x for x in rows if x["kind"] == "cost"):
-            base = plain[x["launch_velocity"]]
-            x["extra_wall_per_launch"] = x["us_per_launch"] / base["us_per_launch"] - 1
-            x["extra_cpu_per_launch"] = x["cpu_us_per_launch"] / base["cpu_us_per_launch"] - 1
             remedy = x["setting"] != "plain"
             cost_table.append([x["setting"], md.num(x["launch_velocity"]),
                                f"{md.num(x['us_per_launch'], 3)} ({md.num(x['us_per_launch_min'], 3)}-"
@@ -125,7 +126,9 @@ grazing motion; the body is then left where it was, its corner contacts kept).
            "unresolved sweeps"], scan_table)}
 
 Cost: {launches} launches one after another at step 0.001, the program's `wall_seconds`
-(median of {repeats} runs, and their spread) per launch: the same launches with and without the remedy
+(median of {repeats} runs, and their spread) per launch, run side by side: each repeat's plain and `--ccd`
+runs at the same time, and the extra time is the median of the {repeats} pairs' ratios; the same launches
+with and without the remedy
 (at {md.num(FAST_VELOCITY)} m/s not the same work: plain, every cube passes in its first step without a
 contact; with `--ccd` every cube is stopped in that step, through contacts); beside it
 the process's CPU time per launch (median), which a busy machine disturbs much less, and the
