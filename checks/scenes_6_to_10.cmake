@@ -32,10 +32,12 @@ odelab_check(test10_random_phase_never_passes_below_guaranteed_limit test10
 # limit) every cube is stopped, each by a sweep that moved it to the wall
 # (one clamp per launch, exact counts). The wall stops it through contacts
 # (mode 0, no bounce): what energy is left is the potential energy at 3 m
-# (29.5 J) plus at most the ERP push-out of the 1 mm clamp depth (0.3 m/s,
-# 0.05 J), below 1e-6 of the 5e7 J launch energy (measured 5.9e-7).
+# (29.5 J) plus what QuickStep's 20 iterations leave unsolved of the stop
+# with the far corners' speculative contacts in it: below 1e-4 of the 5e7 J
+# launch energy, i.e. thrown back at under 1% of the launch speed (measured
+# 1.6e-5; 5.9e-7 before the corner contacts, which turned cubes need).
 odelab_check(test10_ccd_stops_every_launch_at_10000 test10
-  EXPECT passed_through==0 stopped==5 ccd==1 ccd_clamps==5 max_stop_energy_ratio<1e-6 non_finite==0
+  EXPECT passed_through==0 stopped==5 ccd==1 ccd_clamps==5 max_stop_energy_ratio<1e-4 non_finite==0
   ARGS --headless --ccd --velocity 10000 --launches 5)
 # With --ccd the whole scan, 1 m/s to the scan limit 100,000 m/s (5607
 # velocities, 0.2 s), finds no velocity at which a cube passes: max_velocity

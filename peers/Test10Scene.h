@@ -1,24 +1,14 @@
 #pragma once
 
-// test10's scene values as the peers use them. The geometry belongs in
-// odelab::scene::test10 of tests/shared/SceneConstants.h, which the branch
-// refactoring test10 fills with these very names (CUBE_SIDE, CUBE_MASS,
-// WALL_THICKNESS, WALL_X, WALL_HEIGHT, WALL_WIDTH, LAUNCH_X/Y/Z); once both
-// are merged, the geometry block below becomes
-// `using namespace odelab::scene::test10;`. Until then the constants check
-// (checks/peers.cmake) compares the limits (h + t) / step and (h + t/2) / step
-// that both programs derive from them, so a difference cannot go unnoticed.
+// test10's launch rule and scan as the peers run them. The geometry is
+// test10's own, from odelab::scene::test10 in tests/shared/SceneConstants.h.
+
+#include "../tests/shared/SceneConstants.h"
 
 namespace odelab::peers::test10 {
 
-// ---- geometry (to come from SceneConstants.h) ----
-constexpr double WALL_THICKNESS = 0.05;  // thesis
-constexpr double WALL_X = 0.0;           // centre of the wall (proposed)
-constexpr double WALL_HEIGHT = 6.0;      // standing on the ground (proposed)
-constexpr double WALL_WIDTH = 6.0;       // along z (proposed)
-constexpr double CUBE_SIDE = 0.4;        // thesis
-constexpr double CUBE_MASS = 1.0;        // kg, thesis
-constexpr double LAUNCH_X = -4.0, LAUNCH_Y = 3.0, LAUNCH_Z = 0.0;  // thesis
+using namespace odelab::scene::test10;
+
 // ---- test10's launch rule and scan, as the ODE program runs them ----
 // A launch is over when the cube is wholly past the wall, or moves no longer
 // toward it on the near side; failing both, after the time it needs to reach

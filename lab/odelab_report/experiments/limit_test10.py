@@ -6,7 +6,6 @@ from ..plots import limits as plots
 from ..runner import RunSpec
 from .base import Experiment, Outcome, log_space
 
-HALF_SIZE, WALL = 0.2, 0.05  # m: the cube's half-size and the wall's thickness
 BAND_FACTOR = 1.6
 
 
@@ -28,8 +27,11 @@ def scan_row(step, r):
         velocities_stopped_in_band=r.m("velocities_stopped_in_band"),
         velocities_passed_in_band=r.m("velocities_passed_in_band"),
         highest_stopped_velocity_in_band=r.m("highest_stopped_velocity_in_band"),
-        geometric_prediction=(HALF_SIZE + WALL) / step,
-        guaranteed_stop_velocity=(HALF_SIZE + WALL / 2) / step,
+        # The scene's sizes and what they predict, as the program reports them.
+        cube_half_size_m=r.m("cube_half_size_m"),
+        wall_thickness_m=r.m("wall_thickness_m"),
+        geometric_prediction=r.m("geometric_prediction"),
+        guaranteed_stop_velocity=r.m("guaranteed_stop_velocity"),
         launches=r.m("launches"),
         passed_through=r.m("passed_through"),
         exit_status=r.rc,
@@ -91,5 +93,6 @@ above the first failure."""
         if 0.001 in by and 0.0001 in by:
             headline.append(f"test10: the wall stops every cube up to {md.num(by[0.001]['max_velocity'], 4)} m/s at step "
                             f"0.001 and {md.num(by[0.0001]['max_velocity'], 4)} m/s at 0.0001 (prediction (h + t)/step: "
-                            f"250 / 2500 m/s; thesis: 250 / about 3630).")
+                            f"{md.num(by[0.001]['geometric_prediction'], 4)} / "
+                            f"{md.num(by[0.0001]['geometric_prediction'], 4)} m/s; thesis: 250 / about 3630).")
         return Outcome(text, headline)

@@ -5,14 +5,19 @@ import re
 
 from .. import markdown as md
 from ..plots import remedies as plots
-from ..runner import median
+from ..runner import RunSpec, median
 from .base import Experiment, Outcome
 from .limit_test10 import scan_row, scan_spec
 
-SCAN_LIMIT = 20000.0   # m/s: the issue asks for no pass up to at least 10,000 m/s
+SCAN_LIMIT = 10000.0   # m/s: the issue asks for no pass up to 10,000 m/s, for every case below
 TARGET = 10000.0
 ORDINARY_VELOCITY = 200.0  # m/s: test10's default launch velocity
 FAST_VELOCITY = 5000.0
+# How the cubes meet the wall: (case, extra options, launches per velocity).
+CASES = (("face on, fixed launch point", (), 1),
+         ("random phase x5", ("--phase-jitter",), 5),
+         ("random orientation x5", ("--random-orientation",), 5),
+         ("random orientation and phase x5", ("--random-orientation", "--phase-jitter"), 5))
 
 
 class RemedyTest10(Experiment):
@@ -20,7 +25,7 @@ class RemedyTest10(Experiment):
     title = "test10 remedy: continuous collision (--ccd)"
     section = 4
     programs = ("test10",)
-    cost = (15.0, 2.0)
+    cost = (40.0, 3.0)
 
     def run(self, ctx):
         help_text = ctx.runner.help_text("test10")
@@ -30,37 +35,36 @@ class RemedyTest10(Experiment):
         steps = [1e-3] if ctx.quick else [1e-2, 1e-3, 1e-4]
         variants = [("plain", [])] + ([("--ccd", ["--ccd"])] if has_ccd else [])
         launches = 5000 if ctx.quick else 50000
-        repeats = 1 if ctx.quick else 5
-        scans = [(name, step, scan_spec(step, [*extra, "--scan-limit", SCAN_LIMIT]))
-                 for name, extra in variants for step in steps]
-        if has_ccd and not ctx.quick:  # random arrival phases, 5 launches per velocity
-            scans.append(("--ccd, random phase x5", 1e-3,
-                          scan_spec(1e-3, ["--ccd", "--scan-limit", SCAN_LIMIT], launches=5, phase_jitter=True)))
-            if "--random-orientation" in help_text:  # cubes meeting the wall corner or edge first
-                for name, extra in variants:
-                    scans.append((f"{name}, random orientation x5", 1e-3,
-                                  scan_spec(1e-3, [*extra, "--random-orientation", "--scan-limit", SCAN_LIMIT],
-                                            launches=5)))
-        costs = [(name, v, ["--velocity", v, "--launches", launches, *extra])
-                 for name, extra in variants for v in (ORDINARY_VELOCITY, FAST_VELOCITY)]
-        ctx.expect(len(scans) + len(costs))
-        scan_results = ctx.runner.map([spec for _, _, spec in scans])
+        repeats = 3 if ctx.quick else 11
+        cases = [c for c in CASES if all(option in help_text for option in c[1])]
+        scans = [(name, case, step, scan_spec(step, [*extra, *case_extra, "--scan-limit", SCAN_LIMIT],
+                                              launches=per_velocity))
+                 for name, extra in variants for case, case_extra, per_velocity in cases for step in steps]
+        # Side by side: each repeat's plain and --ccd runs are queued together,
+        # so that they run at the same time on the two slots and meet the same
+        # load; the extra time is the median over repeats of the pair's ratio.
+        cost_specs = [(name, v, RunSpec("test10", ["--velocity", v, "--launches", launches, *extra], timed=True,
+                                        repeat=r))
+                      for v in (ORDINARY_VELOCITY, FAST_VELOCITY) for r in range(repeats) for name, extra in variants]
+        ctx.expect(len(scans) + len(cost_specs))
+        scan_results = ctx.runner.map([spec for _, _, _, spec in scans])
         ctx.advance(len(scans))
-
-        def timed(cost):
-            results = ctx.runner.run_timed("test10", cost[2], repeats)
-            ctx.advance()
-            return results
-
-        cost_results = ctx.runner.parallel([lambda c=c: timed(c) for c in costs])
+        cost_runs = ctx.runner.map([spec for _, _, spec in cost_specs])
+        ctx.advance(len(cost_specs))
+        by_setting = {}  # (setting, velocity): the runs in repeat order
+        for (name, v, _), result in zip(cost_specs, cost_runs):
+            by_setting.setdefault((name, v), []).append(result)
         rows = []
-        for (name, step, _), r in zip(scans, scan_results):
-            row = dict(kind="scan", setting=name, **scan_row(step, r))
+        for (name, case, step, _), r in zip(scans, scan_results):
+            row = dict(kind="scan", setting=name, case=case, **scan_row(step, r))
             row["passes_up_to_10000"] = (r.m("first_failure_velocity") or 0) == 0 or \
                 r.m("first_failure_velocity") > TARGET
+            for metric in ("ccd_clamps", "ccd_speculative_contacts", "ccd_unresolved", "max_stop_energy_ratio"):
+                row[metric] = r.m(metric)
             rows.append(row)
-        for (name, velocity, _), results in zip(costs, cost_results):
+        for (name, velocity), results in by_setting.items():
             walls = [r.m("wall_seconds") for r in results]
+            base = by_setting[("plain", velocity)]
             steps_run = results[0].m("steps")
             rows.append(dict(kind="cost", setting=name, step_s=0.001, launch_velocity=velocity, launches=launches,
                              repeats=repeats, wall_seconds_median=median(walls),
@@ -71,28 +75,28 @@ class RemedyTest10(Experiment):
                              cpu_us_per_launch=1e6 * median([r.cpu_seconds for r in results]) / launches,
                              cpu_share=median([r.cpu_share for r in results]),
                              stopped=results[0].m("stopped"), passed_through=results[0].m("passed_through"),
-                             ccd_sweeps=results[0].m("ccd_sweeps"), ccd_clamps=results[0].m("ccd_clamps")))
-        for x in rows:
-            if x["kind"] == "cost" and x["setting"] == "plain":
-                x["extra_wall_per_launch"] = x["extra_cpu_per_launch"] = 0.0
+                             ccd_sweeps=results[0].m("ccd_sweeps"), ccd_clamps=results[0].m("ccd_clamps"),
+                             extra_wall_per_launch=median([r.m("wall_seconds") / b.m("wall_seconds")
+                                                           for r, b in zip(results, base)]) - 1,
+                             extra_cpu_per_launch=median([r.cpu_seconds / b.cpu_seconds
+                                                          for r, b in zip(results, base)]) - 1))
         columns = []
         for row in rows:
             columns += [c for c in row if c not in columns]
         csv = ctx.write_csv("remedy-test10", columns, rows, notes=[
-            "kind=scan: test10 --find-max-velocity (1 launch per velocity unless said) up to --scan-limit 20000",
-            f"kind=cost: {launches} launches at the velocity, the program's wall_seconds, median of {repeats} runs"])
+            f"kind=scan: test10 --find-max-velocity up to --scan-limit {SCAN_LIMIT:g}, launches per velocity "
+            "as the case says (x5: 5)",
+            f"kind=cost: {launches} launches at the velocity, the program's wall_seconds, median of {repeats} runs; "
+            "extra_*: median over the repeats of --ccd's over plain's, each pair run at the same time"])
         ctx.register_files(plots.ccd(ctx.out_dir, "remedy-test10", rows, SCAN_LIMIT, TARGET))
-        scan_table = [[x["setting"], md.num(x["step_s"]),
+        scan_table = [[x["setting"], x["case"], md.num(x["step_s"]),
                        (f"none up to {md.num(SCAN_LIMIT)}" if not x["first_failure_velocity"]
                         else md.num(x["first_failure_velocity"], 4)),
-                       md.num(x["max_velocity"], 5), "yes" if x["passes_up_to_10000"] else "no"]
+                       md.num(x["max_velocity"], 5), "yes" if x["passes_up_to_10000"] else "no",
+                       "-" if x["setting"] == "plain" else md.num(x["ccd_unresolved"])]
                       for x in rows if x["kind"] == "scan"]
-        plain = {x["launch_velocity"]: x for x in rows if x["kind"] == "cost" and x["setting"] == "plain"}
         cost_table = []
         for x in (x for x in rows if x["kind"] == "cost"):
-            base = plain[x["launch_velocity"]]
-            x["extra_wall_per_launch"] = x["us_per_launch"] / base["us_per_launch"] - 1
-            x["extra_cpu_per_launch"] = x["cpu_us_per_launch"] / base["cpu_us_per_launch"] - 1
             remedy = x["setting"] != "plain"
             cost_table.append([x["setting"], md.num(x["launch_velocity"]),
                                f"{md.num(x['us_per_launch'], 3)} ({md.num(x['us_per_launch_min'], 3)}-"
@@ -105,20 +109,28 @@ class RemedyTest10(Experiment):
         missing = [] if has_ccd else ["test10 --ccd (continuous collision for fast bodies): not in this build"]
         note = "" if has_ccd else ("\n**test10 has no `--ccd` option in this build**, so only the plain setting is "
                                    "measured here.\n")
-        text = f"""{note}The remedy: `--ccd` ({key} in the window) sweeps each fast body's travel during
-the step against the static geometry and moves it to the first touching
-position, so the contact stops it. The goal: no cube through the wall at step
-0.001 up to at least 10,000 m/s, for at most 10% extra wall time in the
-ordinary scene ({md.num(ORDINARY_VELOCITY)} m/s launches, test10's default velocity). Rows "x5"
-launch five cubes per velocity: at a random phase of the step, or turned to a random
-orientation so that a corner or an edge meets the wall first (a case the sweep, which
-follows the cube's smallest half-extent, does not cover).
+        text = f"""{note}The remedy: `--ccd` ({key} in the window) sweeps each fast body's motion in
+the step, its travel and its turn, against the static geometry (conservative
+advancement to the time of impact, with the rotation bounded), moves it to
+the first touching pose and gives the corners on their way in speculative
+contacts, so that the contacts stop it. The goal: no cube through the wall up
+to 10,000 m/s, however it meets the wall, for at most 10% extra wall time in
+the ordinary scene ({md.num(ORDINARY_VELOCITY)} m/s launches, test10's default velocity). The cases: face on
+from the fixed launch point (one launch per velocity, the thesis's), and five
+launches per velocity at a random phase of the step, turned to a random
+orientation (a corner or an edge meets the wall first), or both. "Unresolved"
+counts sweeps whose search for the touching pose ran out of iterations (a
+grazing motion; the body is then left where it was, its corner contacts kept).
 
-{md.table(["setting", "step (s)", "first velocity through (m/s)", "limit (m/s)", "no pass up to 10,000 m/s"],
-          scan_table)}
+{md.table(["setting", "case", "step (s)", "first velocity through (m/s)", "limit (m/s)", "no pass up to 10,000 m/s",
+           "unresolved sweeps"], scan_table)}
 
 Cost: {launches} launches one after another at step 0.001, the program's `wall_seconds`
-(median of {repeats} runs, and their spread) per launch: the same work with and without the remedy; beside it
+(median of {repeats} runs, and their spread) per launch, run side by side: each repeat's plain and `--ccd`
+runs at the same time, and the extra time is the median of the {repeats} pairs' ratios; the same launches
+with and without the remedy
+(at {md.num(FAST_VELOCITY)} m/s not the same work: plain, every cube passes in its first step without a
+contact; with `--ccd` every cube is stopped in that step, through contacts); beside it
 the process's CPU time per launch (median), which a busy machine disturbs much less, and the
 CPU share of the runs. Per step is shown too, but it mixes cheap flight steps with costly
 contact steps in proportions that the remedy changes (with `--ccd` a launch ends a step or
@@ -127,18 +139,24 @@ two sooner).
 {md.table(["setting", "launch velocity (m/s)", "wall us per launch (min-max)", "extra wall time", "CPU us per launch",
            "extra CPU time", "wall us per step", "CPU share", "stopped / passed"], cost_table)}
 
-{md.figure("remedy-test10", "test10: highest velocity stopped against the step with and without --ccd "
-           "(left); wall time per launch (right)")}
+{md.figure("remedy-test10", "test10: highest velocity with every launch stopped against the step, with and "
+           "without --ccd, for each way of meeting the wall (left); wall time per launch (right)")}
 
 {md.files_line([csv])}"""
         headline = []
         if has_ccd:
-            ccd_1e3 = next(x for x in rows if x["kind"] == "scan" and x["setting"] == "--ccd" and x["step_s"] == 1e-3)
+            def limit_text(setting, case):
+                x = next((x for x in rows if x["kind"] == "scan" and x["setting"] == setting and x["case"] == case
+                          and x["step_s"] == 1e-3), None)
+                if x is None:
+                    return "not measured"
+                return (f"none through up to the scan limit {md.num(SCAN_LIMIT)} m/s" if not x["first_failure_velocity"]
+                        else f"{md.num(x['max_velocity'], 4)} m/s")
             ordinary = next(c for c in cost_table if c[0] == "--ccd" and c[1] == md.num(ORDINARY_VELOCITY))
-            extra = f"{ordinary[3]} wall time ({ordinary[5]} CPU time)"
-            headline.append(f"test10 --ccd: no cube through the wall at step 0.001 up to "
-                            f"{'the scan limit ' + md.num(SCAN_LIMIT) if not ccd_1e3['first_failure_velocity'] else md.num(ccd_1e3['max_velocity'])}"
-                            f" m/s (plain: 250 m/s), at {extra} per launch in the ordinary scene "
+            headline.append(f"test10 --ccd at step 0.001: face on, {limit_text('--ccd', CASES[0][0])} (plain: "
+                            f"{limit_text('plain', CASES[0][0])}); turned at random and at a random phase, "
+                            f"{limit_text('--ccd', CASES[3][0])} (plain: {limit_text('plain', CASES[3][0])}); "
+                            f"{ordinary[3]} wall time ({ordinary[5]} CPU time) per launch in the ordinary scene "
                             f"({md.num(ORDINARY_VELOCITY)} m/s; goal: at most +10%).")
         else:
             headline.append("test10: no --ccd option in this build; remedy not measured.")

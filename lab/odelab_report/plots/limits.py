@@ -4,8 +4,6 @@ import math
 
 from .common import HAVOK_STYLE, SOLVER_COLOURS, SOLVER_MARKERS, THESIS_STYLE, new_figure, save, serialized
 
-HALF_SIZE, WALL = 0.2, 0.05
-
 
 @serialized
 def apex_error(out_dir, stem, series, failure, resolution):
@@ -98,11 +96,12 @@ def energy_curves(out_dir, stem, rows, start, thesis_range, failure):
 def velocity_limit(out_dir, stem, rows):
     fig, ax = new_figure()
     steps = [r["step_s"] for r in rows]
+    half_size, wall = rows[0]["cube_half_size_m"], rows[0]["wall_thickness_m"]  # as test10 reports them
     fine = [10 ** (math.log10(min(steps)) + i * (math.log10(max(steps)) - math.log10(min(steps))) / 50)
             for i in range(51)]
-    ax.plot(fine, [(HALF_SIZE + WALL) / s for s in fine], color="grey", linestyle="--",
+    ax.plot(fine, [(half_size + wall) / s for s in fine], color="grey", linestyle="--",
             label="geometric prediction (h + t) / step")
-    ax.plot(fine, [(HALF_SIZE + WALL / 2) / s for s in fine], color="grey", linestyle=":",
+    ax.plot(fine, [(half_size + wall / 2) / s for s in fine], color="grey", linestyle=":",
             label="every phase stopped below (h + t/2) / step")
     ax.plot(steps, [r["max_velocity"] for r in rows], marker="o", color="#1f77b4", label="measured limit")
     banded = [r for r in rows if r["velocities_stopped_in_band"]]
@@ -117,7 +116,7 @@ def velocity_limit(out_dir, stem, rows):
     ax.set_yscale("log")
     ax.set_xlabel("step (s)")
     ax.set_ylabel("highest launch velocity with every launch stopped (m/s)")
-    ax.set_title("test10: cube (h = 0.2 m) against a 0.05 m wall, ERP 0.3, CFM 0")
+    ax.set_title(f"test10: cube (h = {half_size:g} m) against a {wall:g} m wall, ERP 0.3, CFM 0")
     ax.legend(loc="upper right")
     return save(fig, out_dir, stem)
 

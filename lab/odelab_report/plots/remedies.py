@@ -60,34 +60,35 @@ def bars_pair(out_dir, stem, title, labels, left_values, left_upper, left_label,
     return save(fig, out_dir, stem)
 
 
+CASE_MARKERS = ("o", "s", "D", "^")
+
+
 @serialized
 def ccd(out_dir, stem, rows, scan_limit, target):
-    fig, (left, right) = new_figure(ncols=2, width=12.0, height=5.2)
-    for setting, colour, marker in (("plain", PLAIN, "o"), ("--ccd", REMEDY, "s")):
-        mine = sorted((r["step_s"], r["max_velocity"], r["first_failure_velocity"]) for r in rows
-                      if r["kind"] == "scan" and r["setting"] == setting)
-        if not mine:
-            continue
-        left.plot([s for s, _, _ in mine], [v for _, v, _ in mine], marker=marker, color=colour,
-                  label=f"{setting}: highest velocity with every launch stopped")
-        capped = [(s, v) for s, v, f in mine if not f]
-        if capped:
-            left.plot([s for s, _ in capped], [v for _, v in capped], linestyle="none", marker="^", markersize=11,
-                      color=colour, label=f"{setting}: nothing passed up to the scan limit")
-    for setting, colour in (("plain", PLAIN), ("--ccd", REMEDY)):
-        turned = [r for r in rows if r["kind"] == "scan" and r["setting"] == f"{setting}, random orientation x5"]
-        for r in turned:
-            left.plot([r["step_s"]], [r["max_velocity"]], marker="D", markersize=8, fillstyle="none",
-                      markeredgewidth=1.5, color=colour, linestyle="none",
-                      label=f"{setting}: cubes turned at random (corner or edge first)")
+    fig, (left, right) = new_figure(ncols=2, width=12.0, height=5.6)
+    scans = [r for r in rows if r["kind"] == "scan"]
+    cases = list(dict.fromkeys(r["case"] for r in scans))
+    for setting, colour, style in (("plain", PLAIN, "--"), ("--ccd", REMEDY, "-")):
+        for case, marker in zip(cases, CASE_MARKERS):
+            mine = sorted((r["step_s"], r["max_velocity"], r["first_failure_velocity"]) for r in scans
+                          if r["setting"] == setting and r["case"] == case)
+            if not mine:
+                continue
+            left.plot([s for s, _, _ in mine], [v for _, v, _ in mine], marker=marker, color=colour, linestyle=style,
+                      fillstyle="full" if setting == "--ccd" else "none", label=f"{setting}: {case}")
+            capped = [(s, v) for s, v, f in mine if not f]
+            if capped:  # nothing passed up to the scan limit: the true limit is above
+                left.plot([s for s, _ in capped], [v * 1.25 for _, v in capped], linestyle="none", marker="^",
+                          markersize=7, color=colour)
+    left.plot([], [], linestyle="none", marker="^", color="black", label="nothing passed up to the scan limit")
     left.axhline(scan_limit, color="grey", linestyle=":", linewidth=1, label=f"scan limit {scan_limit:g} m/s")
-    left.axhline(target, color="red", linestyle="--", linewidth=1, label=f"goal: {target:g} m/s at step 0.001")
+    left.axhline(target, color="red", linestyle="--", linewidth=0.8, label=f"goal: {target:g} m/s")
     left.set_xscale("log")
     left.set_yscale("log")
     left.set_xlabel("step (s)")
-    left.set_ylabel("launch velocity (m/s)")
+    left.set_ylabel("highest launch velocity with every launch stopped (m/s)")
     left.set_title("what it buys")
-    left.legend(loc="lower left", fontsize=7.5)
+    left.legend(loc="lower left", fontsize=6.5)
     costs = [r for r in rows if r["kind"] == "cost"]
     labels = [f"{r['setting']}\n{r['launch_velocity']:g} m/s" for r in costs]
     values = [r["us_per_launch"] for r in costs]
