@@ -182,6 +182,7 @@ class MaximumVelocity : public AbstractWindow {
         maxStopEnergyRatio_ =
             std::max(maxStopEnergyRatio_, mechanicalEnergy(l.cube->getBody(), world()) / l.launchEnergy);
       l.cube->color = l.outcome == Outcome::Passed ? Color{0.9f, 0.25f, 0.2f} : Color{0.3f, 0.8f, 0.35f};
+      if (l.outcome == Outcome::Passed && !options().headless) keepInView(*l.cube);
       lastOutcome_ = l.outcome;
       lastVelocity_ = l.velocity;
     }
@@ -189,14 +190,15 @@ class MaximumVelocity : public AbstractWindow {
   }
 
   void addHudLines(std::vector<std::string>& lines) const override {
-    lines.push_back("launch velocity " + formatValue(velocity_) + " m/s   B launches a cube, F5 / Shift+F5 change it");
     std::string counts = "launched " + std::to_string(launched_) + ": stopped " + std::to_string(stopped_) +
                          ", passed through " + std::to_string(passed_);
     if (lastOutcome_ != Outcome::InFlight)
       counts += "   (last: " + std::string(outcomeName(lastOutcome_)) + " at " + formatValue(lastVelocity_) + " m/s)";
-    lines.push_back(counts);
-    lines.push_back("every arrival is stopped below (h + t/2)/step = " + formatValue(guaranteedStopVelocity()) +
-                    " m/s; (h + t)/step = " + formatValue(geometricPrediction()) + " m/s");
+    // The headline (the compact HUD's line): what happened to the launches.
+    lines.push_back(counts + "   velocity " + formatValue(velocity_) + " m/s (B launches, F5 changes)");
+    lines.push_back("passing windows: none below (h + t/2)/step = " + formatValue(guaranteedStopVelocity()) +
+                    " m/s; above it the phase at the wall decides, (h + t)/step = " +
+                    formatValue(geometricPrediction()) + " m/s; --find-max-velocity scans them");
     lines.push_back(std::string("continuous collision (T): ") +
                     (ccd_ ? "on, " + std::to_string(sweep_.counts().clamps) + " clamps" : std::string("off")));
   }
@@ -235,7 +237,9 @@ class MaximumVelocity : public AbstractWindow {
     if (findMaxVelocity_) VelocityScan::addMetrics(scan_, m);
   }
 
-  void initialCamera(Camera& camera) const override { camera.lookAt({-7.5, 4.5, 8.5}, {-1.5, 2.2, 0.0}); }
+  // From beside the launch line, a little past the wall: the launch point on
+  // the left, the wall edge-on in the middle, a passed cube on its right.
+  void initialCamera(Camera& camera) const override { camera.lookAt({1.5, 3.8, 12.0}, {-1.6, 2.2, 0.0}); }
   SceneBounds bounds() const override { return {{-1.5, 2.5, 0.0}, 6.0}; }
 
   int runHeadless() override {
@@ -321,6 +325,18 @@ class MaximumVelocity : public AbstractWindow {
   }
 
   // Drops the cubes whose outcome is known and that flew far away, with their records.
+  // In a window a passed cube would fly out of sight at hundreds of m/s: it
+  // is held where it was seen to pass, red, just beyond the wall, and no
+  // longer collides, so it changes no later launch. (Headless runs leave it
+  // be: nothing is drawn there.)
+  static void keepInView(Box& cube) {
+    const dBodyID body = cube.getBody();
+    dBodySetLinearVel(body, 0, 0, 0);
+    dBodySetAngularVel(body, 0, 0, 0);
+    dBodySetKinematic(body);
+    dGeomDisable(cube.getGeom());
+  }
+
   void removeFarCubes() {
     removeIf([this](const AbstractObject& object) {
       for (auto it = launchesInScene_.begin(); it != launchesInScene_.end(); ++it) {
