@@ -12,7 +12,7 @@ set(ODELAB_COMMON_OPTIONS_PROGRAM test0)
 # text; integers also a fraction and 20 digits (beyond any integer type).
 set(_bad--seconds "<empty>" 0 -1 nan inf -inf 1e400 abc 1e8)
 set(_bad--step "<empty>" 0 -1 nan inf 1e400 abc 1 1e-7)
-set(_bad--erp "<empty>" -0.1 1.5 nan inf 1e400 abc)
+set(_bad--erp "<empty>" -0.1 1.5 2 nan inf 1e400 abc)
 set(_bad--cfm "<empty>" -1 2 nan inf 1e400 abc)
 set(_bad--sor "<empty>" 0 -1 2 nan inf abc)
 set(_bad--iterations "<empty>" 0 -1 10001 1.5 abc 99999999999999999999)

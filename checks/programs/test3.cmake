@@ -27,7 +27,7 @@ odelab_check(test3_infinite_friction_locks_the_first_pair test3
 odelab_refusals(test3 refuses_bad_options headless 2
   --dominoes=<empty> --dominoes=0 --dominoes=1 --dominoes=-1 --dominoes=1001 --dominoes=1.5 --dominoes=ten
   --dominoes=99999999999999999999
-  --mu=<empty> --mu=-1 --mu=-inf --mu=nan --mu=abc
+  --mu=<empty> --mu= --mu=-1 --mu=-inf --mu=nan --mu=abc
   --no-auto-disable=maybe
   --step=nan --no-such-option)
 odelab_determinism(test3 --seconds 4)

@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadValue{"--step", ""}, BadValue{"--step", "0"}, BadValue{"--step", "-1"}, BadValue{"--step", "-0.001"},
         BadValue{"--step", "nan"}, BadValue{"--step", "inf"}, BadValue{"--step", "1e400"},
         BadValue{"--step", "abc"}, BadValue{"--step", "1"}, BadValue{"--step", "1e-7"},
-        BadValue{"--erp", ""}, BadValue{"--erp", "-0.1"}, BadValue{"--erp", "1.5"}, BadValue{"--erp", "nan"},
+        BadValue{"--erp", ""}, BadValue{"--erp", "-0.1"}, BadValue{"--erp", "1.5"}, BadValue{"--erp", "2"}, BadValue{"--erp", "nan"},
         BadValue{"--erp", "inf"}, BadValue{"--erp", "1e400"}, BadValue{"--erp", "abc"},
         BadValue{"--cfm", ""}, BadValue{"--cfm", "-1"}, BadValue{"--cfm", "-1e-6"}, BadValue{"--cfm", "2"},
         BadValue{"--cfm", "nan"}, BadValue{"--cfm", "inf"}, BadValue{"--cfm", "1e400"}, BadValue{"--cfm", "abc"},
