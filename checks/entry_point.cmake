@@ -4,3 +4,4 @@
 add_test(NAME odelab_sh_run_unknown_program_exits_2
          COMMAND sh -c "bash \"${CMAKE_SOURCE_DIR}/scripts/odelab.sh\" run test11 2>err.txt; s=$?; cat err.txt; test $s -eq 2 && grep -q 'test0 ... test10' err.txt"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(odelab_sh_run_unknown_program_exits_2 PROPERTIES LABELS hardening)

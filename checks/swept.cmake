@@ -36,9 +36,9 @@ odelab_check(test10_ccd_stops_turned_cubes_up_to_10000_seed_2 test10
 
 # --spin (rad/s at launch, to measure the sweep's limit with fast-turning
 # cubes): a finite rate from 0 to 1e6, else status 2 and nothing written.
-odelab_check(test10_refuses_negative_spin test10 STATUS 2 ARGS --headless --spin=-1)
-odelab_check(test10_refuses_nan_spin test10 STATUS 2 ARGS --headless --spin=nan)
-odelab_check(test10_refuses_huge_spin test10 STATUS 2 ARGS --headless --spin=1e7)
+odelab_check(test10_refuses_negative_spin test10 STATUS 2 LABEL hardening ARGS --headless --spin=-1)
+odelab_check(test10_refuses_nan_spin test10 STATUS 2 LABEL hardening ARGS --headless --spin=nan)
+odelab_check(test10_refuses_huge_spin test10 STATUS 2 LABEL hardening ARGS --headless --spin=1e7)
 # A cube turning at 1000 rad/s (one radian a step) toward the wall at
 # 10,000 m/s, corner or edge first, at a random phase: every one of 200 is
 # stopped with --ccd (measured: none of 1000 passed; at 30,000 rad/s, 5 of 1000).

@@ -1,20 +1,15 @@
 # ---- windowed checks: a real window under Xvfb with Mesa's software OpenGL ----
-add_executable(screenshot_check screenshot_check.cpp)
-target_link_libraries(screenshot_check PRIVATE PkgConfig::STB)
-# Compares two PNGs in a region (an overlay appearing, a paused scene not moving).
-add_executable(png_compare png_compare.cpp)
-target_link_libraries(png_compare PRIVATE PkgConfig::STB)
+# Framework behaviour, each through one program (label: window).
 
 # A script with a mistake stops the run with status 2 and a message naming
 # the file and the line, before any window opens (so no display is needed).
 add_test(NAME test0_window_events_script_error_exits_2
-         COMMAND sh -c "\"$<TARGET_FILE:test0>\" --events \"${CMAKE_CURRENT_SOURCE_DIR}/scripts/bad.events\" 2>err.txt; s=$?; cat err.txt; test $s -eq 2 && grep -q 'bad.events:3: key: unknown key name' err.txt"
+         COMMAND sh -c "\"$<TARGET_FILE:test0>\" --events \"${ODELAB_CHECK_SCRIPTS}/bad.events\" 2>err.txt; s=$?; cat err.txt; test $s -eq 2 && grep -q 'bad.events:3: key: unknown key name' err.txt"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(test0_window_events_script_error_exits_2 PROPERTIES LABELS window)
 
-find_program(XVFB_RUN xvfb-run)
 if(NOT XVFB_RUN)
-  message(WARNING "xvfb-run not found: the windowed checks are left out (install xvfb and xauth)")
-  return()
+  return()  # CMakeLists.txt has warned already
 endif()
 
 # test0 renders in a window and saves a screenshot; the image must not be
@@ -24,33 +19,14 @@ endif()
 add_test(NAME test0_window_renders_lit_and_shadowed_scene
          COMMAND sh -c "\"${XVFB_RUN}\" -a -s '-screen 0 1280x800x24' \"$<TARGET_FILE:test0>\" --screenshot test0_window.png --frames 30 --spawn-interval 0.05 && \"$<TARGET_FILE:screenshot_check>\" test0_window.png"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-
-# With no display at all the program says so and exits with status 6.
-add_test(NAME test0_window_without_display_exits_6
-         COMMAND sh -c "env -u DISPLAY -u WAYLAND_DISPLAY \"$<TARGET_FILE:test0>\" --frames 1 --screenshot none.png; test $? -eq 6")
-# Shaders that cannot be found: status 5, naming the path tried.
-add_test(NAME test0_window_missing_shaders_exits_5
-         COMMAND sh -c "\"${XVFB_RUN}\" -a \"$<TARGET_FILE:test0>\" --shader-dir /nonexistent-shaders --frames 1 --screenshot none.png 2>err.txt; s=$?; grep -q /nonexistent-shaders err.txt && test $s -eq 5"
-         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(test0_window_renders_lit_and_shadowed_scene PROPERTIES LABELS window)
+# (No display, missing shaders and font: odelab_window_refusals in programs/test0.cmake.)
 
 # ---- the interactive lab, driven by scripted input (--events) ----------------
 # Each check plays a script from checks/scripts/ (the script says what it
 # does and why) through SDL's event queue, the path real input takes, and
-# checks the metrics the window run writes at exit. Every run gets its own
-# folder for output files.
-#
-# odelab_window_check(NAME PROGRAM EVENTS <file in scripts/> EXPECT <name<op>bound>... ARGS <program args>...)
-function(odelab_window_check name program)
-  cmake_parse_arguments(C "" "EVENTS" "EXPECT;ARGS" ${ARGN})
-  set(dir ${CMAKE_CURRENT_BINARY_DIR}/window_runs/${name})
-  file(MAKE_DIRECTORY ${dir})
-  add_test(NAME ${name}
-           COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x800x24" $<TARGET_FILE:expect_metrics> ${C_EXPECT}
-                   -- $<TARGET_FILE:${program}> --events ${CMAKE_CURRENT_SOURCE_DIR}/scripts/${C_EVENTS}
-                   --out-dir ${dir} ${C_ARGS}
-           WORKING_DIRECTORY ${dir})
-  set_tests_properties(${name} PROPERTIES TIMEOUT 180)
-endfunction()
+# checks the metrics the window run writes at exit (odelab_window_check,
+# check_functions.cmake).
 
 # P stops simulated time: two marks 30 frames apart while paused see the same step.
 odelab_window_check(test2_window_pause_stops_time test2 EVENTS pause.events
@@ -81,17 +57,18 @@ odelab_window_check(test4_window_ode_error_pauses_and_goes_on test4 EVENTS ode_e
 # F12 saves the frame shown as test0_t<simulated seconds>.png in --out-dir and
 # prints its path; the PNG passes the screenshot check above.
 add_test(NAME test0_window_f12_saves_png
-         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_f12.sh ${XVFB_RUN} $<TARGET_FILE:test0>
-                 $<TARGET_FILE:screenshot_check> ${CMAKE_CURRENT_SOURCE_DIR}/scripts/f12.events
+         COMMAND sh ${ODELAB_CHECK_SCRIPTS}/check_f12.sh ${XVFB_RUN} $<TARGET_FILE:test0>
+                 $<TARGET_FILE:screenshot_check> ${ODELAB_CHECK_SCRIPTS}/f12.events
                  ${CMAKE_CURRENT_BINARY_DIR}/window_runs/f12 --spawn-interval 0.05)
 # --record writes every frame as test0_frame_000001.png ...; the help overlay
 # (H) shows over the paused scene. (That the help lists every bound key is
 # checked by the unit test HelpLines.ListEveryBinding.)
 add_test(NAME test0_window_record_frames_and_help_overlay
-         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_help_record.sh ${XVFB_RUN} $<TARGET_FILE:test0>
-                 $<TARGET_FILE:png_compare> ${CMAKE_CURRENT_SOURCE_DIR}/scripts/help_record.events
+         COMMAND sh ${ODELAB_CHECK_SCRIPTS}/check_help_record.sh ${XVFB_RUN} $<TARGET_FILE:test0>
+                 $<TARGET_FILE:png_compare> ${ODELAB_CHECK_SCRIPTS}/help_record.events
                  ${CMAKE_CURRENT_BINARY_DIR}/window_runs/help_record)
-set_tests_properties(test0_window_f12_saves_png test0_window_record_frames_and_help_overlay PROPERTIES TIMEOUT 180)
+set_tests_properties(test0_window_f12_saves_png test0_window_record_frames_and_help_overlay PROPERTIES TIMEOUT 180
+                     LABELS window)
 
 # Benchmark (not a test): frame rate of test5 with 100 plates with the debug
 # drawing and the live plot on against off. Prints figures; see the script.
@@ -108,3 +85,4 @@ add_test(NAME test2_window_panel_sets_cfm
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_panel_cfm.sh ${XVFB_RUN} $<TARGET_FILE:test2>
                  $<TARGET_FILE:expect_metrics> ${CMAKE_CURRENT_SOURCE_DIR}/scripts/panel_cfm.events
                  ${CMAKE_CURRENT_BINARY_DIR}/window_runs/panel_cfm)
+set_tests_properties(test2_window_panel_sets_cfm PROPERTIES LABELS window)

@@ -20,7 +20,7 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 # package needs qhull).
 packages=(
   g++ make cmake pkg-config
-  libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev libglu1-mesa-dev
+  libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev
   libcli11-dev libstb-dev libglm-dev libgtest-dev libimgui-dev
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri

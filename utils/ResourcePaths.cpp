@@ -3,13 +3,23 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <climits>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 // CMake defines the source tree's root so that programs run from the build
-// directory find shaders without installing them.
+// directory find shaders without installing them, the build folder so that
+// only those programs do, and the install's data folder as seen from its
+// program folder (GNUInstallDirs: bin -> ../share/odelab).
 #ifndef ODELAB_SOURCE_DIR
 #define ODELAB_SOURCE_DIR ""
+#endif
+#ifndef ODELAB_BUILD_DIR
+#define ODELAB_BUILD_DIR ""
+#endif
+#ifndef ODELAB_DATA_FROM_BINARY
+#define ODELAB_DATA_FROM_BINARY "../share/odelab"
 #endif
 
 namespace odelab {
@@ -35,8 +45,19 @@ std::string explicitChoice(const ResourceSearch& search) {
   return search.option.empty() ? search.environment : search.option;
 }
 
+// The path with symbolic links resolved, as /proc/self/exe gives the
+// program's; the path itself when it does not exist.
+std::string resolved(const std::string& path) {
+  if (path.empty()) return path;
+  char buffer[PATH_MAX];
+  return ::realpath(path.c_str(), buffer) ? std::string(buffer) : path;
+}
+
 ResourceSearch realSearch(const std::string& option, const char* environmentName) {
-  return {option, environmentValue(environmentName), executableDirectory(), ODELAB_SOURCE_DIR};
+  const std::string executableDir = executableDirectory();
+  return {option, environmentValue(environmentName), executableDir,
+          installedDataDirectory(executableDir, ODELAB_DATA_FROM_BINARY),
+          sourceTreeFor(executableDir, resolved(ODELAB_BUILD_DIR), ODELAB_SOURCE_DIR)};
 }
 
 }  // namespace
@@ -51,8 +72,8 @@ std::vector<std::string> shaderDirCandidates(const ResourceSearch& search) {
   const std::string chosen = explicitChoice(search);
   if (!chosen.empty()) return {chosen};
   std::vector<std::string> candidates;
-  if (!search.executableDir.empty()) candidates.push_back(join(search.executableDir, "shaders"));
-  if (!search.sourceDir.empty()) candidates.push_back(join(search.sourceDir, "shaders"));
+  for (const std::string* folder : {&search.executableDir, &search.installedDataDir, &search.sourceDir})
+    if (!folder->empty()) candidates.push_back(join(*folder, "shaders"));
   return candidates;
 }
 
@@ -60,10 +81,24 @@ std::vector<std::string> fontCandidates(const ResourceSearch& search) {
   const std::string chosen = explicitChoice(search);
   if (!chosen.empty()) return {chosen};
   std::vector<std::string> candidates;
-  if (!search.executableDir.empty()) candidates.push_back(join(join(search.executableDir, "fonts"), FONT_NAME));
-  if (!search.sourceDir.empty()) candidates.push_back(join(join(search.sourceDir, "fonts"), FONT_NAME));
+  for (const std::string* folder : {&search.executableDir, &search.installedDataDir, &search.sourceDir})
+    if (!folder->empty()) candidates.push_back(join(join(*folder, "fonts"), FONT_NAME));
   candidates.push_back(SYSTEM_FONT);
   return candidates;
+}
+
+std::string installedDataDirectory(const std::string& executableDir, const std::string& dataFromBinary) {
+  if (executableDir.empty() || dataFromBinary.empty()) return "";
+  std::string folder = (std::filesystem::path(executableDir) / dataFromBinary).lexically_normal().string();
+  if (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+  return folder;
+}
+
+std::string sourceTreeFor(const std::string& executableDir, const std::string& buildDir,
+                          const std::string& sourceDir) {
+  if (executableDir.empty() || buildDir.empty()) return sourceDir;
+  const bool inside = executableDir == buildDir || executableDir.rfind(join(buildDir, ""), 0) == 0;
+  return inside ? sourceDir : "";
 }
 
 bool isReadableFile(const std::string& path) {

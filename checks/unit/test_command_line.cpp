@@ -2,6 +2,11 @@
 // names the option.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "CommandLine.h"
 
 namespace {
@@ -52,6 +57,27 @@ struct BadValue {
   const char* value;
 };
 
+// "--step" "-0.001" -> step_minus0dot001: a readable, unique test name.
+std::string caseName(const ::testing::TestParamInfo<BadValue>& info) {
+  std::string name;
+  for (const char* c = info.param.option + 2; *c; ++c) name += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+  name += "_";
+  if (!*info.param.value) name += "empty";
+  for (const char* c = info.param.value; *c; ++c) {
+    if (std::isalnum(static_cast<unsigned char>(*c)))
+      name += *c;
+    else if (*c == '-')
+      name += "minus";
+    else if (*c == '.')
+      name += "dot";
+    else if (*c == '/')
+      name += "slash";
+    else
+      name += "_";
+  }
+  return name;
+}
+
 class CommandLineRejects : public ::testing::TestWithParam<BadValue> {};
 
 TEST_P(CommandLineRejects, NamingTheOption) {
@@ -60,19 +86,65 @@ TEST_P(CommandLineRejects, NamingTheOption) {
   EXPECT_NE(p.error.find(GetParam().option), std::string::npos) << p.error;
 }
 
+// Every class of bad value for every common option, as the programs get them
+// (checks/common_options.cmake runs the same values through test0, end to
+// end): numbers empty, out of range, NaN, infinite, beyond a double (1e400),
+// text; integers also a fraction and 20 digits; names not in the list;
+// folders and files missing, a file where a folder belongs and the reverse,
+// a path under a file. An explicit empty path is an error, not "search as
+// usual".
 INSTANTIATE_TEST_SUITE_P(
     BadValues, CommandLineRejects,
-    ::testing::Values(BadValue{"--step", "0"}, BadValue{"--step", "-0.001"}, BadValue{"--step", "nan"},
-                      BadValue{"--step", "inf"}, BadValue{"--step", "abc"}, BadValue{"--step", ""},
-                      BadValue{"--erp", "1.5"}, BadValue{"--erp", "-0.1"}, BadValue{"--erp", "nan"},
-                      BadValue{"--cfm", "-1e-6"}, BadValue{"--cfm", "nan"}, BadValue{"--cfm", "2"},
-                      BadValue{"--iterations", "0"}, BadValue{"--iterations", "2.5"},
-                      BadValue{"--iterations", "1e9"}, BadValue{"--sor", "2"}, BadValue{"--sor", "0"},
-                      BadValue{"--solver", "fast"}, BadValue{"--seconds", "-1"}, BadValue{"--seconds", "0"},
-                      BadValue{"--seconds", "inf"}, BadValue{"--seed", "-3"}, BadValue{"--seed", ""}, BadValue{"--font", ""},
-                      BadValue{"--metrics-json", "."}, BadValue{"--frames", "0"},
-                      BadValue{"--out-dir", "/nonexistent-folder"},
-                      BadValue{"--metrics-json", "/nonexistent-folder/m.json"}));
+    ::testing::Values(
+        BadValue{"--seconds", ""}, BadValue{"--seconds", "0"}, BadValue{"--seconds", "-1"},
+        BadValue{"--seconds", "nan"}, BadValue{"--seconds", "inf"}, BadValue{"--seconds", "-inf"},
+        BadValue{"--seconds", "1e400"}, BadValue{"--seconds", "abc"}, BadValue{"--seconds", "1e8"},
+        BadValue{"--step", ""}, BadValue{"--step", "0"}, BadValue{"--step", "-1"}, BadValue{"--step", "-0.001"},
+        BadValue{"--step", "nan"}, BadValue{"--step", "inf"}, BadValue{"--step", "1e400"},
+        BadValue{"--step", "abc"}, BadValue{"--step", "1"}, BadValue{"--step", "1e-7"},
+        BadValue{"--erp", ""}, BadValue{"--erp", "-0.1"}, BadValue{"--erp", "1.5"}, BadValue{"--erp", "2"}, BadValue{"--erp", "nan"},
+        BadValue{"--erp", "inf"}, BadValue{"--erp", "1e400"}, BadValue{"--erp", "abc"},
+        BadValue{"--cfm", ""}, BadValue{"--cfm", "-1"}, BadValue{"--cfm", "-1e-6"}, BadValue{"--cfm", "2"},
+        BadValue{"--cfm", "nan"}, BadValue{"--cfm", "inf"}, BadValue{"--cfm", "1e400"}, BadValue{"--cfm", "abc"},
+        BadValue{"--sor", ""}, BadValue{"--sor", "0"}, BadValue{"--sor", "-1"}, BadValue{"--sor", "2"},
+        BadValue{"--sor", "nan"}, BadValue{"--sor", "inf"}, BadValue{"--sor", "abc"},
+        BadValue{"--iterations", ""}, BadValue{"--iterations", "0"}, BadValue{"--iterations", "-1"},
+        BadValue{"--iterations", "10001"}, BadValue{"--iterations", "1.5"}, BadValue{"--iterations", "1e9"},
+        BadValue{"--iterations", "abc"}, BadValue{"--iterations", "99999999999999999999"},
+        BadValue{"--solver", ""}, BadValue{"--solver", "fast"}, BadValue{"--solver", "QUICK"},
+        BadValue{"--solver", "1"},
+        BadValue{"--seed", ""}, BadValue{"--seed", "-1"}, BadValue{"--seed", "1.5"}, BadValue{"--seed", "abc"},
+        BadValue{"--seed", "4294967296"}, BadValue{"--seed", "99999999999999999999"},
+        BadValue{"--frames", ""}, BadValue{"--frames", "0"}, BadValue{"--frames", "-1"},
+        BadValue{"--frames", "1.5"}, BadValue{"--frames", "abc"}, BadValue{"--frames", "99999999999999999999"},
+        BadValue{"--width", ""}, BadValue{"--width", "0"}, BadValue{"--width", "63"},
+        BadValue{"--width", "16385"}, BadValue{"--width", "-1"}, BadValue{"--width", "abc"},
+        BadValue{"--width", "99999999999999999999"},
+        BadValue{"--height", ""}, BadValue{"--height", "0"}, BadValue{"--height", "63"},
+        BadValue{"--height", "16385"}, BadValue{"--height", "-1"}, BadValue{"--height", "abc"},
+        BadValue{"--height", "99999999999999999999"},
+        BadValue{"--out-dir", ""}, BadValue{"--out-dir", "/nonexistent-folder"},
+        BadValue{"--out-dir", "/etc/passwd"}, BadValue{"--out-dir", "/etc/passwd/x"},
+        BadValue{"--metrics-json", ""}, BadValue{"--metrics-json", "/nonexistent-folder/m.json"},
+        BadValue{"--metrics-json", "/etc/passwd/m.json"}, BadValue{"--metrics-json", "."},
+        BadValue{"--record", ""}, BadValue{"--record", "/nonexistent-folder"}, BadValue{"--record", "/etc/passwd"},
+        BadValue{"--events", ""}, BadValue{"--events", "/nonexistent-file.events"},
+        BadValue{"--screenshot", ""}, BadValue{"--shader-dir", ""}, BadValue{"--font", ""}),
+    caseName);
+
+// Each of these arguments alone is refused, and the message names it (up to its "=").
+TEST(CommandLine, MalformedArgumentsAreRefused) {
+  for (const std::string argument : {"--no-such-option", "-x", "extra", "--Step=0.01", "--step", "--headless=maybe"}) {
+    const Parsed p = parse({argument});
+    EXPECT_NE(p.error.find(argument.substr(0, argument.find('='))), std::string::npos)
+        << argument << " -> '" << p.error << "'";
+  }
+}
+
+TEST(CommandLine, AnOptionGivenTwiceIsRefused) {
+  const Parsed p = parse({"--seconds=1", "--seconds=2"});
+  EXPECT_NE(p.error.find("--seconds"), std::string::npos) << p.error;
+}
 
 TEST(CommandLine, UnknownOptionIsRefused) {
   const Parsed p = parse({"--no-such-option"});
@@ -82,6 +154,21 @@ TEST(CommandLine, UnknownOptionIsRefused) {
 TEST(CommandLine, ScreenshotNeedsAWindow) {
   const Parsed p = parse({"--headless", "--screenshot", "shot.png"});
   EXPECT_NE(p.error.find("--screenshot"), std::string::npos) << p.error;
+}
+
+TEST(CommandLine, RecordNeedsAWindow) {
+  const Parsed p = parse({"--headless", "--record", "."});
+  EXPECT_NE(p.error.find("--record"), std::string::npos) << p.error;
+}
+
+// Window-only paths that cannot be written are refused when parsing, before
+// any window (or display) is needed.
+TEST(CommandLine, UnwritableWindowPathsAreRefused) {
+  for (const auto& [option, path] : {std::pair<std::string, std::string>{"--screenshot", "/nonexistent-folder/shot.png"},
+                                     {"--record", "/nonexistent-folder"}}) {
+    const Parsed p = parse({option, path});
+    EXPECT_NE(p.error.find(option), std::string::npos) << option << " " << path << " -> '" << p.error << "'";
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The search order for shaders and the HUD font (utils/ResourcePaths.h):
 // explicit choices shadow everything, then the executable's directory, the
-// source tree and (fonts only) the system font; every place tried is listed.
+// install's data folder, the source tree (for programs in the build folder
+// only) and (fonts only) the system font; every place tried is listed.
 
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -72,36 +73,68 @@ class ScopedEnvironment {
 }  // namespace
 
 TEST(ResourcePaths, ShaderOrderWithoutExplicitChoice) {
-  const ResourceSearch search{"", "", "/opt/bin", "/src/odelab"};
-  EXPECT_EQ(odelab::shaderDirCandidates(search), (std::vector<std::string>{"/opt/bin/shaders", "/src/odelab/shaders"}));
+  const ResourceSearch search{"", "", "/opt/bin", "/opt/share/odelab", "/src/odelab"};
+  EXPECT_EQ(odelab::shaderDirCandidates(search),
+            (std::vector<std::string>{"/opt/bin/shaders", "/opt/share/odelab/shaders", "/src/odelab/shaders"}));
 }
 
 TEST(ResourcePaths, ShaderOptionIsTheOnlyPlaceTried) {
-  const ResourceSearch search{"/mine", "/from/env", "/opt/bin", "/src/odelab"};
+  const ResourceSearch search{"/mine", "/from/env", "/opt/bin", "/opt/share/odelab", "/src/odelab"};
   EXPECT_EQ(odelab::shaderDirCandidates(search), (std::vector<std::string>{"/mine"}));
 }
 
 TEST(ResourcePaths, ShaderEnvironmentShadowsDefaults) {
-  const ResourceSearch search{"", "/from/env", "/opt/bin", "/src/odelab"};
+  const ResourceSearch search{"", "/from/env", "/opt/bin", "/opt/share/odelab", "/src/odelab"};
   EXPECT_EQ(odelab::shaderDirCandidates(search), (std::vector<std::string>{"/from/env"}));
 }
 
 TEST(ResourcePaths, UnknownDirectoriesAreSkipped) {
-  const ResourceSearch search{"", "", "", ""};
+  const ResourceSearch search{"", "", "", "", ""};
   EXPECT_TRUE(odelab::shaderDirCandidates(search).empty());
   EXPECT_EQ(odelab::fontCandidates(search), (std::vector<std::string>{SYSTEM_FONT}));
 }
 
 TEST(ResourcePaths, FontOrderEndsWithSystemFont) {
-  const ResourceSearch search{"", "", "/opt/bin/", "/src/odelab"};
+  const ResourceSearch search{"", "", "/opt/bin/", "/opt/share/odelab", "/src/odelab"};
   EXPECT_EQ(odelab::fontCandidates(search),
-            (std::vector<std::string>{"/opt/bin/fonts/DejaVuSansMono.ttf", "/src/odelab/fonts/DejaVuSansMono.ttf",
-                                      SYSTEM_FONT}));
+            (std::vector<std::string>{"/opt/bin/fonts/DejaVuSansMono.ttf", "/opt/share/odelab/fonts/DejaVuSansMono.ttf",
+                                      "/src/odelab/fonts/DejaVuSansMono.ttf", SYSTEM_FONT}));
 }
 
 TEST(ResourcePaths, FontOptionIsTheOnlyPlaceTried) {
-  const ResourceSearch search{"/my/font.ttf", "/env/font.ttf", "/opt/bin", "/src/odelab"};
+  const ResourceSearch search{"/my/font.ttf", "/env/font.ttf", "/opt/bin", "/opt/share/odelab", "/src/odelab"};
   EXPECT_EQ(odelab::fontCandidates(search), (std::vector<std::string>{"/my/font.ttf"}));
+}
+
+TEST(ResourcePaths, InstalledDataDirIsSeenFromTheProgramFolder) {
+  EXPECT_EQ(odelab::installedDataDirectory("/opt/odelab/bin", "../share/odelab"), "/opt/odelab/share/odelab");
+  EXPECT_EQ(odelab::installedDataDirectory("/opt/odelab/bin/", "../share/odelab/"), "/opt/odelab/share/odelab");
+  // A layout with data beside the programs (DATADIR under BINDIR).
+  EXPECT_EQ(odelab::installedDataDirectory("/opt/odelab", "share/odelab"), "/opt/odelab/share/odelab");
+  EXPECT_EQ(odelab::installedDataDirectory("", "../share/odelab"), "");
+}
+
+TEST(ResourcePaths, SourceTreeOnlyForProgramsInTheBuildFolder) {
+  EXPECT_EQ(odelab::sourceTreeFor("/src/build/tests", "/src/build", "/src"), "/src");
+  EXPECT_EQ(odelab::sourceTreeFor("/src/build", "/src/build", "/src"), "/src");
+  // An installed copy, and a folder whose name merely starts like the build's.
+  EXPECT_EQ(odelab::sourceTreeFor("/usr/local/bin", "/src/build", "/src"), "");
+  EXPECT_EQ(odelab::sourceTreeFor("/src/build-other/tests", "/src/build", "/src"), "");
+  // Where the program's folder or the build's is unknown, the tree is all there is.
+  EXPECT_EQ(odelab::sourceTreeFor("", "/src/build", "/src"), "/src");
+  EXPECT_EQ(odelab::sourceTreeFor("/usr/local/bin", "", "/src"), "/src");
+}
+
+TEST(ResourcePaths, InstalledLayoutFindsItsOwnShaders) {
+  // prefix/bin/<program> and prefix/share/odelab/shaders, as `cmake --install` lays them out.
+  TemporaryDirectory prefix;
+  prefix.make("share/odelab/shaders/scene.vert");
+  const std::string bin = prefix.path() + "/bin";
+  const ResourceSearch search{"", "", bin, odelab::installedDataDirectory(bin, "../share/odelab"),
+                              odelab::sourceTreeFor(bin, "/src/build", "/src")};
+  const ResourceLookup lookup = odelab::findFirst(odelab::shaderDirCandidates(search), odelab::isShaderDir);
+  EXPECT_EQ(lookup.found, prefix.path() + "/share/odelab/shaders");
+  EXPECT_EQ(lookup.tried, (std::vector<std::string>{bin + "/shaders", prefix.path() + "/share/odelab/shaders"}));
 }
 
 TEST(ResourcePaths, FindFirstStopsAtFirstAcceptedAndRecordsTried) {
@@ -162,7 +195,8 @@ TEST(ResourcePaths, RealSearchStartsNextToTheExecutable) {
 }
 
 TEST(ResourcePaths, DefaultSearchFindsTheRepositoryShaders) {
-  // The build defines ODELAB_SOURCE_DIR; the repository's shaders/ qualifies.
+  // The build defines ODELAB_SOURCE_DIR, and this test runs inside the build
+  // folder, so the repository's shaders/ qualifies.
   const ScopedEnvironment environment("ODELAB_SHADER_DIR", nullptr);
   EXPECT_TRUE(odelab::findShaderDir("").ok());
 }

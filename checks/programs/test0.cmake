@@ -1,0 +1,36 @@
+# test0 - Box & Sphere (doc/tests/test0.md): physical claims and bad values.
+
+# Six boxes dropped one per 0.5 s onto the platform all come to rest on it
+# within 10 s: finite state, nothing removed, every spawned body resting
+# (speed below 0.05 m/s, centre above the platform's top face and inside it).
+# (Spheres are left out: with no rolling resistance they may roll off.)
+odelab_check(test0_boxes_come_to_rest_on_platform test0
+  EXPECT spawned==6 bodies_resting_on_platform==6 removed_bodies==0 non_finite==0
+  ARGS --headless --seconds 10 --spawn-interval 0.5 --spawn-count 6 --spawn-shapes box)
+# The lifetime rule: after 40 s, every object spawned in the first 10 s is gone.
+odelab_check(test0_lifetime_removes_old_objects test0
+  EXPECT spawned==10 removed_bodies==10 bodies==0
+  ARGS --headless --seconds 40 --spawn-interval 1 --spawn-count 10)
+# The lifetime and boundary rules bound the count: an object every 0.1 s,
+# each living at most 30 s, leaves at most 301 alive at any moment
+# (max_bodies counts them after every step's spawn).
+odelab_check(test0_count_bounded_by_lifetime test0
+  EXPECT spawned==600 max_bodies<=301 max_bodies>0 non_finite==0
+  ARGS --headless --seconds 60 --spawn-interval 0.1)
+
+# The scene's options: numbers empty, out of range, NaN, infinite, beyond a
+# double, text; the count also a fraction and 20 digits; the shapes a name
+# the scene does not know. Then one common option and an unknown one, which
+# show that the program takes the shared options (common_options.cmake
+# checks those in full, through this program).
+odelab_refusals(test0 refuses_bad_options headless 2
+  --spawn-interval=<empty> --spawn-interval=0 --spawn-interval=-1 --spawn-interval=nan --spawn-interval=inf
+  --spawn-interval=1e400 --spawn-interval=abc
+  --spawn-count=<empty> --spawn-count=-1 --spawn-count=1.5 --spawn-count=abc --spawn-count=99999999999999999999
+  --spawn-shapes=<empty> --spawn-shapes=cube --spawn-shapes=BOX --spawn-shapes=1
+  --step=nan --no-such-option)
+# The scene draws its sizes from --seed: the same seed gives the same run,
+# another seed another one.
+odelab_determinism(test0 OTHER_SEED 2 --seconds 5 --spawn-interval 0.2)
+# A window that cannot start writes nothing (the framework's checks, through test0).
+odelab_window_refusals(test0)
