@@ -1,0 +1,87 @@
+"""One program run where the program runs: on this machine, on a Dask
+worker, or in a Slurm step. Standard library only, and no imports from the
+rest of the lab, because it is sent to Dask workers by value and started by
+srun as a script (`python3 process.py TIMEOUT PROGRAM ARGS...`, which prints
+the packed result as one JSON line).
+
+A run gets a folder of its own; its standard output and error go to
+stdout.txt and stderr.txt there, and its CPU time (user + system) comes from
+the kernel's wait4, so it counts the program alone, not the lab or srun."""
+
+import base64
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import tempfile
+import threading
+from pathlib import Path
+
+# A run's files travel back whole; more than this is a mistake (an output
+# file sampled far too often), not a result to ship over the network.
+MAX_PACKED_BYTES = 256 * 1024 * 1024
+
+
+def run_in_folder(argv, folder, timeout, started=None):
+    """Runs argv in `folder`; returns dict(rc, cpu_seconds, host). `started`
+    (if given) is called with the Popen object, so that it can be killed."""
+    folder = Path(folder)
+    with open(folder / "stdout.txt", "wb") as out, open(folder / "stderr.txt", "wb") as err:
+        process = subprocess.Popen(argv, cwd=folder, stdout=out, stderr=err, stdin=subprocess.DEVNULL)
+        if started:
+            started(process)
+        timer = threading.Timer(timeout, process.kill)
+        timer.start()
+        try:
+            _, status, usage = os.wait4(process.pid, 0)
+        finally:
+            timer.cancel()
+    rc = os.waitstatus_to_exitcode(status)
+    process.returncode = rc  # reaped here, so Popen must not wait for it again
+    return dict(rc=rc, cpu_seconds=usage.ru_utime + usage.ru_stime, host=socket.gethostname())
+
+
+def run_packed(argv, timeout):
+    """Runs argv in a fresh temporary folder and returns run_in_folder's
+    dict plus `files`: {name: bytes} of every regular file the run left."""
+    folder = Path(tempfile.mkdtemp(prefix="odelab-run-"))
+    try:
+        result = run_in_folder(argv, folder, timeout)
+        files, total = {}, 0
+        for path in sorted(folder.iterdir()):
+            if path.is_file() and not path.is_symlink():
+                data = path.read_bytes()
+                total += len(data)
+                if total > MAX_PACKED_BYTES:
+                    raise RuntimeError(f"the run's files exceed {MAX_PACKED_BYTES} bytes: {argv}")
+                files[path.name] = data
+        result["files"] = files
+        return result
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def unpack(result, folder):
+    """Writes a packed run's files into `folder`; returns the dict without them."""
+    for name, data in result.pop("files").items():
+        if "/" in name or name in (".", ".."):
+            raise ValueError(f"a packed run returned a file named {name!r}")
+        (Path(folder) / name).write_bytes(data)
+    return result
+
+
+def to_json(result):
+    encoded = dict(result, files={n: base64.b64encode(d).decode("ascii") for n, d in result["files"].items()})
+    return json.dumps(encoded)
+
+
+def from_json(text):
+    result = json.loads(text)
+    result["files"] = {n: base64.b64decode(d) for n, d in result["files"].items()}
+    return result
+
+
+if __name__ == "__main__":  # what srun starts
+    sys.stdout.write(to_json(run_packed(sys.argv[2:], float(sys.argv[1]))) + "\n")
