@@ -23,6 +23,7 @@ packages=(
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
   python3 python3-matplotlib
+  python3-distributed
 )
 
 say() { printf 'odelab: %s\n' "$*" >&2; }

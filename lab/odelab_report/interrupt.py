@@ -20,9 +20,16 @@ def _handler(signum, frame):
 
 
 def install():
-    """Routes SIGINT and SIGTERM to the flag, which is returned."""
-    signal.signal(signal.SIGINT, _handler)
-    signal.signal(signal.SIGTERM, _handler)
+    """Routes SIGINT and SIGTERM to the flag, which is returned. A signal
+    ignored when the lab started (nohup, `&` in a script) stays ignored."""
+    numbers = (signal.SIGINT, signal.SIGTERM)
+    for number in numbers:
+        if signal.getsignal(number) is not signal.SIG_IGN:
+            signal.signal(number, _handler)
+    # The launcher starts Python with them blocked; one that came meanwhile
+    # is delivered now, to the handler. Every thread and program of the lab
+    # starts after this, unblocked.
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, numbers)
     return _flag
 
 

@@ -57,6 +57,7 @@ class DaskExecutor:
         self._outstanding = set()
         self._lock = threading.Lock()
         self._aborted = False
+        self._tag = uuid.uuid4().hex  # in every program's environment: abort() finds them by it
 
     def missing_programs(self, paths):
         """{worker: [programs it cannot execute]} over every worker."""
@@ -69,7 +70,7 @@ class DaskExecutor:
     def execute(self, argv, folder, timeout, timed):
         name = argv[0].rsplit("/", 1)[-1]
         future = self._client.submit(
-            process.run_packed, argv, timeout, key=f"odelab-{name}-{uuid.uuid4().hex}", pure=False,
+            process.run_packed, argv, timeout, self._tag, key=f"odelab-{name}-{uuid.uuid4().hex}", pure=False,
             workers=[self._timing_address] if timed else None, allow_other_workers=False)
         with self._lock:
             self._outstanding.add(future)
@@ -93,15 +94,23 @@ class DaskExecutor:
         return process.unpack(result, folder)
 
     def abort(self):
-        """Cancels every outstanding run on the cluster (Ctrl-C)."""
+        """Cancels every outstanding run on the cluster (Ctrl-C) and ends the
+        programs already running; gives up after 10 s (a lost scheduler)."""
         self._aborted = True
         with self._lock:
             outstanding = list(self._outstanding)
-        if outstanding:
+
+        def cancel():
             try:
-                self._client.cancel(outstanding, force=True)
+                if outstanding:
+                    self._client.cancel(outstanding, force=True)
+                # Cancelling forgets a running task but cannot stop its thread: end its program.
+                self._client.run(process.kill_tagged, self._tag)
             except Exception:  # noqa: BLE001 - the scheduler may be gone already; nothing more to cancel
                 pass
+        canceller = threading.Thread(target=cancel, daemon=True)
+        canceller.start()
+        canceller.join(10)
 
     def close(self):
         try:

@@ -24,12 +24,17 @@ from pathlib import Path
 MAX_PACKED_BYTES = 256 * 1024 * 1024
 
 
-def run_in_folder(argv, folder, timeout, started=None):
+TAG_VARIABLE = "ODELAB_REPORT_RUN"
+
+
+def run_in_folder(argv, folder, timeout, started=None, tag=None):
     """Runs argv in `folder`; returns dict(rc, cpu_seconds, host). `started`
-    (if given) is called with the Popen object, so that it can be killed."""
+    (if given) is called with the Popen object, so that it can be killed;
+    `tag` goes into the program's environment, so that kill_tagged finds it."""
     folder = Path(folder)
+    env = dict(os.environ, **{TAG_VARIABLE: tag}) if tag else None
     with open(folder / "stdout.txt", "wb") as out, open(folder / "stderr.txt", "wb") as err:
-        process = subprocess.Popen(argv, cwd=folder, stdout=out, stderr=err, stdin=subprocess.DEVNULL)
+        process = subprocess.Popen(argv, cwd=folder, stdout=out, stderr=err, stdin=subprocess.DEVNULL, env=env)
         if started:
             started(process)
         timer = threading.Timer(timeout, process.kill)
@@ -43,12 +48,29 @@ def run_in_folder(argv, folder, timeout, started=None):
     return dict(rc=rc, cpu_seconds=usage.ru_utime + usage.ru_stime, host=socket.gethostname())
 
 
-def run_packed(argv, timeout):
+def kill_tagged(tag):
+    """Kills this machine's programs started with `tag` (a cancelled report's
+    runs: Dask cannot stop a task that is running). Returns how many."""
+    needle = f"{TAG_VARIABLE}={tag}".encode() + b"\0"
+    killed = 0
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            if needle in (entry / "environ").read_bytes():
+                os.kill(int(entry.name), 9)
+                killed += 1
+        except OSError:
+            pass  # gone already, or not ours
+    return killed
+
+
+def run_packed(argv, timeout, tag=None):
     """Runs argv in a fresh temporary folder and returns run_in_folder's
     dict plus `files`: {name: bytes} of every regular file the run left."""
     folder = Path(tempfile.mkdtemp(prefix="odelab-run-"))
     try:
-        result = run_in_folder(argv, folder, timeout)
+        result = run_in_folder(argv, folder, timeout, tag=tag)
         files, total = {}, 0
         for path in sorted(folder.iterdir()):
             if path.is_file() and not path.is_symlink():

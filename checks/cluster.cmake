@@ -1,0 +1,17 @@
+# ---- the lab beyond one machine (doc/cluster.md) and the lab's own safety ------
+# cluster: a real Dask scheduler and two workers on 127.0.0.1, started and
+# stopped by the check itself (python3-distributed, scripts/odelab.sh).
+add_test(NAME lab_dask_cluster_same_results
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/scripts/dask_cluster_check.sh
+                 $<TARGET_FILE_DIR:test2> ${CMAKE_BINARY_DIR}/lab-dask-check)
+set_tests_properties(lab_dask_cluster_same_results PROPERTIES
+                     LABELS cluster PROCESSORS 2 TIMEOUT 300 RUN_SERIAL ON)
+# RUN_SERIAL: it asserts that no test4 of this build runs after an interrupt,
+# which another lab check running beside it would contradict.
+
+# The lab's --out, --only and interrupts (issue 15, items 3 and 8): refusals
+# with status 2 and nothing touched, SIGINT at ten moments of a report.
+add_test(NAME lab_out_only_interrupt_safety
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/scripts/lab_safety_check.sh
+                 $<TARGET_FILE_DIR:test2> ${CMAKE_BINARY_DIR}/lab-safety-check)
+set_tests_properties(lab_out_only_interrupt_safety PROPERTIES LABELS lab PROCESSORS 2 TIMEOUT 300)
