@@ -15,3 +15,13 @@ add_test(NAME lab_out_only_interrupt_safety
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/scripts/lab_safety_check.sh
                  $<TARGET_FILE_DIR:test2> ${CMAKE_BINARY_DIR}/lab-safety-check)
 set_tests_properties(lab_out_only_interrupt_safety PROPERTIES LABELS lab PROCESSORS 2 TIMEOUT 300)
+
+# cluster: a single-node Slurm (munged, slurmctld, slurmd started by hand with a
+# configuration in a temporary folder, stopped by process id); srun steps give
+# the local run's non-timing columns; SIGINT and scancel end the lab cleanly.
+# About 30 s; needs root (slurmd), else skipped.
+add_test(NAME lab_slurm_single_node_same_results
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/scripts/slurm_lab_check.sh
+                 $<TARGET_FILE_DIR:test2> ${CMAKE_BINARY_DIR}/lab-slurm-check)
+set_tests_properties(lab_slurm_single_node_same_results PROPERTIES
+                     LABELS cluster PROCESSORS 2 TIMEOUT 300 RUN_SERIAL ON SKIP_RETURN_CODE 77)

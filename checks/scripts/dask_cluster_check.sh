@@ -67,7 +67,9 @@ grep -q "Remove worker" "$work/scheduler.log" || fail "no worker was lost; the r
 grep -q "hosts.*every timed run\|hosts.*no timed runs" "$work/dask/RESULTS.md" || fail "RESULTS.md names no hosts"
 $py "$here/compare_reports.py" "$work/local" "$work/dask" || fail "Dask and local reports differ"
 
-# 2. Interrupt: the previous report (work/dask) must stay as it was.
+# 2. Interrupt: the previous report (work/dask) must stay as it was. Job
+# control on: the lab must not start with SIGINT ignored, as `&` in a script would.
+set -m
 before=$(cd "$work/dask" && find . -type f -exec md5sum {} + | sort)
 "$lab" --quick --only limit-test4 --build-dir "$build" --out "$work/dask" --executor "dask:$address" \
   >"$work/interrupt.log" 2>&1 &
