@@ -106,4 +106,9 @@ def from_json(text):
 
 
 if __name__ == "__main__":  # what srun starts
-    sys.stdout.write(to_json(run_packed(sys.argv[2:], float(sys.argv[1]))) + "\n")
+    try:
+        packed = run_packed(sys.argv[2:], float(sys.argv[1]))
+    except (OSError, RuntimeError) as error:  # a program missing on this node, a full disk
+        sys.stderr.write(f"odelab-report on {socket.gethostname()}: cannot run {sys.argv[2:3]}: {error}\n")
+        sys.exit(2)
+    sys.stdout.write(to_json(packed) + "\n")
