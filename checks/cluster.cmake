@@ -25,3 +25,9 @@ add_test(NAME lab_slurm_single_node_same_results
                  $<TARGET_FILE_DIR:test2> ${CMAKE_BINARY_DIR}/lab-slurm-check)
 set_tests_properties(lab_slurm_single_node_same_results PROPERTIES
                      LABELS cluster PROCESSORS 2 TIMEOUT 300 RUN_SERIAL ON SKIP_RETURN_CODE 77)
+
+# The executor plumbing without a cluster: --executor values, Slurm's CPU
+# count, the one-timing-host rule, a run's files packed and unpacked, --out rules.
+add_test(NAME lab_executor_units
+         COMMAND /usr/bin/python3 -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests)
+set_tests_properties(lab_executor_units PROPERTIES LABELS lab TIMEOUT 60)

@@ -18,34 +18,24 @@ lab=$here/../../lab/odelab-report
 py=/usr/bin/python3
 rm -rf "$work" && mkdir -p "$work"
 
-pids=()
-stop_daemons() {  # workers first (a worker without its scheduler lingers), each with its children
-  local i pid children
-  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do
-    pid=${pids[i]}
-    children=$(pgrep -P "$pid" || true)
-    kill "$pid" 2>/dev/null || true
-    for _ in $(seq 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-    kill -9 "$pid" $children 2>/dev/null || true
-  done
-}
+source "$here/daemons.sh"
 trap stop_daemons EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 
 command -v dask >/dev/null || fail "no dask command: install Debian's python3-distributed (scripts/odelab.sh does)"
-port=$($py -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+port=$(free_port)
 address=tcp://127.0.0.1:$port
 dask scheduler --host 127.0.0.1 --port "$port" --no-dashboard >"$work/scheduler.log" 2>&1 &
-pids+=($!)
+daemon_pids+=($!)
 for i in 1 2; do
   dask worker "$address" --host 127.0.0.1 --nthreads 1 --no-dashboard \
     --local-directory "$work/worker$i" >"$work/worker$i.log" 2>&1 &
-  pids+=($!)
+  daemon_pids+=($!)
 done
 $py -c "import distributed, sys
 c = distributed.Client('$address', timeout=30); c.wait_for_workers(2, timeout=60); c.close()" \
   || fail "the Dask cluster at $address did not start (logs in $work)"
-echo "Dask scheduler $address, nannies ${pids[*]:1}"
+echo "Dask scheduler $address, nannies ${daemon_pids[*]:1}"
 
 experiments=limit-test4,limit-test9,energy-test2
 "$lab" --quick --only $experiments --build-dir "$build" --out "$work/local" >"$work/local.log" 2>&1 \
@@ -57,7 +47,7 @@ lab_pid=$!
 # Kill worker 1's worker process (its nanny starts a new one) while a run is on it.
 victim=
 for _ in $(seq 100); do
-  victim=$(pgrep -P "${pids[1]}" -f spawn_main || true)
+  victim=$(pgrep -P "${daemon_pids[1]}" -f spawn_main || true)
   [ -n "$victim" ] && pgrep -P "$victim" -f "$build/test" >/dev/null && break
   sleep 0.1
 done

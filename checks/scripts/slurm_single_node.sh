@@ -21,20 +21,11 @@ node=$(hostname -s)
 cpus=$(nproc)
 say() { echo "slurm_single_node: $*" >&2; }
 
-pids=()
-stop_daemons() {  # slurmd, slurmctld, then munged: the reverse of their start
-  local i pid
-  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do
-    pid=${pids[i]}
-    kill "$pid" 2>/dev/null || true
-    for _ in $(seq 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-    kill -9 "$pid" 2>/dev/null || true
-  done
-}
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/daemons.sh"
 trap stop_daemons EXIT
 trap 'exit 130' INT TERM
 
-free_port() { /usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
 
 # munge: a fresh key, a socket of its own (not the system's /run/munge).
 dd if=/dev/urandom of="$work/munge/munge.key" bs=1024 count=1 status=none
@@ -42,7 +33,7 @@ chmod 600 "$work/munge/munge.key"
 munged --foreground --force --socket="$work/munge/socket" --key-file="$work/munge/munge.key" \
   --pid-file="$work/munge/munged.pid" --log-file="$work/munge/munged.log" \
   --seed-file="$work/munge/seed" >"$work/munge/stdout.log" 2>&1 &
-pids+=($!)
+daemon_pids+=($!)
 for _ in $(seq 50); do [ -S "$work/munge/socket" ] && break; sleep 0.1; done
 [ -S "$work/munge/socket" ] || { say "munged did not start: $(tail -n 3 "$work/munge/munged.log")"; exit 1; }
 
@@ -78,16 +69,16 @@ PartitionName=local Nodes=$node Default=YES MaxTime=INFINITE State=UP
 CONF
 
 slurmctld -D -i -f "$SLURM_CONF" >"$work/slurmctld.stdout" 2>&1 &
-pids+=($!)
+daemon_pids+=($!)
 slurmd -D -f "$SLURM_CONF" -N "$node" >"$work/slurmd.stdout" 2>&1 &
-pids+=($!)
+daemon_pids+=($!)
 for _ in $(seq 100); do
   sinfo -h -o %t 2>/dev/null | grep -q '^idle' && break
   sleep 0.2
 done
 sinfo -h -o %t 2>/dev/null | grep -q '^idle' || {
   say "the node did not come up: $(tail -n 3 "$work/slurmctld.log" "$work/slurmd.log" 2>&1)"; exit 1; }
-say "node $node ($cpus CPUs) up; slurmctld ${pids[1]}, slurmd ${pids[2]}, munged ${pids[0]}; SLURM_CONF=$SLURM_CONF"
+say "node $node ($cpus CPUs) up; slurmctld ${daemon_pids[1]}, slurmd ${daemon_pids[2]}, munged ${daemon_pids[0]}; SLURM_CONF=$SLURM_CONF"
 status=0
 "$@" || status=$?
 exit $status
