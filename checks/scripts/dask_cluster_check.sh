@@ -9,6 +9,8 @@
 #     run) and every non-timing CSV column must equal the local run's.
 #  2. SIGINT to the lab during a Dask report: status 130, the previous report
 #     untouched, no staging folder left, and no program of it still running.
+#  3. The scheduler killed during a report: status 1, a message naming it,
+#     the previous report untouched.
 # Usage: dask_cluster_check.sh BUILD_TESTS_DIR WORK_DIR
 set -euo pipefail
 build=$(cd "$1" && pwd)
@@ -75,4 +77,18 @@ status=0; wait $lab_pid || status=$?
 sleep 0.5
 ! pgrep -f "$build/test4" >/dev/null || fail "test4 still runs on a worker after the interrupt"
 echo "interrupt: status 130, previous report unchanged, no run left on the workers"
+
+# 3. The scheduler lost in the middle of a report: status 1, a message naming
+# it, the previous report untouched. (Last: the cluster is gone after it.)
+"$lab" --quick --only limit-test4 --build-dir "$build" --out "$work/dask" --executor "dask:$address" \
+  >"$work/lost.log" 2>&1 &
+lab_pid=$!
+for _ in $(seq 200); do pgrep -f "$build/test4" >/dev/null && break; sleep 0.05; done
+kill -9 "${daemon_pids[0]}"
+status=0; wait $lab_pid || status=$?
+[ $status -eq 1 ] || fail "lost scheduler: status $status, not 1: $(tail -n 5 "$work/lost.log")"
+grep -q "lost the Dask scheduler at $address" "$work/lost.log" || fail "lost scheduler: no message naming it"
+! grep -q "Traceback" "$work/lost.log" || fail "lost scheduler: a traceback"
+[ "$before" = "$(cd "$work/dask" && find . -type f -exec md5sum {} + | sort)" ] || fail "previous report changed"
+echo "scheduler lost: status 1, $(grep -m1 "lost the Dask scheduler" "$work/lost.log" | cut -c1-100)..."
 echo "PASS"

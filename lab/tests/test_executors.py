@@ -26,9 +26,10 @@ class ExecutorValues(unittest.TestCase):
         self.assertEqual(executors.parse("local"), ("local", None))
         self.assertEqual(executors.parse("srun"), ("srun", None))
         self.assertEqual(executors.parse("dask:tcp://127.0.0.1:8786"), ("dask", "tcp://127.0.0.1:8786"))
+        self.assertEqual(executors.parse("dask:node1:8786"), ("dask", "node1:8786"))
 
     def test_refused(self):
-        for text in ("", "dask:", "dask", "slurm", "Local"):
+        for text in ("", "dask:", "dask", "slurm", "Local", "dask:nonsense", "dask:tcp://host"):
             with self.assertRaises(ValueError, msg=text):
                 executors.parse(text)
 

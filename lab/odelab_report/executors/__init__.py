@@ -8,6 +8,8 @@ output files, stdout.txt, stderr.txt) into a folder on this machine. The
 runner's cache, job slots, CPU-share accounting and searches stay in
 runner.py, the same for every executor."""
 
+import re
+
 
 class ExecutorError(Exception):
     """The executor itself failed (a lost scheduler, a cancelled allocation,
@@ -20,8 +22,9 @@ def parse(text):
         return text, None
     if text.startswith("dask:"):
         address = text[len("dask:"):]
-        if not address:
-            raise ValueError("dask: needs the scheduler's address, e.g. dask:tcp://127.0.0.1:8786")
+        if not re.fullmatch(r"(?:[a-z]+://)?[^/\s]+:\d+", address):
+            raise ValueError(f"dask: needs the scheduler's address with its port, e.g. "
+                             f"dask:tcp://127.0.0.1:8786, not {address!r}")
         return "dask", address
     raise ValueError(f"unknown executor {text!r}; use local, dask:ADDRESS or srun")
 

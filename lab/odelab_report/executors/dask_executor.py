@@ -21,6 +21,15 @@ from concurrent.futures import CancelledError
 from . import ExecutorError, process
 
 
+def _quiet_library_logs():
+    """Dask logs a lost connection with its tracebacks; the lab says what
+    was lost in one message of its own instead."""
+    import logging
+    names = [n for n in logging.root.manager.loggerDict if n.split(".")[0] in ("distributed", "tornado", "asyncio")]
+    for name in names + ["distributed", "tornado", "asyncio"]:
+        logging.getLogger(name).setLevel(logging.CRITICAL + 1)
+
+
 class DaskExecutor:
     def __init__(self, address, connect_timeout=15):
         try:
@@ -30,11 +39,12 @@ class DaskExecutor:
             raise ExecutorError("--executor dask needs Debian's python3-distributed on this machine "
                                 "(scripts/odelab.sh installs it)") from None
         cloudpickle.register_pickle_by_value(process)
+        _quiet_library_logs()
         self._distributed = distributed
         self.address = address
         try:
             self._client = distributed.Client(address, timeout=connect_timeout, set_as_default=False)
-        except (OSError, TimeoutError) as error:
+        except (OSError, TimeoutError, ValueError) as error:
             raise ExecutorError(f"cannot reach the Dask scheduler at {address}: {error}") from None
         try:
             self._client.wait_for_workers(1, timeout=connect_timeout)
