@@ -69,5 +69,8 @@ interrupt_inside cancelled
 [ ! -e "$work/cancelled" ] || fail "scancel: a report was written"
 grep -q "Slurm allocation [0-9]*.*cancelled" "$work/cancelled.log" || fail "scancel: no message naming the allocation"
 ! grep -q "Traceback" "$work/cancelled.log" || fail "scancel: a traceback"
+# The failed report keeps its runs for a post-mortem; this one needs none.
+kept=$(sed -n 's/.*the runs are kept in \(\/tmp\/odelab-report-runs-[A-Za-z0-9_]*\)$/\1/p' "$work/cancelled.log")
+[ -z "$kept" ] || rm -rf "$kept"
 echo "allocation cancelled: status 1, $(grep -m1 "srun could not run" "$work/cancelled.log")"
 echo PASS
