@@ -121,6 +121,6 @@ function(odelab_require_labels)
   if(unlabelled)
     list(JOIN unlabelled ", " names)
     message(FATAL_ERROR "checks: tests without LABELS (give each one of unit, scene, window, hardening, fuzz, "
-                        "lab, install, peers; see checks/CMakeLists.txt): ${names}")
+                        "lab, install, peers, cluster; see checks/CMakeLists.txt): ${names}")
   endif()
 endfunction()

@@ -17,7 +17,9 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 # the windowed checks an X server with Mesa's software OpenGL; for the lab's
 # report (lab/odelab-report) Debian's Python with matplotlib.
 # The peer engines (peers/, doc/peers.md): Bullet and MuJoCo (whose CMake
-# package needs qhull).
+# package needs qhull). The lab on a cluster (doc/cluster.md): Dask, and
+# Slurm with munge for the single-node check (the check starts and stops
+# the daemons itself).
 packages=(
   g++ make cmake pkg-config
   libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev
@@ -26,6 +28,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   python3 python3-matplotlib
   libbullet-dev libmujoco-dev libqhull-dev
+  python3-distributed munge slurmctld slurmd slurm-client
 )
 
 say() { printf 'odelab: %s\n' "$*" >&2; }

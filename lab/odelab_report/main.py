@@ -1,21 +1,22 @@
 """odelab-report: runs the lab's experiments on the test programs and writes
 one CSV per experiment, plots (PNG + SVG) and RESULTS.md.
 
-Exit status: 0 the report was written; 1 an experiment failed (nothing
-written); 2 invalid option; 3 the test programs (or matplotlib) are missing;
-130 interrupted (nothing written)."""
+Exit status: 0 the report was written; 1 an experiment or the executor
+failed (nothing written); 2 invalid option (nothing touched); 3 the test
+programs (or matplotlib) are missing; 130 interrupted (nothing written)."""
 
 import argparse
 import os
 import shlex
 import shutil
-import signal
 import sys
 import tempfile
 import threading
 import time
 import traceback
 from pathlib import Path
+
+from . import executors, interrupt, output_folder
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 
@@ -27,28 +28,43 @@ def parse_args(argv):
         prog="odelab-report",
         description="Run ODE Lab's speed-accuracy experiments headless and write CSVs, plots and RESULTS.md.",
         epilog=f"Experiments: {names}. Groups: {', '.join(GROUPS)}, all. "
-               "How to read the report: doc/lab.md.")
+               "How to read the report: doc/lab.md; clusters: doc/cluster.md.")
     parser.add_argument("--quick", action="store_true",
                         help="fewer points and shorter runs (about 2 minutes on 2 cores; what CTest runs)")
-    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1, metavar="N",
-                        help="programs run at once (default: all cores, %(default)s here)")
+    parser.add_argument("--jobs", type=int, default=None, metavar="N",
+                        help="programs run at once (default: what the executor offers: all cores here, "
+                             "the workers' threads with dask, the allocation's CPUs with srun)")
     parser.add_argument("--out", type=Path, default=REPO_ROOT / "doc" / "results", metavar="DIR",
-                        help="where the report goes; replaced as a whole when the run succeeds "
-                             "(default: doc/results/ of this checkout)")
+                        help="where the report goes: a new or empty folder, or one holding a previous "
+                             "report, replaced as a whole when the run succeeds (default: doc/results/)")
     parser.add_argument("--only", action="append", default=[], metavar="EXPERIMENT",
                         help="run only these experiments or groups (repeatable, or a comma list)")
     parser.add_argument("--build-dir", type=Path, default=REPO_ROOT / "build" / "tests", metavar="DIR",
                         help="folder holding the test programs (default: build/tests of this checkout)")
+    parser.add_argument("--executor", default="local", metavar="local|dask:ADDRESS|srun",
+                        help="where the programs run: child processes here (default), tasks on the Dask "
+                             "scheduler at ADDRESS, or srun steps of the Slurm allocation (doc/cluster.md)")
     args = parser.parse_args(argv)
-    if args.jobs < 1:
+    if args.jobs is not None and args.jobs < 1:
         parser.error(f"--jobs must be at least 1, not {args.jobs}")
+    try:
+        executors.parse(args.executor)
+    except ValueError as error:
+        parser.error(f"--executor: {error}")
     names = [n.strip() for item in args.only for n in item.split(",") if n.strip()]
+    if args.only and not names:
+        parser.error(f"--only names no experiment ({' '.join(shlex.quote(o) for o in args.only)}); "
+                     f"known: {names_help()}")
     from .experiments import select
     try:
         args.experiments = select(names) if names else list(ALL)
     except ValueError as error:
         parser.error(f"--only: unknown experiment {error}; known: {names_help()}")
     args.partial = bool(names)
+    try:
+        output_folder.check(args.out.resolve())
+    except output_folder.Refused as error:
+        parser.error(f"--out: {error}")
     return args
 
 
@@ -66,28 +82,28 @@ def check_build(build_dir, experiments):
             f"Build the programs first, e.g. `cmake -S . -B build && cmake --build build -j`, "
             f"or point --build-dir at the folder that holds them.\n")
         sys.exit(3)
-
-
-def publish(staging, out):
-    """Replaces `out` with `staging` (a folder beside it) in two renames."""
-    old = None
-    if out.exists():
-        old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-", dir=out.parent))
-        old.rmdir()
-        out.rename(old)
-    staging.rename(out)
-    if old:
-        shutil.rmtree(old)
-
-
-def _interrupt(signum, frame):
-    raise KeyboardInterrupt
+    return [build_dir / p for p in needed]
 
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
-    signal.signal(signal.SIGTERM, _interrupt)  # a killed report writes nothing, as with Ctrl-C
+    stop = interrupt.install()  # Ctrl-C and SIGTERM set a flag; nothing raises mid-way
+    try:
+        status = _main(argv, stop)
+    except SystemExit as exit_:  # argparse's status 2, check_build's 3
+        status = exit_.code if isinstance(exit_.code, int) else 2
+    except OSError as error:  # an unwritable folder, a full disk: a message, not a traceback
+        sys.stderr.write(f"odelab-report: error: {error}; nothing written\n")
+        status = 1
+    if stop.is_set():
+        return interrupt.finish(status)
+    return status
+
+
+def _main(argv, stop):
     args = parse_args(argv)
+    if stop.is_set():
+        return 130
     try:
         import matplotlib
         del matplotlib
@@ -96,34 +112,75 @@ def main(argv=None):
                          "(scripts/odelab.sh installs it)\n")
         return 3
     build_dir = args.build_dir.resolve()
-    check_build(build_dir, args.experiments)
+    programs = check_build(build_dir, args.experiments)
     out = args.out.resolve()
-    out.parent.mkdir(parents=True, exist_ok=True)
 
-    from . import csvout, header as run_header, results_md
-    from .experiments.base import Context
-    from .progress import Progress, clock
-    from .runner import LabError, Runner
+    try:
+        executor = executors.make(args.executor)
+    except executors.ExecutorError as error:
+        sys.stderr.write(f"odelab-report: error: {error}\n")
+        return 1
+    try:
+        return _report(args, argv, stop, build_dir, programs, out, executor)
+    finally:
+        executor.close()
 
-    options = (("--quick, " if args.quick else "") + f"--jobs {args.jobs}, experiments: " +
+
+def _report(args, argv, stop, build_dir, programs, out, executor):
+    from . import header as run_header
+
+    missing = executor.missing_programs(programs)
+    if missing:
+        listed = "; ".join(f"{worker}: {', '.join(Path(p).name for p in ps)}" for worker, ps in missing.items())
+        sys.stderr.write(f"odelab-report: error: the test programs are not at {build_dir} everywhere "
+                         f"(build at the same path on every host, doc/cluster.md): {listed}\n")
+        return 3
+    jobs = args.jobs or executor.cores
+    options = (("--quick, " if args.quick else "") + f"--jobs {jobs}, experiments: " +
                ("all" if not args.partial else ", ".join(e.name for e in args.experiments)))
     header = run_header.collect(build_dir, REPO_ROOT, options)
+    header.append(("executor", f"{executor.description}; timed runs on {executor.timing_host} only"))
+    if stop.is_set():
+        return 130
+    out.parent.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
-    staging.chmod(0o755)
     runs_dir = Path(tempfile.mkdtemp(prefix="odelab-report-runs-"))
+    try:
+        staging.chmod(0o755)
+        status = _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, executor)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)  # gone already when published
+    if status != 1:
+        shutil.rmtree(runs_dir, ignore_errors=True)
+    return status
+
+
+def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, executor):
+    from .experiments.base import Context
+    from .progress import Progress, clock
+    from .report_files import write_report
+    from .runner import LabError, Runner
+
     progress = Progress(args.experiments, args.quick)
-    runner = Runner(build_dir, args.jobs, runs_dir, retry=not args.quick)
+    runner = Runner(args.build_dir.resolve(), jobs, runs_dir, executor, retry=not args.quick)
     outcomes, failures = {}, {}
     sys.stderr.write(f"odelab-report: {len(args.experiments)} experiments{' (quick)' if args.quick else ''}, "
-                     f"{args.jobs} at a time, programs from {build_dir}\n")
+                     f"{jobs} at a time, programs from {args.build_dir.resolve()}, "
+                     f"executor {executor.description}\n")
 
     def run_one(experiment):
         ctx = Context(runner, args.quick, staging, header, progress, experiment.name)
         try:
             outcomes[experiment.name] = experiment.run(ctx)
             progress.finished(experiment.name, True)
-        except BaseException as error:  # noqa: BLE001 - reported below, the report is not written
-            failures[experiment.name] = error if isinstance(error, LabError) else traceback.format_exc()
+        except LabError as error:
+            failures[experiment.name] = str(error)
+            if not runner.aborted:
+                progress.finished(experiment.name, False)
+        except BaseException as error:  # noqa: BLE001 - a defect of the lab: one line here, the trace kept
+            trace = runs_dir / f"{experiment.name}-traceback.txt"
+            trace.write_text(traceback.format_exc())
+            failures[experiment.name] = f"{type(error).__name__}: {error} (Python traceback in {trace})"
             if not runner.aborted:
                 progress.finished(experiment.name, False)
 
@@ -131,50 +188,55 @@ def main(argv=None):
     ordered = sorted(args.experiments, key=lambda e: -e.cost[1 if args.quick else 0])
     threads = [threading.Thread(target=run_one, args=(e,), name=e.name, daemon=True) for e in ordered]
     progress.start()
-    try:
-        for thread in threads:
-            thread.start()
-        for thread in threads:
-            while thread.is_alive():
-                thread.join(0.2)
-    except KeyboardInterrupt:
+    for thread in threads:
+        thread.start()
+    while any(t.is_alive() for t in threads) and not stop.is_set():
+        stop.wait(0.2)
+    if stop.is_set():
         runner.abort()
-        deadline = time.monotonic() + 15  # the experiments end once their runs fail
-        for thread in threads:
-            thread.join(max(0.0, deadline - time.monotonic()))
+        interrupt.wait_for(threads, 60)  # the experiments end once their runs fail
         progress.stop()
-        shutil.rmtree(staging, ignore_errors=True)
-        shutil.rmtree(runs_dir, ignore_errors=True)
-        sys.stderr.write("odelab-report: interrupted; nothing written\n")
+        runner.close()
+        sys.stderr.write(f"odelab-report: interrupted; the outstanding runs ({executor.description}) "
+                         f"were cancelled, nothing written\n")
         return 130
     progress.stop()
     runner.close()
+    if not failures:
+        failures.update(_check_timing_hosts(runner, executor))
+    if stop.is_set():
+        return 130
     if failures:
-        for name, error in failures.items():
-            sys.stderr.write(f"odelab-report: experiment {name} failed:\n{error}\n")
-        shutil.rmtree(staging, ignore_errors=True)
+        _report_failures(failures)
         sys.stderr.write(f"odelab-report: nothing written to {out}; the runs are kept in {runs_dir}\n")
         return 1
-
-    runs_rows = [dict(program=r.spec.program, arguments=" ".join(shlex.quote(a) for a in r.spec.args),
-                      timed=r.spec.timed, repeat=r.spec.repeat, exit_status=r.rc,
-                      sim_seconds=r.m("sim_seconds"), steps=r.m("steps"), wall_seconds=r.m("wall_seconds"),
-                      cpu_seconds=r.cpu_seconds, cpu_share=r.cpu_share) for r in runner.runs]
-    csvout.write_csv(staging / "runs.csv", header, list(runs_rows[0].keys()), runs_rows,
-                     notes=["every program run of this report (each with --headless --metrics-json); wall_seconds: "
-                            "the program's run loop; cpu_seconds: user + system time of the process"])
-    elapsed = progress.elapsed()
-    elapsed_text = (f"{clock(elapsed)} (min:s) for {len(runner.runs)} program runs, --jobs {args.jobs}; "
-                    f"load average at the end {run_header.load_average()}")
-    timed = [r for r in runner.runs if r.spec.timed]
-    if timed:
-        shares = sorted(r.cpu_share for r in timed)
-        elapsed_text += (f"; {len(timed)} timed runs, CPU share median {shares[len(shares) // 2]:.2f}, "
-                         f"lowest {shares[0]:.2f}")
-    command = "lab/odelab-report " + " ".join(shlex.quote(a) for a in argv)
-    results_md.write(staging / "RESULTS.md", header, [(e, outcomes[e.name]) for e in args.experiments], "runs.csv", elapsed_text,
-                     command.strip(), args.quick, [e.name for e in args.experiments] if args.partial else [])
-    publish(staging, out)
-    shutil.rmtree(runs_dir, ignore_errors=True)
+    elapsed = write_report(args, argv, staging, header, runner, progress, outcomes, jobs, executor.timing_host)
+    if stop.is_set():
+        return 130
+    try:
+        output_folder.publish(staging, out)  # the signal handlers only set a flag: both renames happen
+    except output_folder.Refused as error:
+        sys.stderr.write(f"odelab-report: --out: {error}; nothing written\n")
+        return 2
     sys.stderr.write(f"odelab-report: wrote {out} in {clock(elapsed)}\n")
     return 0
+
+
+def _check_timing_hosts(runner, executor):
+    """Wall times of different hosts never meet in one table: every timed run
+    must come from the executor's timing host."""
+    hosts = sorted({r.host for r in runner.runs if r.spec.timed})
+    if len(hosts) > 1:
+        return {"timing": f"timed runs came from {len(hosts)} hosts ({', '.join(hosts)}), so their wall "
+                          f"times cannot share a table; the executor was to keep them on {executor.timing_host}"}
+    return {}
+
+
+def _report_failures(failures):
+    """One message per cause: a lost scheduler fails every experiment alike."""
+    by_message = {}
+    for name, message in failures.items():
+        by_message.setdefault(message, []).append(name)
+    for message, names in by_message.items():
+        which = f"experiment {names[0]}" if len(names) == 1 else f"experiments {', '.join(names)}"
+        sys.stderr.write(f"odelab-report: {which} failed:\n{message}\n")

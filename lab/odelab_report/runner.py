@@ -1,4 +1,4 @@
-"""Runs the test programs as separate processes, at most `jobs` at a time.
+"""Runs the test programs, each a separate process (here or remote, through an executor), at most `jobs` at a time.
 
 Every run gets its own working folder (so output files such as
 Test2_output.txt never collide), writes its metrics with --metrics-json,
@@ -12,13 +12,14 @@ measurement does not pay for it twice.
 import heapq
 import itertools
 import json
-import os
 import shlex
 import subprocess
 import tempfile
 import threading
 from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
+
+from .executors import ExecutorError
 
 # Exit statuses of the test programs (doc/manual.md). 3 and 4 are results
 # (the simulation blew up / ODE reported an error), not mistakes of the lab.
@@ -61,7 +62,7 @@ class RunSpec:
 
 
 class RunResult:
-    def __init__(self, spec, rc, metrics, stdout, stderr, cpu_seconds, workdir):
+    def __init__(self, spec, rc, metrics, stdout, stderr, cpu_seconds, workdir, host):
         self.spec = spec
         self.rc = rc
         self.metrics = metrics
@@ -69,6 +70,7 @@ class RunResult:
         self.stderr = stderr
         self.cpu_seconds = cpu_seconds
         self.workdir = Path(workdir)
+        self.host = host  # which machine ran it: wall times compare only within one host
         self.attempts = 1
 
     def m(self, name, default=None):
@@ -136,17 +138,21 @@ class Slots:
 
 
 class Runner:
-    def __init__(self, build_dir, jobs, tmp_root, retry=True):
+    """Runs RunSpecs through an executor (executors/: local processes, Dask
+    tasks or Slurm steps); `cores` of the Slots is what the executor offers."""
+
+    def __init__(self, build_dir, jobs, tmp_root, executor, retry=True):
         self.build_dir = Path(build_dir)
         self.jobs = jobs
-        self._slots = Slots(jobs, os.cpu_count() or 1)
+        self._executor = executor
+        self._slots = Slots(jobs, executor.cores)
         self._tmp_root = Path(tmp_root)
         self._cache = {}
         self._help = {}
         self._lock = threading.Lock()
         self._pool = ThreadPoolExecutor(max_workers=256, thread_name_prefix="run")
-        self._running = set()
         self._aborted = False
+        self._lost = None  # the executor's failure (a lost scheduler...), once it happened
         self._retry = retry
         self.runs = []  # every RunResult, in completion order (for runs.csv)
 
@@ -196,18 +202,13 @@ class Runner:
         return self._aborted
 
     def abort(self):
-        """Stops every running program (Ctrl-C); new runs fail at once."""
-        with self._lock:
-            self._aborted = True
-            running = list(self._running)
-        for process in running:
-            try:
-                process.kill()
-            except OSError:
-                pass
+        """Stops every running program, here or remote (Ctrl-C); new runs fail at once."""
+        self._aborted = True
+        self._executor.abort()
 
     def close(self):
         self._pool.shutdown(wait=False, cancel_futures=True)
+        self._executor.close()
 
     def _busy(self):
         with self._lock:
@@ -233,6 +234,8 @@ class Runner:
     def _execute(self, spec):
         if self._aborted:
             raise LabError("interrupted")
+        if self._lost:
+            raise LabError(self._lost)
         executable = self.build_dir / spec.program
         workdir = Path(tempfile.mkdtemp(prefix=Path(spec.program).name + "-", dir=self._tmp_root))  # a peer is ../peers/NAME
         argv = [str(executable), "--headless", *spec.args, "--metrics-json", "metrics.json"]
@@ -240,22 +243,15 @@ class Runner:
         try:
             if self._aborted:
                 raise LabError("interrupted")
-            with open(workdir / "stdout.txt", "wb") as out, open(workdir / "stderr.txt", "wb") as err:
-                process = subprocess.Popen(argv, cwd=workdir, stdout=out, stderr=err, stdin=subprocess.DEVNULL)
+            done = self._executor.execute(argv, workdir, spec.timeout, spec.timed)
+        except ExecutorError as error:
+            if not self._aborted:
                 with self._lock:
-                    self._running.add(process)
-                timer = threading.Timer(spec.timeout, process.kill)
-                timer.start()
-                try:
-                    _, status, usage = os.wait4(process.pid, 0)
-                finally:
-                    timer.cancel()
-                    with self._lock:
-                        self._running.discard(process)
-                rc = os.waitstatus_to_exitcode(status)
-                process.returncode = rc
+                    self._lost = self._lost or str(error)  # every later run fails with the first cause
+            raise LabError(str(error)) from None
         finally:
             self._slots.release(spec.timed)
+        rc = done["rc"]
         stdout = (workdir / "stdout.txt").read_text(errors="replace")
         stderr = (workdir / "stderr.txt").read_text(errors="replace")
         if self._aborted:
@@ -263,14 +259,17 @@ class Runner:
         if rc not in RESULT_STATUSES:
             tail = "\n".join(stderr.strip().splitlines()[-5:])
             raise LabError(f"{spec.command_line()} --headless exited with status {rc}"
-                           f" (in {workdir}):\n{tail}")
+                           f" (on {done['host']}, in {workdir}):\n{tail}")
         metrics = {}
         metrics_file = workdir / "metrics.json"
         if metrics_file.exists():
-            metrics = json.loads(metrics_file.read_text())
+            try:
+                metrics = json.loads(metrics_file.read_text())
+            except ValueError as error:
+                raise LabError(f"{spec.command_line()} wrote an invalid metrics file (in {workdir}): {error}") from None
         elif rc == EXIT_OK:
             raise LabError(f"{spec.command_line()} wrote no metrics file (in {workdir})")
-        result = RunResult(spec, rc, metrics, stdout, stderr, usage.ru_utime + usage.ru_stime, workdir)
+        result = RunResult(spec, rc, metrics, stdout, stderr, done["cpu_seconds"], workdir, done["host"])
         with self._lock:
             self.runs.append(result)  # every attempt, kept or not
         return result
