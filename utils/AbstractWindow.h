@@ -20,6 +20,7 @@
 #include "RunLog.h"
 #include "RunOptions.h"
 #include "SceneParameters.h"
+#include "SceneView.h"
 #include "SettingsTable.h"
 #include "SpaceKind.h"
 #include "StripChart.h"
@@ -30,22 +31,6 @@ class App;
 }
 
 namespace odelab {
-
-// What the debug drawing and overlays show; toggled by view keys.
-struct ViewFlags {
-  bool contacts = false;   // C: contact points and normals
-  bool joints = false;     // J: joint anchors and axes
-  bool boxes = false;      // X: axis-aligned bounding boxes
-  bool wireframe = false;  // V: wireframe
-  bool plot = false;       // L: live plot of the scene's measurement
-  bool help = false;       // H: the key list
-};
-
-// A sphere around what the scene shows, used to fit the shadow map.
-struct SceneBounds {
-  double centre[3];
-  double radius;
-};
 
 // The base of every test: owns the ODE world, the collision space, the
 // contact group and the fixed-step loop, and composes the parts with rules
@@ -61,17 +46,14 @@ class AbstractWindow {
   AbstractWindow& operator=(const AbstractWindow&) = delete;
 
   // ---- driven by the runner ----------------------------------------------
-  // Scene-specific command-line options; called before parsing.
-  virtual void addOptions(CLI::App& app);
+  virtual void addOptions(CLI::App& app);  // the scene's own options, before parsing
   void setRunOptions(const RunOptions& options) { options_ = options; }
   // Checks between options after parsing; throw UsageError naming the option.
   virtual void checkOptions() const {}
   // Builds the world and the scene. Call once after options are parsed.
   void initialize(const RunOptions& options);
-  // R: tears everything down and builds the scene again; settings persist.
-  void reset();
-  // Destroys the world, space, objects and threading; call before dCloseODE().
-  void shutdown();
+  void reset();     // R: builds the scene again; settings persist
+  void shutdown();  // destroys world, space, objects, threading; before dCloseODE()
   // Window path: one frame's elapsed real time through the clock, and its
   // steps within `steppingBudget` seconds (--record passes infinity). A
   // blow-up or an ODE error pauses at the last good state (see failure()).
@@ -179,8 +161,7 @@ class AbstractWindow {
   virtual void onSettingChanged(const std::string& change) { (void)change; }
   // After a scene parameter changed from the panel.
   virtual void onParameterChanged(const SceneParameter& parameter) { (void)parameter; }
-  // Headless run length when --seconds is not given.
-  virtual double defaultHeadlessSeconds() const { return 10.0; }
+  virtual double defaultHeadlessSeconds() const { return 10.0; }  // without --seconds
   virtual void initialCamera(Camera& camera) const;
   // The live plot's value after a step and its label with unit; the default
   // plots the contacts of the last step.
@@ -212,10 +193,8 @@ class AbstractWindow {
   void remove(const AbstractObject* object);
   void removeIf(const std::function<bool(const AbstractObject&)>& predicate);
 
-  // Steps for `seconds` of simulated time; false if the state blew up.
-  bool runFor(double seconds);
-  // Prints the metrics, writes --metrics-json, and returns OK or BLEW_UP.
-  int reportHeadless();
+  bool runFor(double seconds);  // false if the state blew up
+  int reportHeadless();         // prints the metrics, writes --metrics-json; OK or BLEW_UP
 
   std::mt19937& random() { return random_; }
   const RunOptions& options() const { return options_; }
