@@ -13,6 +13,7 @@
 #include "CommandLine.h"
 #include "Sphere.h"
 #include "TestMain.h"
+#include "shared/BodyMeasures.h"
 
 namespace {
 
@@ -98,7 +99,7 @@ class BoxAndSphere : public AbstractWindow {
     for (const auto& object : objects()) {
       if (object->isFixed()) continue;
       const dReal* v = dBodyGetLinearVel(object->getBody());
-      const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      const double speed = vectorLength(v);
       maxSpeed = std::max(maxSpeed, speed);
       const dReal* p = object->getPosition();
       const bool abovePlatform = std::fabs(p[0]) < PLATFORM_HALF && std::fabs(p[2]) < PLATFORM_HALF && p[1] > 0.0;

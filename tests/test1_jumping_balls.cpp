@@ -19,6 +19,7 @@
 #include "Sphere.h"
 #include "TestMain.h"
 #include "shared/ApexTracker.h"
+#include "shared/BodyMeasures.h"
 
 namespace {
 
@@ -174,7 +175,7 @@ class JumpingBalls : public AbstractWindow {
     int resting = 0;
     for (const auto& ball : balls_) {
       const dReal* v = dBodyGetLinearVel(ball.body);
-      const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      const double speed = vectorLength(v);
       if (speed < REST_SPEED && dBodyGetPosition(ball.body)[1] - BALL_RADIUS < REST_CLEARANCE) ++resting;
     }
     return resting;

@@ -24,6 +24,7 @@
 #include "CommandLine.h"
 #include "Plane.h"
 #include "TestMain.h"
+#include "shared/BodyMeasures.h"
 
 namespace {
 
@@ -79,12 +80,6 @@ std::vector<Placement> spiralPlacements(int count) {
 double spiralOuterRadius(int count) {
   const std::vector<Placement> p = spiralPlacements(count);
   return std::hypot(p.back().x, p.back().z);
-}
-
-// Angle in degrees between a body's local y axis and the world's y axis.
-double tiltDegrees(dBodyID body) {
-  const dReal* r = dBodyGetRotation(body);  // row-major: r[5] is the y component of local y
-  return std::acos(std::clamp<double>(r[5], -1.0, 1.0)) * 180.0 / M_PI;
 }
 
 std::string muText(double mu) {

@@ -23,6 +23,7 @@
 #include "CommandLine.h"
 #include "TestMain.h"
 #include "shared/SceneConstants.h"
+#include "shared/BodyMeasures.h"
 
 namespace {
 
@@ -40,12 +41,6 @@ constexpr double THESIS_MIN_ERP = 0.1;
 const std::vector<double> BIG_MASS_LADDER{500,   1000,  2000,  4000,  5000,   10000,  15000,
                                           20000, 30000, 50000, 75000, 100000, 200000, 500000};
 constexpr int MAX_CONTACTS_MEASURED = 16;
-
-// Angle in degrees between a body's local y axis and the world's y axis.
-double tiltDegrees(dBodyID body) {
-  const dReal* r = dBodyGetRotation(body);  // row-major 3x4: r[5] is the y component of local y
-  return std::acos(std::clamp<double>(r[5], -1.0, 1.0)) * 180.0 / M_PI;
-}
 
 // Deepest overlap of two geoms as ODE's own collider reports it (0 if apart).
 double penetrationDepth(dGeomID a, dGeomID b) {

@@ -31,6 +31,7 @@
 #include "CommandLine.h"
 #include "TestMain.h"
 #include "shared/SceneConstants.h"
+#include "shared/BodyMeasures.h"
 
 #include <ode/threading_impl.h>
 
@@ -130,10 +131,6 @@ struct Plate {
   bool landed;
 };
 
-double speedOf(dBodyID body) {
-  const dReal* v = dBodyGetLinearVel(body);
-  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
 
 WorldSettings settingsForThisScene() {
   WorldSettings settings;  // step 0.001, QuickStep with 20 iterations

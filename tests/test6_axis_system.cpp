@@ -22,6 +22,7 @@
 #include "Plane.h"
 #include "TestMain.h"
 #include "shared/AngularSpeedLimit.h"
+#include "shared/BodyMeasures.h"
 
 namespace {
 
@@ -40,14 +41,6 @@ constexpr double UPRIGHT_SIDEWAYS_METRES = 0.05;
 
 constexpr double DEFAULT_SECONDS = 60.0;        // headless run (proposed): the thesis saw a fall within seconds
 constexpr double MAX_START_TILT_DEGREES = 0.5;  // --tilt-degrees stays well inside "upright"
-
-double degrees(double radians) { return radians * 180.0 / M_PI; }
-
-// Angle between a body's local y axis and the world's y axis.
-double tiltDegrees(dBodyID body) {
-  const dReal* R = dBodyGetRotation(body);
-  return degrees(std::acos(std::max(-1.0, std::min(1.0, static_cast<double>(R[5])))));
-}
 
 // How far the lowest corner of a box of side `side` is below the ground (0 if above).
 double depthBelowGround(dBodyID body, double side) {

@@ -24,6 +24,7 @@
 #include "Sphere.h"
 #include "TestMain.h"
 #include "shared/AngularSpeedLimit.h"
+#include "shared/BodyMeasures.h"
 
 namespace {
 
@@ -62,8 +63,6 @@ constexpr double ENERGY_MEAN_SECONDS = 1.0;
 // F5 walks the max angular speed limit through these (0: no limit).
 const std::vector<double> ANGULAR_SPEED_LADDER{0.0, 1.0, 3.0, 10.0, 30.0, 100.0};
 
-double length(const dReal* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
 // Kinetic (linear and rotational) plus potential energy of a body, with the
 // potential taken from the height `restY` it was built at.
 double mechanicalEnergy(dBodyID body, double gravity, double restY) {
@@ -85,7 +84,7 @@ double ballJointError(dJointID joint) {
   dJointGetBallAnchor(joint, a1);
   dJointGetBallAnchor2(joint, a2);
   const dReal d[3] = {a1[0] - a2[0], a1[1] - a2[1], a1[2] - a2[2]};
-  return length(d);
+  return vectorLength(d);
 }
 
 class AxisSystem2 : public AbstractWindow {
@@ -154,7 +153,7 @@ class AxisSystem2 : public AbstractWindow {
   void afterStep() override {
     jointError_ = std::max(ballJointError(joints_[0]), ballJointError(joints_[1]));
     maxJointError_ = std::max(maxJointError_, jointError_);
-    pivotSpeed_ = length(dBodyGetAngularVel(pivot_->getBody()));
+    pivotSpeed_ = vectorLength(dBodyGetAngularVel(pivot_->getBody()));
     maxPivotSpeed_ = std::max(maxPivotSpeed_, pivotSpeed_);
     const double energy = pairEnergy();
     if (throwCount_ == 1 && simulatedTime() >= REST_FROM_SECONDS && simulatedTime() <= REST_TO_SECONDS) {
