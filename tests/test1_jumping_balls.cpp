@@ -149,7 +149,7 @@ class JumpingBalls : public AbstractWindow {
 
   double defaultHeadlessSeconds() const override { return RUN_SECONDS; }
 
-  void initialCamera(Camera& camera) const override { camera.lookAt({0.0, 4.5, 15.0}, {0.0, 3.6, 0.0}); }
+  void initialCamera(Camera& camera) const override { camera.lookAt({0.0, 5.0, 21.0}, {0.0, 3.2, 0.0}); }
 
  private:
   static bool eligible(const BallRecord& ball) { return ball.bounce >= MEASURED_FROM_BOUNCE; }
