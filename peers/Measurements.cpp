@@ -208,14 +208,7 @@ Tally measureWall(Engine& engine, const RunOptions& options, Metrics& metrics) {
   metrics.set("guaranteed_stop_velocity", (half + WALL_THICKNESS / 2) / options.step);
   metrics.set("ccd", options.ccd ? 1 : 0);
   // The scene as built, under the names test10 writes them (the constants check).
-  metrics.set("cube_half_size_m", half);
-  metrics.set("cube_mass_kg", CUBE_MASS);
-  metrics.set("wall_thickness_m", WALL_THICKNESS);
-  metrics.set("wall_x_m", WALL_X);
-  metrics.set("wall_height_m", WALL_HEIGHT);
-  metrics.set("wall_width_m", WALL_WIDTH);
-  metrics.set("launch_x_m", LAUNCH_X);
-  metrics.set("launch_y_m", LAUNCH_Y);
+  odelab::scene::test10::reportScene(metrics);
   if (!options.findMaxVelocity) {
     run(options.velocity);
   } else {

@@ -212,15 +212,7 @@ class MaximumVelocity : public AbstractWindow {
 
   void addMetrics(Metrics& m) const override {
     // The scene, for the lab and the peer engines: read here, not copied.
-    m.set("cube_half_size_m", CUBE_HALF_SIZE);
-    m.set("cube_mass_kg", CUBE_MASS);
-    m.set("wall_thickness_m", WALL_THICKNESS);
-    m.set("wall_x_m", WALL_X);
-    m.set("wall_height_m", WALL_HEIGHT);
-    m.set("wall_width_m", WALL_WIDTH);
-    m.set("launch_x_m", LAUNCH_X);
-    m.set("launch_y_m", LAUNCH_Y);
-    m.set("ground_y_m", GROUND_Y);
+    reportScene(m);
     m.set("launch_velocity", findMaxVelocity_ ? 0.0 : velocity_);
     m.set("launch_spin", spin_);
     m.set("launches", launched_);

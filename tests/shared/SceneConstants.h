@@ -86,6 +86,20 @@ constexpr double GROUND_Y = 0.0;
 constexpr double ERP = 0.3;
 constexpr double CFM = 0.0;
 constexpr double SURFACE_LAYER = 0.0;
+// The scene as built, as metrics under one set of names for test10 and its
+// peers (the lab and the constants check read them). `Sink` has set(name, value).
+template <class Sink>
+void reportScene(Sink& m) {
+  m.set("cube_half_size_m", CUBE_HALF_SIZE);
+  m.set("cube_mass_kg", CUBE_MASS);
+  m.set("wall_thickness_m", WALL_THICKNESS);
+  m.set("wall_x_m", WALL_X);
+  m.set("wall_height_m", WALL_HEIGHT);
+  m.set("wall_width_m", WALL_WIDTH);
+  m.set("launch_x_m", LAUNCH_X);
+  m.set("launch_y_m", LAUNCH_Y);
+  m.set("ground_y_m", GROUND_Y);
+}
 }  // namespace test10
 
 }  // namespace odelab::scene
