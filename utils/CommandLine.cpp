@@ -96,6 +96,7 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
         spec.option, [&settings, id](const std::string& text) { setSettingValue(settings, id, settingNumber(id, text)); },
         spec.optionHelp);
     option->default_str(settingText(id, settingValue(settings, id)));
+    option->type_name(id == SettingId::Solver ? "TEXT" : spec.integer ? "INT" : "FLOAT");
     if (id == SettingId::Solver)
       option->check(CLI::IsMember({"quick", "step"}));
     else if (spec.integer)
