@@ -97,6 +97,7 @@ class MaximumVelocity : public AbstractWindow {
             [this](int) { toggleCcd(); });
     keepAcrossRewind(velocity_);
     keepAcrossRewind(ccd_);
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   void addOptions(CLI::App& app) override {

@@ -66,7 +66,9 @@ struct BallRecord {
 
 class JumpingBalls : public AbstractWindow {
  public:
-  JumpingBalls() : AbstractWindow("test1 - Jumping Balls", settingsForThisScene()) {}
+  JumpingBalls() : AbstractWindow("test1 - Jumping Balls", settingsForThisScene()) {
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
+  }
 
   SceneBounds bounds() const override { return {{0.0, 3.5, 0.0}, 11.0}; }
 
@@ -93,7 +95,7 @@ class JumpingBalls : public AbstractWindow {
     const BallSurface* ball = AbstractObject::dataOf<BallSurface>(o1);
     if (!ball) ball = AbstractObject::dataOf<BallSurface>(o2);
     surface.mode = dContactBounce;
-    surface.mu = dInfinity;
+    surface.mu = contactMu();
     surface.bounce = ball ? ball->bounce : 0.0;
     surface.bounce_vel = BOUNCE_VELOCITY;
   }

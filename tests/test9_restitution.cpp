@@ -42,7 +42,9 @@ WorldSettings settingsForThisScene() {
 
 class RestitutionAccuracy : public AbstractWindow {
  public:
-  RestitutionAccuracy() : AbstractWindow("test9 - Restitution accuracy", settingsForThisScene()) {}
+  RestitutionAccuracy() : AbstractWindow("test9 - Restitution accuracy", settingsForThisScene()) {
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
+  }
 
   SceneBounds bounds() const override { return {{0.0, 2.5, 0.0}, 6.0}; }
 
@@ -63,7 +65,7 @@ class RestitutionAccuracy : public AbstractWindow {
   // bounce but set infinite as in the thesis.
   void setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) override {
     surface.mode = dContactBounce;
-    surface.mu = dInfinity;
+    surface.mu = contactMu();
     surface.bounce = BOUNCE;
     surface.bounce_vel = BOUNCE_VELOCITY;
   }

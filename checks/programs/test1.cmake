@@ -28,3 +28,6 @@ odelab_check(test1_erp_0_8_spoils_rebounds test1
 # program takes the shared options (checked in full in common_options.cmake).
 odelab_refusals(test1 refuses_bad_options headless 2 --step=nan --no-such-option)
 odelab_determinism(test1 --seconds 3)
+
+# --mu and --max-contacts (the contact choices every scene with contacts takes).
+odelab_contact_choice_refusals(test1)
