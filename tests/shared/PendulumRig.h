@@ -68,17 +68,26 @@ inline double exactPeriod(const MassProperties& p, double gravity, double amplit
 // Kinetic energy of a body, rotation included: 0.5 m v^2 + 0.5 w^T I w, with
 // w taken into the body frame where ODE keeps I (about the centre of mass,
 // which attach() puts at the body's origin).
-inline double kineticEnergy(dBodyID body) {
+inline double massOf(dBodyID body) {
   dMass m;
   dBodyGetMass(body, &m);
+  return m.mass;
+}
+inline double translationalKineticEnergy(dBodyID body) {
   const dReal* v = dBodyGetLinearVel(body);
+  return 0.5 * massOf(body) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+inline double rotationalKineticEnergy(dBodyID body) {
+  dMass m;
+  dBodyGetMass(body, &m);
   dVector3 w;
   dMultiply1_331(w, dBodyGetRotation(body), dBodyGetAngularVel(body));  // R^T w
   double rotational = 0.0;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) rotational += w[i] * m.I[i * 4 + j] * w[j];
-  return 0.5 * m.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 0.5 * rotational;
+  return 0.5 * rotational;
 }
+inline double kineticEnergy(dBodyID body) { return translationalKineticEnergy(body) + rotationalKineticEnergy(body); }
 
 // Base of the two pendulum scenes: builds the rig and reads its state.
 class PendulumScene : public AbstractWindow {
