@@ -17,6 +17,9 @@
 
 #include "Plane.h"
 #include "Sphere.h"
+#include <CLI/CLI.hpp>
+
+#include "CommandLine.h"
 #include "TestMain.h"
 #include "shared/ApexTracker.h"
 
@@ -70,6 +73,12 @@ class JumpingBalls : public AbstractWindow {
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
+  void addOptions(CLI::App& app) override {
+    app.add_option("--bounce-velocity", bounceVelocity_, "slowest impact that bounces, m/s (the thesis)")
+        ->check(cli::finiteRange(0.0, 1000.0))
+        ->capture_default_str();
+  }
+
   SceneBounds bounds() const override { return {{0.0, 3.5, 0.0}, 11.0}; }
 
  protected:
@@ -97,7 +106,7 @@ class JumpingBalls : public AbstractWindow {
     surface.mode = dContactBounce;
     surface.mu = contactMu();
     surface.bounce = ball ? ball->bounce : 0.0;
-    surface.bounce_vel = BOUNCE_VELOCITY;
+    surface.bounce_vel = bounceVelocity_;
   }
 
   void afterStep() override {
@@ -138,6 +147,7 @@ class JumpingBalls : public AbstractWindow {
   std::string plotLabel() const override { return "largest |rebound ratio - e^2| so far"; }
 
   void addMetrics(Metrics& m) const override {
+    m.set("bounce_velocity", bounceVelocity_);
     const BallRecord* worst = worstBall();
     m.set("max_rebound_error", worst ? worst->error() : NaN);
     m.set("worst_ball", worst ? static_cast<double>(worst - balls_.data()) : NaN);
@@ -190,6 +200,7 @@ class JumpingBalls : public AbstractWindow {
   }
 
   std::vector<BallRecord> balls_;
+  double bounceVelocity_ = BOUNCE_VELOCITY;
 };
 
 }  // namespace

@@ -100,12 +100,30 @@ class Pendulum : public PendulumScene {
     app.add_flag("--no-rotational-energy", withoutRotation_,
                  "leave the rotational kinetic energy 0.5 w^T I w out of the kinetic and total energy "
                  "(0.5 m v^2 only)");
+    // The rig's shape is not in the thesis either; it sets how much of the
+    // kinetic energy is spin about the centre of mass.
+    app.add_option("--rod-length", shape_.rodLength, "rod length, m (proposed)")
+        ->check(cli::positive(6.5))  // the bob stays above the ground: anchor at 7 m
+        ->capture_default_str();
+    app.add_option("--rod-thickness", shape_.rodThickness, "rod thickness (square section), m (proposed)")
+        ->check(cli::positive(1.0))
+        ->capture_default_str();
+    app.add_option("--rod-mass", shape_.rodMass, "rod mass, kg (proposed)")->check(cli::positive(1e6))->capture_default_str();
+    app.add_option("--bob-radius", shape_.bobRadius, "bob radius, m (proposed; its centre is at rod length + radius)")
+        ->check(cli::positive(1.0))
+        ->capture_default_str();
+  }
+
+  void checkOptions() const override {
+    if (shape_.rodLength + 2 * shape_.bobRadius >= ANCHOR_HEIGHT)
+      throw UsageError("--rod-length plus twice --bob-radius must stay below the anchor's height, " +
+                       formatValue(ANCHOR_HEIGHT) + " m, so the bob swings clear of the ground");
   }
 
  protected:
   void buildScene() override {
     buildPendulum(BOB_MASS);
-    exactPeriod_ = exactPeriod(massProperties(BOB_MASS), settings().gravity, START_DEFLECTION);
+    exactPeriod_ = exactPeriod(massProperties(BOB_MASS, shape_), settings().gravity, START_DEFLECTION);
     startEnergy_ = minEnergy_ = maxEnergy_ = lastEnergy_ = totalEnergy();
     maxRotationalEnergy_ = 0.0;
     swingTimer_.restart(deflection());
@@ -169,7 +187,7 @@ class Pendulum : public PendulumScene {
     // swing), against the start energy: the dip a total without it shows.
     m.set("rotational_energy_max_J", maxRotationalEnergy_);
     m.set("rotational_energy_max_fraction", maxRotationalEnergy_ / startEnergy_);
-    const MassProperties p = massProperties(BOB_MASS);
+    const MassProperties p = massProperties(BOB_MASS, shape_);
     m.set("inertia_centre_over_axis",
           (p.inertiaAboutAxis - p.mass * p.centreDistance * p.centreDistance) / p.inertiaAboutAxis);
   }
@@ -189,10 +207,12 @@ class Pendulum : public PendulumScene {
 
   void openOutputFile() {
     auto header = settingsDescription();
-    const MassProperties p = massProperties(BOB_MASS);
-    header.emplace_back("rod", "box [3.0, 0.1, 0.1] m, " + formatValue(ROD_MASS) + " kg, from the anchor along +x");
-    header.emplace_back("bob", "sphere radius " + formatValue(BOB_RADIUS) + " m, " + formatValue(BOB_MASS) +
-                                   " kg, centre " + formatValue(BOB_DISTANCE) + " m from the anchor");
+    const MassProperties p = massProperties(BOB_MASS, shape_);
+    header.emplace_back("rod", "box [" + formatValue(shape_.rodLength) + ", " + formatValue(shape_.rodThickness) +
+                                   ", " + formatValue(shape_.rodThickness) + "] m, " + formatValue(shape_.rodMass) +
+                                   " kg, from the anchor along +x");
+    header.emplace_back("bob", "sphere radius " + formatValue(shape_.bobRadius) + " m, " + formatValue(BOB_MASS) +
+                                   " kg, centre " + formatValue(shape_.bobDistance()) + " m from the anchor");
     header.emplace_back("hinge",
                         "anchor [0, " + formatValue(ANCHOR_HEIGHT) + ", 0], axis [0, 0, 1], to the static world");
     header.emplace_back("start_deflection_rad", formatValue(START_DEFLECTION));

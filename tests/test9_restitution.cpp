@@ -15,6 +15,9 @@
 
 #include "Plane.h"
 #include "Sphere.h"
+#include <CLI/CLI.hpp>
+
+#include "CommandLine.h"
 #include "TestMain.h"
 #include "shared/ApexTracker.h"
 #include "shared/SceneConstants.h"
@@ -46,6 +49,12 @@ class RestitutionAccuracy : public AbstractWindow {
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
+  void addOptions(CLI::App& app) override {
+    app.add_option("--bounce-velocity", bounceVelocity_, "slowest impact that bounces, m/s (proposed)")
+        ->check(cli::finiteRange(0.0, 1000.0))
+        ->capture_default_str();
+  }
+
   SceneBounds bounds() const override { return {{0.0, 2.5, 0.0}, 6.0}; }
 
  protected:
@@ -67,7 +76,7 @@ class RestitutionAccuracy : public AbstractWindow {
     surface.mode = dContactBounce;
     surface.mu = contactMu();
     surface.bounce = BOUNCE;
-    surface.bounce_vel = BOUNCE_VELOCITY;
+    surface.bounce_vel = bounceVelocity_;
   }
 
   void afterStep() override {
@@ -101,6 +110,7 @@ class RestitutionAccuracy : public AbstractWindow {
   std::string plotLabel() const override { return "apex error, relative to the start height"; }
 
   void addMetrics(Metrics& m) const override {
+    m.set("bounce_velocity", bounceVelocity_);
     for (int bounces : REPORTED_BOUNCES) m.set("apex_error_" + std::to_string(bounces), errorAfter(bounces));
     // Every apex, for the lab (the printed lines carry six decimals only).
     for (size_t i = 0; i < relativeErrors_.size(); ++i) m.set("apex_error_" + std::to_string(i + 1), relativeErrors_[i]);
@@ -151,6 +161,7 @@ class RestitutionAccuracy : public AbstractWindow {
   std::vector<double> relativeErrors_;
   double lastDeviation_[3] = {0.0, 0.0, 0.0};
   double maxHorizontalDrift_ = 0.0;
+  double bounceVelocity_ = BOUNCE_VELOCITY;
 };
 
 }  // namespace

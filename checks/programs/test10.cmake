@@ -77,3 +77,7 @@ odelab_determinism(test10 OTHER_SEED 2 --launches 3 --phase-jitter --random-orie
 
 # --mu and --max-contacts (the contact choices every scene with contacts takes).
 odelab_contact_choice_refusals(test10)
+
+# --surface-layer (issue 12; the thesis: 0): refused when not a finite number in [0, 1] m.
+odelab_refusals(test10 refuses_bad_surface_layer headless 2
+  --surface-layer=-0.1 --surface-layer=nan --surface-layer=2 --surface-layer=thick)

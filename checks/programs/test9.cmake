@@ -28,3 +28,7 @@ odelab_determinism(test9 --seconds 3)
 
 # --mu and --max-contacts (the contact choices every scene with contacts takes).
 odelab_contact_choice_refusals(test9)
+
+# --bounce-velocity (issue 12, proposed 0.01 m/s): refused when not a finite number >= 0.
+odelab_refusals(test9 refuses_bad_bounce_velocity headless 2
+  --bounce-velocity=-1 --bounce-velocity=nan --bounce-velocity=inf --bounce-velocity=fast)
