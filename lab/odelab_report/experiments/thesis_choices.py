@@ -112,10 +112,12 @@ def sweeps(quick, h4, s8):
         # The rig's shape (proposed): how much of the kinetic energy is spin
         # about the centre of mass, which is what the omission leaves out.
         Sweep("test2", "rod mass without rotation", t2,
-              [(f"rod {m:g} kg", ["--no-rotational-energy", "--rod-mass", m]) for m in (0.01, 0.015, 0.02, 0.05)],
+              [(f"rod {m:g} kg without rotation", ["--no-rotational-energy", "--rod-mass", m])
+               for m in (0.01, 0.015, 0.02, 0.05)],
               energy, "0.1 kg"),
         Sweep("test2", "bob radius without rotation", t2,
-              [(f"bob radius {r:g} m", ["--no-rotational-energy", "--bob-radius", r]) for r in (0.1, 0.5)],
+              [(f"bob radius {r:g} m without rotation", ["--no-rotational-energy", "--bob-radius", r])
+               for r in (0.1, 0.5)],
               energy, "0.3 m"),
         Sweep("test2", "rod mass with rotation", t2, [("rod 0.015 kg, with rotation", ["--rod-mass", 0.015])],
               energy, "0.1 kg"),
