@@ -15,13 +15,13 @@ REBUILD = Path(__file__).resolve().parents[2] / "reference" / "ode-0.11.1-rebuil
 CLOSE = 1.5  # as thesis.py: "about X" is reproduced within this factor
 
 # Which rows of the rebuild's file speak to which row of the thesis's
-# figures: (test, the rebuild row's conditions, exactly). Selection only:
-# the figures themselves come from the file.
+# figures: (test, the rebuild row's conditions exactly, and optionally a
+# part of its quantity). Selection only: the figures come from the file.
 REBUILD_ROWS = {
     "test2": [("test2", "ERP 0.4, CFM 0, step 0.001, 60 s")],
     "test4_fast": [("test4", "step 0.001, mu dInfinity"), ("test4", "step 0.001, QuickStep 20, mu dInfinity"),
-                   ("test4", "mu 1")],
-    "test4_small": [("test4", "step 0.0001, QuickStep 20, mu dInfinity")],
+                   ("test4", "mu 1", "step 0.001")],
+    "test4_small": [("test4", "step 0.0001, QuickStep 20, mu dInfinity"), ("test4", "mu 1", "step 0.0001")],
     "test6": [("test6", "defaults")],
     "test7": [("test7", "defaults, max angular speed 10")],
     "test8_a": [("test8", "ERP 0.4, CFM 1e-4, 60 s")],
@@ -41,9 +41,9 @@ def rebuild_rows():
 def rebuild_figure(row_key, rows):
     """The ODE 0.11.1 rebuild's figures for a thesis row, "-" when it has none."""
     found = []
-    for test, conditions in REBUILD_ROWS.get(row_key, []):
+    for test, conditions, *quantity in REBUILD_ROWS.get(row_key, []):
         for row in rows:
-            if row["test"] == test and row["conditions"] == conditions:
+            if row["test"] == test and row["conditions"] == conditions and all(q in row["quantity"] for q in quantity):
                 text = f"{row['quantity']}: {row['ode_0_11_1_rebuilt']}"
                 found.append(text + (f" ({row['note']})" if row["note"] else ""))
     return "; ".join(found) or "-"
