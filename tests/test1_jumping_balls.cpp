@@ -17,11 +17,9 @@
 
 #include "Plane.h"
 #include "Sphere.h"
-#include <CLI/CLI.hpp>
-
-#include "CommandLine.h"
 #include "TestMain.h"
 #include "shared/ApexTracker.h"
+#include "shared/BounceVelocityOption.h"
 
 namespace {
 
@@ -74,9 +72,7 @@ class JumpingBalls : public AbstractWindow {
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--bounce-velocity", bounceVelocity_, "slowest impact that bounces, m/s (the thesis)")
-        ->check(cli::finiteRange(0.0, 1000.0))
-        ->capture_default_str();
+    addBounceVelocityOption(app, bounceVelocity_, "the thesis");
   }
 
   SceneBounds bounds() const override { return {{0.0, 3.5, 0.0}, 11.0}; }

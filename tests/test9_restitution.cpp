@@ -15,11 +15,9 @@
 
 #include "Plane.h"
 #include "Sphere.h"
-#include <CLI/CLI.hpp>
-
-#include "CommandLine.h"
 #include "TestMain.h"
 #include "shared/ApexTracker.h"
+#include "shared/BounceVelocityOption.h"
 #include "shared/SceneConstants.h"
 
 namespace {
@@ -50,9 +48,7 @@ class RestitutionAccuracy : public AbstractWindow {
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--bounce-velocity", bounceVelocity_, "slowest impact that bounces, m/s (proposed)")
-        ->check(cli::finiteRange(0.0, 1000.0))
-        ->capture_default_str();
+    addBounceVelocityOption(app, bounceVelocity_, "proposed");
   }
 
   SceneBounds bounds() const override { return {{0.0, 2.5, 0.0}, 6.0}; }
