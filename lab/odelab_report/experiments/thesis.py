@@ -172,7 +172,7 @@ Rules and commands (every command adds `--headless`):
                          f"stopped launches above it reach {t10.m('highest_stopped_velocity_in_band'):.5g} m/s "
                          f"(the thesis's 'about 3630' is within a factor {CLOSE} of the latter: "
                          f"{'yes' if choices.within(t10.m('highest_stopped_velocity_in_band'), 3630) else 'no'})"),
-            "test5": (f"contacts per pair (default 16) varied: 4 per pair, {n_large} plates: ms per step simple "
+            "test5": (f"contacts per pair (default {choices.default_of('test5', 'contacts per pair')}) varied: 4 per pair, {n_large} plates: ms per step simple "
                       f"{simple:.3g}, hash {hash_:.3g} (hash cheaper by 1.5x: {'yes' if hash_ < simple / 1.5 else 'no'})"),
         }
 
