@@ -202,8 +202,7 @@ void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& sur
 
 void AbstractWindow::useContactChoices(double defaultMu) {
   contactChoicesUsed_ = true;
-  contact_.mu = defaultMu;
-  keepAcrossRewind(contact_.mu);
+  contact_.mu = defaultMu;  // the panel parameters below keep both values across rewind
   const auto step = [this](int direction) {
     const double before = contact_.mu;
     contact_.mu = ParameterStepper::nextOnLadder(ContactChoices::muLadder(), contact_.mu, direction);
