@@ -124,3 +124,12 @@ function(odelab_require_labels)
                         "lab, install, peers, cluster; see checks/CMakeLists.txt): ${names}")
   endif()
 endfunction()
+
+# odelab_contact_choice_refusals(PROGRAM): a scene with contacts refuses a
+# friction coefficient that is not a number >= 0 or inf, and a contact limit
+# per pair outside 1 ... 64 or not whole (utils/ContactChoices.cpp).
+function(odelab_contact_choice_refusals program)
+  odelab_refusals(${program} refuses_bad_contact_choices headless 2
+    --mu=<empty> --mu=-1 --mu=-inf --mu=nan --mu=abc
+    --max-contacts=<empty> --max-contacts=0 --max-contacts=65 --max-contacts=2.5 --max-contacts=many)
+endfunction()

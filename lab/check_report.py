@@ -8,7 +8,9 @@
   and SVG in the folder is a valid image: a PNG's signature and IHDR chunk
   with a non-zero width and height, an SVG that parses as XML with an <svg>
   root and a size;
-- every CSV and plot RESULTS.md names exists.
+- every CSV and plot RESULTS.md names exists;
+- thesis.csv, when there, has the ODE 0.11.1 rebuild's column and a
+  sensitivity for every row not reproduced.
 
 Usage: check_report.py REPORT_DIR   (exit 0: all good; 1: problems, listed)"""
 
@@ -61,6 +63,18 @@ def check_csv(path):
     return None
 
 
+def check_thesis(path):
+    """thesis.csv (issue 12): the ODE 0.11.1 rebuild's column, and a
+    sensitivity for every row the lab does not reproduce."""
+    import csv
+    rows = list(csv.DictReader(line for line in path.read_text().splitlines() if not line.startswith("#")))
+    if rows and "ode_0_11_1_rebuild" not in rows[0]:
+        return ["no ode_0_11_1_rebuild column"]
+    return [f"row {i + 1} ({row['test']}, {row['conditions']}) is '{row['verdict']}' with an empty sensitivity"
+            for i, row in enumerate(rows)
+            if not row["verdict"].startswith("reproduced") and not row.get("sensitivity", "").strip()]
+
+
 def main(argv):
     if len(argv) != 2:
         sys.stderr.write(__doc__)
@@ -86,6 +100,8 @@ def main(argv):
         problem = check_csv(path)
         if problem:
             problems.append(f"{path.name}: {problem}")
+    if (folder / "thesis.csv").exists():
+        problems += [f"thesis.csv: {problem}" for problem in check_thesis(folder / "thesis.csv")]
     for path in pngs:
         problem = check_png(path)
         if problem:

@@ -33,6 +33,7 @@ class BoxAndSphere : public AbstractWindow {
     bindKey(SDLK_b, "B", "spawn a box of random size at [0, 10, 0]", [this](int) { spawn(true); });
     bindKey(SDLK_n, "N", "spawn a sphere of random size at [0, 10, 0]", [this](int) { spawn(false); });
     addParameter({"spawn interval (0: off)", "s", &spawnInterval_, 0.0, 10.0});
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   void addOptions(CLI::App& app) override {

@@ -97,9 +97,14 @@ class MaximumVelocity : public AbstractWindow {
             [this](int) { toggleCcd(); });
     keepAcrossRewind(velocity_);
     keepAcrossRewind(ccd_);
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   void addOptions(CLI::App& app) override {
+    app.add_option("--surface-layer", surfaceLayer_,
+                   "contact surface layer, m: overlap ODE leaves uncorrected (the thesis: 0)")
+        ->check(cli::finiteRange(0.0, 1.0))
+        ->capture_default_str();
     app.add_option("--velocity", velocity_, "launch velocity in m/s (window: the starting F5 value)")
         ->check(cli::positive(1e7))
         ->capture_default_str();
@@ -146,7 +151,7 @@ class MaximumVelocity : public AbstractWindow {
   }
 
  protected:
-  void configureWorld() override { dWorldSetContactSurfaceLayer(world(), SURFACE_LAYER); }
+  void configureWorld() override { dWorldSetContactSurfaceLayer(world(), surfaceLayer_); }
 
   void buildScene() override {
     Plane& ground = add<Plane>(space(), 0.0, 1.0, 0.0, GROUND_Y);
@@ -211,6 +216,7 @@ class MaximumVelocity : public AbstractWindow {
   std::string plotLabel() const override { return "launches that passed the wall (of all launched)"; }
 
   void addMetrics(Metrics& m) const override {
+    m.set("surface_layer", surfaceLayer_);
     // The scene, for the lab and the peer engines: read here, not copied.
     reportScene(m);
     m.set("launch_velocity", findMaxVelocity_ ? 0.0 : velocity_);
@@ -392,6 +398,7 @@ class MaximumVelocity : public AbstractWindow {
   Outcome lastOutcome_ = Outcome::InFlight;
   double lastVelocity_ = 0.0;
   VelocityScan::Result scan_;
+  double surfaceLayer_ = SURFACE_LAYER;
 };
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "TestMain.h"
 #include "shared/ApexTracker.h"
 #include "shared/BodyMeasures.h"
+#include "shared/BounceVelocityOption.h"
 
 namespace {
 
@@ -67,7 +68,13 @@ struct BallRecord {
 
 class JumpingBalls : public AbstractWindow {
  public:
-  JumpingBalls() : AbstractWindow("test1 - Jumping Balls", settingsForThisScene()) {}
+  JumpingBalls() : AbstractWindow("test1 - Jumping Balls", settingsForThisScene()) {
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
+  }
+
+  void addOptions(CLI::App& app) override {
+    addBounceVelocityOption(app, bounceVelocity_, "the thesis");
+  }
 
   SceneBounds bounds() const override { return {{0.0, 3.5, 0.0}, 11.0}; }
 
@@ -94,9 +101,9 @@ class JumpingBalls : public AbstractWindow {
     const BallSurface* ball = AbstractObject::dataOf<BallSurface>(o1);
     if (!ball) ball = AbstractObject::dataOf<BallSurface>(o2);
     surface.mode = dContactBounce;
-    surface.mu = dInfinity;
+    surface.mu = contactMu();
     surface.bounce = ball ? ball->bounce : 0.0;
-    surface.bounce_vel = BOUNCE_VELOCITY;
+    surface.bounce_vel = bounceVelocity_;
   }
 
   void afterStep() override {
@@ -137,6 +144,7 @@ class JumpingBalls : public AbstractWindow {
   std::string plotLabel() const override { return "largest |rebound ratio - e^2| so far"; }
 
   void addMetrics(Metrics& m) const override {
+    m.set("bounce_velocity", bounceVelocity_);
     const BallRecord* worst = worstBall();
     m.set("max_rebound_error", worst ? worst->error() : NaN);
     m.set("worst_ball", worst ? static_cast<double>(worst - balls_.data()) : NaN);
@@ -189,6 +197,7 @@ class JumpingBalls : public AbstractWindow {
   }
 
   std::vector<BallRecord> balls_;
+  double bounceVelocity_ = BOUNCE_VELOCITY;
 };
 
 }  // namespace

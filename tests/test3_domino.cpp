@@ -53,7 +53,6 @@ constexpr double FALLEN_TILT_DEGREES = 30.0;
 constexpr double DEFAULT_MU = 1.0;  // the thesis's usual Coulomb coefficient
 constexpr double AUTO_DISABLE_THRESHOLD = 0.1;  // linear (m/s) and angular (rad/s), the thesis's
 // F / G walk through these friction coefficients; the last is dInfinity.
-const std::vector<double> MU_LADDER{0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 5.0, dInfinity};
 
 struct Placement {
   double x, z;
@@ -82,13 +81,6 @@ double spiralOuterRadius(int count) {
   return std::hypot(p.back().x, p.back().z);
 }
 
-std::string muText(double mu) {
-  if (std::isinf(mu)) return "dInfinity";
-  std::ostringstream s;
-  s << mu;
-  return s.str();
-}
-
 WorldSettings settingsForThisScene() {
   WorldSettings settings;  // ERP 0.2, CFM 1e-6: the thesis's defaults
   settings.iterations = 8;  // the thesis: +20% frame rate against 20
@@ -99,26 +91,13 @@ WorldSettings settingsForThisScene() {
 class Domino : public AbstractWindow {
  public:
   Domino() : AbstractWindow("test3 - Domino", settingsForThisScene()) {
-    bindKey(SDLK_f, "F", "lower the contact friction mu (ladder 0 ... 5, dInfinity)",
-            [this](int) { changeMu(-1); });
-    bindKey(SDLK_g, "G", "raise the contact friction mu (ladder 0 ... 5, dInfinity)",
-            [this](int) { changeMu(+1); });
-    keepAcrossRewind(mu_);
+    useContactChoices(DEFAULT_MU);
   }
 
   void addOptions(CLI::App& app) override {
     app.add_option("--dominoes", dominoCount_, "number of dominoes along the spiral")
         ->check(CLI::Range(2, 1000))
         ->capture_default_str();
-    app.add_option_function<std::string>(
-           "--mu", [this](const std::string& text) { mu_ = parseMu(text); },
-           "contact friction coefficient: a number >= 0, or inf for dInfinity")
-        ->check(CLI::Validator(
-            [](std::string& text) {
-              return std::isnan(parseMu(text)) ? "'" + text + "' is not a number >= 0 or inf" : std::string();
-            },
-            "MU"))
-        ->default_str(muText(DEFAULT_MU));
     app.add_flag("--no-auto-disable", noAutoDisable_,
                  "keep every body active (the thesis: very slow) instead of auto-disable with thresholds 0.1");
   }
@@ -142,7 +121,7 @@ class Domino : public AbstractWindow {
 
   void setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) override {
     surface.mode = 0;  // Coulomb friction only
-    surface.mu = mu_;
+    surface.mu = contactMu();
   }
 
   void afterStep() override {
@@ -156,7 +135,7 @@ class Domino : public AbstractWindow {
       << fallenFraction() << ")   chain " << chainSeconds() << " s   active bodies " << activeBodies();
     lines.push_back(s.str());
     s.str("");
-    s << "mu " << muText(mu_) << " (F lower, G raise)   auto-disable "
+    s << "mu " << ContactChoices::muText(contactMu()) << " (F lower, G raise)   auto-disable "
       << (noAutoDisable_ ? "off" : "on, thresholds 0.1 / 0.1");
     lines.push_back(s.str());
   }
@@ -166,7 +145,6 @@ class Domino : public AbstractWindow {
     m.set("fallen_fraction", fallenFraction());
     m.set("chain_seconds", chainSeconds());
     m.set("active_bodies", activeBodies());
-    m.set("mu", std::isinf(mu_) ? -1.0 : mu_);  // -1 stands for dInfinity (JSON has no infinity)
     m.set("auto_disable", noAutoDisable_ ? 0 : 1);
     m.set("min_fallen_tilt_degrees", minFallenTilt());
   }
@@ -187,15 +165,6 @@ class Domino : public AbstractWindow {
   SceneBounds bounds() const override { return {{0, 1, 0}, spiralOuterRadius(dominoCount_) + 2.0}; }
 
  private:
-  // A number >= 0, or inf / infinity / dInfinity; NaN when the text is neither.
-  static double parseMu(const std::string& text) {
-    if (text == "inf" || text == "infinity" || text == "dInfinity") return dInfinity;
-    double value = 0;
-    if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < 0)
-      return std::numeric_limits<double>::quiet_NaN();
-    return value;
-  }
-
   // A domino standing at `at`, facing along the path; tilted forward by
   // `tiltDegrees` about its leading bottom edge, which stays on the ground.
   Box& placeDomino(const Placement& at, double tilt, size_t index) {
@@ -232,12 +201,6 @@ class Domino : public AbstractWindow {
     dBodySetLinearVel(domino.getBody(), velocity[0], velocity[1], velocity[2]);
   }
 
-  void changeMu(int direction) {
-    const double before = mu_;
-    mu_ = ParameterStepper::nextOnLadder(MU_LADDER, mu_, direction);
-    notify("t=" + std::to_string(simulatedTime()) + " s: mu " + muText(before) + " -> " + muText(mu_));
-  }
-
   int fallenCount() const {
     return static_cast<int>(std::count_if(fellAt_.begin(), fellAt_.end(), [](double t) { return t >= 0; }));
   }
@@ -256,7 +219,6 @@ class Domino : public AbstractWindow {
   std::vector<Box*> dominoes_;
   std::vector<double> fellAt_;  // simulated time each domino fell; < 0 while standing
   int dominoCount_ = DEFAULT_DOMINOES;
-  double mu_ = DEFAULT_MU;
   bool noAutoDisable_ = false;
 };
 

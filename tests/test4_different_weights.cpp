@@ -64,6 +64,7 @@ class DifferentWeights : public AbstractWindow {
     bindKey(SDLK_F5, "F5", "big cube's mass up the ladder 500 ... 500000 kg (Shift: down); rebuilds the scene",
             [this](int direction) { stepBigMass(direction); });
     addParameter({"big cube mass", "kg", &bigMass_, 1.0, 1e6, true});
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   void addOptions(CLI::App& app) override {

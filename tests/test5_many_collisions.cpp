@@ -146,6 +146,7 @@ class ManyCollisions : public AbstractWindow {
             [this](int) { spawnPlate(); });
     bindKey(SDLK_q, "Q", "next collision space: simple -> hash -> sap -> quadtree (Shift: back)",
             [this](int direction) { cycleSpace(direction); });
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   // The world must let go of the threading implementation before it is
@@ -214,7 +215,7 @@ class ManyCollisions : public AbstractWindow {
   // soft ERP/CFM); mu dInfinity as in the other scenes.
   void setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) override {
     surface.mode = 0;
-    surface.mu = dInfinity;
+    surface.mu = contactMu();
   }
 
   void afterStep() override {

@@ -56,6 +56,7 @@ class AxisSystem : public AbstractWindow {
   AxisSystem() : AbstractWindow("test6 - Axis system", WorldSettings{}) {
     addParameter({"start tilt", "deg", &startTiltDegrees_, 0.0, MAX_START_TILT_DEGREES});
     addParameter({"spin limit, 0: none", "rad/s", &angularLimit_.radPerSecond, 0.0, 1000.0});
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   // Both act when the scene is built (the tilt) or its bodies made (the

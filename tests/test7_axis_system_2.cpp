@@ -101,6 +101,7 @@ class AxisSystem2 : public AbstractWindow {
             });
     bindKey(SDLK_F5, "F5", "max angular speed of every body up (Shift: down): off, 1, 3, 10, 30, 100 rad/s",
             [this](int direction) { stepAngularSpeedLimit(direction); });
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   void addOptions(CLI::App& app) override {

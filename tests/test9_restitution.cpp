@@ -17,6 +17,7 @@
 #include "Sphere.h"
 #include "TestMain.h"
 #include "shared/ApexTracker.h"
+#include "shared/BounceVelocityOption.h"
 #include "shared/SceneConstants.h"
 
 namespace {
@@ -42,7 +43,13 @@ WorldSettings settingsForThisScene() {
 
 class RestitutionAccuracy : public AbstractWindow {
  public:
-  RestitutionAccuracy() : AbstractWindow("test9 - Restitution accuracy", settingsForThisScene()) {}
+  RestitutionAccuracy() : AbstractWindow("test9 - Restitution accuracy", settingsForThisScene()) {
+    useContactChoices(dInfinity);  // the thesis names no friction here: never slides
+  }
+
+  void addOptions(CLI::App& app) override {
+    addBounceVelocityOption(app, bounceVelocity_, "proposed");
+  }
 
   SceneBounds bounds() const override { return {{0.0, 2.5, 0.0}, 6.0}; }
 
@@ -63,9 +70,9 @@ class RestitutionAccuracy : public AbstractWindow {
   // bounce but set infinite as in the thesis.
   void setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) override {
     surface.mode = dContactBounce;
-    surface.mu = dInfinity;
+    surface.mu = contactMu();
     surface.bounce = BOUNCE;
-    surface.bounce_vel = BOUNCE_VELOCITY;
+    surface.bounce_vel = bounceVelocity_;
   }
 
   void afterStep() override {
@@ -99,6 +106,7 @@ class RestitutionAccuracy : public AbstractWindow {
   std::string plotLabel() const override { return "apex error, relative to the start height"; }
 
   void addMetrics(Metrics& m) const override {
+    m.set("bounce_velocity", bounceVelocity_);
     for (int bounces : REPORTED_BOUNCES) m.set("apex_error_" + std::to_string(bounces), errorAfter(bounces));
     // Every apex, for the lab (the printed lines carry six decimals only).
     for (size_t i = 0; i < relativeErrors_.size(); ++i) m.set("apex_error_" + std::to_string(i + 1), relativeErrors_[i]);
@@ -149,6 +157,7 @@ class RestitutionAccuracy : public AbstractWindow {
   std::vector<double> relativeErrors_;
   double lastDeviation_[3] = {0.0, 0.0, 0.0};
   double maxHorizontalDrift_ = 0.0;
+  double bounceVelocity_ = BOUNCE_VELOCITY;
 };
 
 }  // namespace

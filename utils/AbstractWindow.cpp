@@ -20,9 +20,8 @@ namespace odelab {
 
 namespace {
 
-// The thesis asks dCollide for at least 8 contacts per pair; box-box pairs
-// can produce more, so allow a few extra.
-constexpr int MAX_CONTACTS = 16;
+// The most contacts per pair --max-contacts allows (the array's size).
+constexpr int MAX_CONTACTS = ContactChoices::MOST_CONTACTS;
 constexpr double NOTICE_SECONDS = 4.0;
 // The live plot samples every hundredth of a simulated second. Contact
 // markers are capped so a huge pile cannot flood the renderer.
@@ -177,7 +176,7 @@ void AbstractWindow::nearCallback(void* data, dGeomID o1, dGeomID o2) {
   if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;
 
   dContact contact[MAX_CONTACTS];
-  const int count = dCollide(o1, o2, MAX_CONTACTS, &contact[0].geom, sizeof(dContact));
+  const int count = dCollide(o1, o2, self->maxContacts(), &contact[0].geom, sizeof(dContact));
   if (count <= 0) return;
   dSurfaceParameters surface{};
   self->setContactSurface(o1, o2, surface);
@@ -198,7 +197,26 @@ void AbstractWindow::nearCallback(void* data, dGeomID o1, dGeomID o2) {
 
 void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) {
   surface.mode = 0;
-  surface.mu = dInfinity;
+  surface.mu = contactMu();
+}
+
+void AbstractWindow::useContactChoices(double defaultMu) {
+  contactChoicesUsed_ = true;
+  contact_.mu = defaultMu;  // the panel parameters below keep both values across rewind
+  const auto step = [this](int direction) {
+    const double before = contact_.mu;
+    contact_.mu = ParameterStepper::nextOnLadder(ContactChoices::muLadder(), contact_.mu, direction);
+    notify(timeStamp(simulatedTime_) + ": mu " + ContactChoices::muText(before) + " -> " +
+           ContactChoices::muText(contact_.mu));
+  };
+  bindKey(SDLK_f, "F", "lower the contact friction mu (ladder 0 ... 5, dInfinity)", [step](int) { step(-1); });
+  bindKey(SDLK_g, "G", "raise the contact friction mu (ladder 0 ... 5, dInfinity)", [step](int) { step(+1); });
+  addParameter({"contact friction mu (G: dInfinity)", "", &contact_.mu, 0.0, ContactChoices::PANEL_MU_MAX});
+  addParameter({"contacts per pair", "", &contact_.maxContacts, 1.0, double(ContactChoices::MOST_CONTACTS)});
+}
+
+void AbstractWindow::addContactOptions(CLI::App& app) {
+  if (contactChoicesUsed_) contact_.addOptions(app);
 }
 
 bool AbstractWindow::stepOnce() {
@@ -404,6 +422,11 @@ Metrics AbstractWindow::metrics() const {
   m.set("bodies", bodyCount());
   m.set("disabled_bodies", disabledBodyCount());
   m.set("contacts", contactsLastStep_);
+  if (contactChoicesUsed_) {
+    m.set("mu", ContactChoices::muMetric(contact_.mu));  // -1: dInfinity (JSON has no infinity)
+    m.set("mu_infinite", std::isinf(contact_.mu) ? 1 : 0);
+    m.set("max_contacts", contact_.contactLimit());
+  }
   m.set("non_finite", blowUpReason_.empty() ? 0 : 1);
   m.set("state_hash", static_cast<double>(stateHash()));
   addMetrics(m);
@@ -412,7 +435,7 @@ Metrics AbstractWindow::metrics() const {
 }
 
 std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescription() const {
-  return {
+  std::vector<std::pair<std::string, std::string>> description{
       {"test", title_},
       {"ode_version", dODE_VERSION},
       {"ode_precision", dCheckConfiguration("ODE_double_precision") ? "double" : "single"},
@@ -427,6 +450,11 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
       {"space", spaceKindName(spaceKind_)},
       {"seed", std::to_string(options_.seed)},
   };
+  if (contactChoicesUsed_) {
+    description.push_back({"contact_mu", ContactChoices::muText(contact_.mu)});
+    description.push_back({"max_contacts_per_pair", std::to_string(contact_.contactLimit())});
+  }
+  return description;
 }
 
 void AbstractWindow::applySettings(const std::string& change) {

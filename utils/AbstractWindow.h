@@ -12,6 +12,7 @@
 
 #include "AbstractObject.h"
 #include "Camera.h"
+#include "ContactChoices.h"
 #include "DebugMarkers.h"
 #include "KeyTable.h"
 #include "Metrics.h"
@@ -47,6 +48,8 @@ class AbstractWindow {
 
   // ---- driven by the runner ----------------------------------------------
   virtual void addOptions(CLI::App& app);  // the scene's own options, before parsing
+  // --mu and --max-contacts, for scenes that called useContactChoices().
+  void addContactOptions(CLI::App& app);
   void setRunOptions(const RunOptions& options) { options_ = options; }
   // Checks between options after parsing; throw UsageError naming the option.
   virtual void checkOptions() const {}
@@ -148,7 +151,14 @@ class AbstractWindow {
   // every (re)build, before buildScene().
   virtual void configureWorld() {}
   // Contact surface for a colliding pair; the default is plain friction (mu dInfinity).
+  // Overrides take mu from contactMu() so --mu, F / G and the panel reach them.
   virtual void setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface);
+  // Call in the constructor of a scene with contacts: --mu and --max-contacts
+  // become options (the scene's default mu given here), F / G step mu along
+  // a ladder, the panel shows both, and headers and metrics name them.
+  void useContactChoices(double defaultMu);
+  double contactMu() const { return contact_.mu; }
+  int maxContacts() const { return contact_.contactLimit(); }
   // Before every step, after recorded inputs and the drag spring are
   // applied and before collision: forces, swept tests, scripted changes.
   virtual void beforeStep() {}
@@ -258,6 +268,8 @@ class AbstractWindow {
   double nextChartTime_ = 0.0;
   bool screenshotRequested_ = false;
   Metrics marks_;
+  ContactChoices contact_{dInfinity};
+  bool contactChoicesUsed_ = false;
 };
 
 }  // namespace odelab

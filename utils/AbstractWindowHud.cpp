@@ -77,6 +77,9 @@ std::vector<std::string> AbstractWindow::hudLines() const {
       << " snapshots)   dropped steps " << time_.droppedSteps() << "   H help";
     lines.push_back(s.str());
     lines.push_back(springLine(settings_));
+    if (contactChoicesUsed_)
+      lines.push_back("contact mu " + ContactChoices::muText(contact_.mu) + " (F / G)   contacts per pair " +
+                      std::to_string(contact_.contactLimit()));
     if (const AbstractObject* object = draggedObject()) {
       const dReal* v = dBodyGetLinearVel(object->getBody());
       s.str("");

@@ -44,6 +44,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   app.get_formatter()->column_width(34);
   cli::addCommonOptions(app, options, scene.settings());
   scene.addOptions(app);
+  scene.addContactOptions(app);
   cli::rejectEmptyValues(app);
   app.footer(cli::keysHelp(scene));
   try {

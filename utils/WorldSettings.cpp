@@ -49,7 +49,8 @@ void ParameterStepper::stepCfm(WorldSettings& settings, int direction) const {
 }
 
 double ParameterStepper::nextOnLadder(const std::vector<double>& ladder, double current, int direction) {
-  const double tolerance = 1e-9 * std::fabs(current);
+  // Not relative at infinity (mu's dInfinity): inf - inf would match no rung.
+  const double tolerance = std::isfinite(current) ? 1e-9 * std::fabs(current) : 0.0;
   if (direction > 0) {
     for (double rung : ladder)
       if (rung > current + tolerance) return rung;

@@ -34,3 +34,6 @@ odelab_refusals(test0 refuses_bad_options headless 2
 odelab_determinism(test0 OTHER_SEED 2 --seconds 5 --spawn-interval 0.2)
 # A window that cannot start writes nothing (the framework's checks, through test0).
 odelab_window_refusals(test0)
+
+# --mu and --max-contacts (the contact choices every scene with contacts takes).
+odelab_contact_choice_refusals(test0)

@@ -74,3 +74,10 @@ odelab_refusals(test10 refuses_bad_options headless 2
   --step=nan --no-such-option)
 # The scene draws its launch phase and orientation from --seed.
 odelab_determinism(test10 OTHER_SEED 2 --launches 3 --phase-jitter --random-orientation)
+
+# --mu and --max-contacts (the contact choices every scene with contacts takes).
+odelab_contact_choice_refusals(test10)
+
+# --surface-layer (issue 12; the thesis: 0): refused when not a finite number in [0, 1] m.
+odelab_refusals(test10 refuses_bad_surface_layer headless 2
+  --surface-layer=-0.1 --surface-layer=nan --surface-layer=2 --surface-layer=thick)

@@ -45,3 +45,22 @@ odelab_interrupted_output(test2 kill Test2_output.txt time_s,potential_J,kinetic
 odelab_interrupted_output(test2 file-limit Test2_output.txt time_s,potential_J,kinetic_J,total_J)
 # A window that cannot start leaves no Test2_output.txt.
 odelab_window_refusals(test2)
+
+# Issue 12: how the energy is computed. Without the rotational kinetic energy
+# the total dips at the bottom of every swing by the spin's share of it: the
+# variation equals rotational_energy_max_fraction to 2% (measured 0.035383
+# against 0.035371 with the default rig), far above the 0.064% with it.
+odelab_check(test2_energy_without_rotation_dips_by_the_spin test2
+  EXPECT rotational_energy_included==0 energy_rel_variation>@rotational_energy_max_fraction*0.98
+         energy_rel_variation<@rotational_energy_max_fraction*1.02 energy_rel_variation>0.03
+  ARGS --headless --erp 0.4 --cfm 0 --step 0.001 --seconds 60 --sample-interval 3600 --no-rotational-energy)
+# A light rod (0.015 kg, shape not in the thesis) makes that dip near the
+# thesis's 0.75%: within a factor 1.5 of it (measured 0.88%), while the
+# period still matches the exact one for the new shape (error below 1e-4).
+odelab_check(test2_light_rod_without_rotation_dips_like_the_thesis test2
+  EXPECT energy_rel_variation>0.005 energy_rel_variation<0.01125 period_error<1e-4 period_error>-1e-4
+  ARGS --headless --erp 0.4 --cfm 0 --step 0.001 --seconds 60 --sample-interval 3600 --no-rotational-energy
+       --rod-mass 0.015)
+odelab_refusals(test2 refuses_bad_shape headless 2
+  --rod-length=0 --rod-length=-1 --rod-length=nan --rod-length=7 --rod-thickness=0 --rod-thickness=inf
+  --rod-mass=0 --rod-mass=abc --bob-radius=0 --bob-radius=-0.3 "--bob-radius=0.9 --rod-length=6")

@@ -31,3 +31,6 @@ odelab_refusals(test3 refuses_bad_options headless 2
   --no-auto-disable=maybe
   --step=nan --no-such-option)
 odelab_determinism(test3 --seconds 4)
+
+# --mu and --max-contacts (the contact choices every scene with contacts takes).
+odelab_contact_choice_refusals(test3)

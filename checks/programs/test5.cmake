@@ -44,3 +44,6 @@ odelab_refusals(test5 refuses_bad_options headless 2
   --auto-disable-linear=0.3
   --step=nan --no-such-option)
 odelab_determinism(test5 --seconds 3 --spawn-interval 0.1)
+
+# --mu and --max-contacts (the contact choices every scene with contacts takes).
+odelab_contact_choice_refusals(test5)

@@ -32,3 +32,6 @@ odelab_refusals(test6 refuses_bad_options headless 2
   --tilt-degrees=abc
   --step=nan --no-such-option)
 odelab_determinism(test6 --seconds 2)
+
+# --mu and --max-contacts (the contact choices every scene with contacts takes).
+odelab_contact_choice_refusals(test6)

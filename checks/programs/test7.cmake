@@ -31,3 +31,6 @@ odelab_refusals(test7 refuses_bad_options headless 2
   --throw-interval=abc
   --step=nan --no-such-option)
 odelab_determinism(test7 --throws 2 --throw-interval 1)
+
+# --mu and --max-contacts (the contact choices every scene with contacts takes).
+odelab_contact_choice_refusals(test7)

@@ -25,3 +25,10 @@ odelab_check(test9_cfm_1e-6_damps_bounce test9
 # program takes the shared options (checked in full in common_options.cmake).
 odelab_refusals(test9 refuses_bad_options headless 2 --step=nan --no-such-option)
 odelab_determinism(test9 --seconds 3)
+
+# --mu and --max-contacts (the contact choices every scene with contacts takes).
+odelab_contact_choice_refusals(test9)
+
+# --bounce-velocity (issue 12, proposed 0.01 m/s): refused when not a finite number >= 0.
+odelab_refusals(test9 refuses_bad_bounce_velocity headless 2
+  --bounce-velocity=-1 --bounce-velocity=nan --bounce-velocity=inf --bounce-velocity=fast)

@@ -29,6 +29,18 @@ using scene::test2::ROD_THICKNESS;
 using scene::test2::START_DEFLECTION;
 constexpr double ANCHOR_MARKER_RADIUS = 0.08;  // drawn at the hinge; collides with nothing
 
+// The rig's shape: the thesis gives none of it (SceneConstants.h marks the
+// values "proposed"); test2 can change it to show what the shape does to
+// the energy it reports. The bob's centre is at the rod's far end plus its
+// radius, as in the default rig (3.0 + 0.3).
+struct PendulumShape {
+  double rodLength = ROD_LENGTH;
+  double rodThickness = ROD_THICKNESS;
+  double rodMass = ROD_MASS;
+  double bobRadius = BOB_RADIUS;
+  double bobDistance() const { return rodLength + bobRadius; }
+};
+
 // Mass properties worked out by hand from the constants above (not read back
 // from ODE), so a period that matches them also vouches for attach().
 struct MassProperties {
@@ -37,13 +49,13 @@ struct MassProperties {
   double inertiaAboutAxis;  // about the hinge axis (z through the anchor), kg m^2
 };
 
-inline MassProperties massProperties(double bobMass) {
-  const double rodCentre = ROD_LENGTH / 2;
-  const double rod = ROD_MASS * (ROD_LENGTH * ROD_LENGTH + ROD_THICKNESS * ROD_THICKNESS) / 12.0 +
-                     ROD_MASS * rodCentre * rodCentre;
-  const double bob = 0.4 * bobMass * BOB_RADIUS * BOB_RADIUS + bobMass * BOB_DISTANCE * BOB_DISTANCE;
-  const double mass = ROD_MASS + bobMass;
-  return {mass, (ROD_MASS * rodCentre + bobMass * BOB_DISTANCE) / mass, rod + bob};
+inline MassProperties massProperties(double bobMass, const PendulumShape& shape = {}) {
+  const double rodCentre = shape.rodLength / 2, rodMass = shape.rodMass, bobDistance = shape.bobDistance();
+  const double rod = rodMass * (shape.rodLength * shape.rodLength + shape.rodThickness * shape.rodThickness) / 12.0 +
+                     rodMass * rodCentre * rodCentre;
+  const double bob = 0.4 * bobMass * shape.bobRadius * shape.bobRadius + bobMass * bobDistance * bobDistance;
+  const double mass = rodMass + bobMass;
+  return {mass, (rodMass * rodCentre + bobMass * bobDistance) / mass, rod + bob};
 }
 
 // Complete elliptic integral of the first kind K(k), by the arithmetic-
@@ -68,17 +80,26 @@ inline double exactPeriod(const MassProperties& p, double gravity, double amplit
 // Kinetic energy of a body, rotation included: 0.5 m v^2 + 0.5 w^T I w, with
 // w taken into the body frame where ODE keeps I (about the centre of mass,
 // which attach() puts at the body's origin).
-inline double kineticEnergy(dBodyID body) {
+inline double massOf(dBodyID body) {
   dMass m;
   dBodyGetMass(body, &m);
+  return m.mass;
+}
+inline double translationalKineticEnergy(dBodyID body) {
   const dReal* v = dBodyGetLinearVel(body);
+  return 0.5 * massOf(body) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+inline double rotationalKineticEnergy(dBodyID body) {
+  dMass m;
+  dBodyGetMass(body, &m);
   dVector3 w;
   dMultiply1_331(w, dBodyGetRotation(body), dBodyGetAngularVel(body));  // R^T w
   double rotational = 0.0;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) rotational += w[i] * m.I[i * 4 + j] * w[j];
-  return 0.5 * m.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 0.5 * rotational;
+  return 0.5 * rotational;
 }
+inline double kineticEnergy(dBodyID body) { return translationalKineticEnergy(body) + rotationalKineticEnergy(body); }
 
 // Base of the two pendulum scenes: builds the rig and reads its state.
 class PendulumScene : public AbstractWindow {
@@ -93,11 +114,11 @@ class PendulumScene : public AbstractWindow {
   dBodyID buildPendulum(double bobMass) {
     Plane& ground = add<Plane>(space());
     ground.color = Color{0.55f, 0.6f, 0.55f};
-    Box& rod = add<Box>(world(), space(), ROD_LENGTH, ROD_THICKNESS, ROD_THICKNESS, ROD_MASS);
-    rod.setPosition(ROD_LENGTH / 2, ANCHOR_HEIGHT, 0.0);
+    Box& rod = add<Box>(world(), space(), shape_.rodLength, shape_.rodThickness, shape_.rodThickness, shape_.rodMass);
+    rod.setPosition(shape_.rodLength / 2, ANCHOR_HEIGHT, 0.0);
     rod.color = Color{0.75f, 0.7f, 0.55f};
-    Sphere& bob = add<Sphere>(world(), space(), BOB_RADIUS, bobMass);
-    bob.setPosition(BOB_DISTANCE, ANCHOR_HEIGHT, 0.0);
+    Sphere& bob = add<Sphere>(world(), space(), shape_.bobRadius, bobMass);
+    bob.setPosition(shape_.bobDistance(), ANCHOR_HEIGHT, 0.0);
     bob.color = Color{0.8f, 0.3f, 0.25f};
     bob.attach(rod);  // the thesis's composite object: one body, two geoms
     addAnchorMarker();
@@ -112,9 +133,10 @@ class PendulumScene : public AbstractWindow {
   }
 
   dBodyID pendulumBody() const { return body_; }
+  PendulumShape shape_;
 
   // Height of the bob's lowest point above the ground (negative: through it).
-  double bobClearance() const { return dGeomGetPosition(bobGeom_)[1] - BOB_RADIUS; }
+  double bobClearance() const { return dGeomGetPosition(bobGeom_)[1] - shape_.bobRadius; }
 
   // Anchor to the composite centre of mass (the body's position after attach).
   double anchorToCentreOfMass() const {

@@ -1,0 +1,53 @@
+#include "ContactChoices.h"
+
+#include <ode/ode.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace odelab {
+
+int ContactChoices::contactLimit() const { return static_cast<int>(std::lround(maxContacts)); }
+
+const std::vector<double>& ContactChoices::muLadder() {
+  static const std::vector<double> ladder{0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 5.0, dInfinity};
+  return ladder;
+}
+
+double ContactChoices::parseMu(const std::string& text) {
+  if (text == "inf" || text == "infinity" || text == "dInfinity") return dInfinity;
+  double value = 0;
+  if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < 0)
+    return std::numeric_limits<double>::quiet_NaN();
+  return value;
+}
+
+std::string ContactChoices::muText(double mu) {
+  if (std::isinf(mu)) return "dInfinity";
+  std::ostringstream s;
+  s << mu;
+  return s.str();
+}
+
+double ContactChoices::muMetric(double mu) { return std::isinf(mu) ? -1.0 : mu; }
+
+void ContactChoices::addOptions(CLI::App& app) {
+  app.add_option_function<std::string>(
+         "--mu", [this](const std::string& text) { mu = parseMu(text); },
+         "contact friction coefficient: a number >= 0, or inf for dInfinity (never slides)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            return std::isnan(parseMu(text)) ? "'" + text + "' is not a number >= 0 or inf" : std::string();
+          },
+          "MU"))
+      ->default_str(muText(mu));
+  app.add_option_function<int>(
+         "--max-contacts", [this](int count) { maxContacts = count; },
+         "contact points dCollide may return per colliding pair")
+      ->check(CLI::Range(1, MOST_CONTACTS))
+      ->default_str(std::to_string(contactLimit()));
+}
+
+}  // namespace odelab

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace odelab {
+
+// The two contact settings the thesis mostly leaves unstated: Coulomb
+// friction mu (ODE's dInfinity means "never slides") and how many contact
+// points dCollide may return per colliding pair. Every scene with contacts
+// takes them from here (--mu, --max-contacts, keys F / G, the panel), so a
+// run's output says which values made its figures.
+struct ContactChoices {
+  // dCollide's limit per pair in the thesis's programs was 8 "at least";
+  // ODE's box-box test can return more, so the default leaves room.
+  static constexpr int DEFAULT_MAX_CONTACTS = 16;
+  static constexpr int MOST_CONTACTS = 64;
+  // The panel's slider for mu is finite; dInfinity stays reachable by
+  // --mu inf and the G key's ladder.
+  static constexpr double PANEL_MU_MAX = 10.0;
+
+  double mu;  // >= 0, or dInfinity
+  // A double so the panel can set it; always a whole number in 1 ... 64.
+  double maxContacts = DEFAULT_MAX_CONTACTS;
+
+  int contactLimit() const;
+  // The ladder F / G walk: 0 ... 5, then dInfinity.
+  static const std::vector<double>& muLadder();
+  // A number >= 0, or inf / infinity / dInfinity; NaN when the text is neither.
+  static double parseMu(const std::string& text);
+  // "dInfinity" or the number.
+  static std::string muText(double mu);
+  // mu for a JSON metric, which has no infinity: -1 stands for dInfinity.
+  static double muMetric(double mu);
+  // --mu and --max-contacts, with the scene's defaults in the help.
+  void addOptions(CLI::App& app);
+};
+
+}  // namespace odelab
