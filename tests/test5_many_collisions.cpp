@@ -59,6 +59,7 @@ constexpr double MIN_SPAWN_SEPARATION = 2 * PLATE_THICKNESS;
 // raising the linear one to 0.3.
 constexpr double ODE_DEFAULT_DISABLE_THRESHOLD = 0.01;
 constexpr int MAX_THREADS = 64;
+constexpr int FRAMEWORK_CONTACTS_PER_PAIR = 16;  // AbstractWindow's default, kept unless --max-contacts says otherwise
 // A disabled plate whose bottom face is this far above the top of the plate
 // (or platform) below it is not resting on the stack: auto-disable froze it
 // in the air.
@@ -176,6 +177,16 @@ class ManyCollisions : public AbstractWindow {
     angularOption_ = app.add_option("--auto-disable-angular", disableAngular_,
                    "auto-disable angular velocity threshold, rad/s (default ODE's 0.01)")
         ->check(cli::finiteRange(0.0, 1e6));
+    app.add_option("--max-contacts", maxContacts_,
+                   "contacts per colliding pair, 1 ... 64 (default 16); a face-on plate pair gives about 4")
+        ->check(CLI::Range(1, 64));
+    app.add_option("--contact-max-correcting-vel", maxCorrectingVel_,
+                   "dWorldSetContactMaxCorrectingVel: the fastest a contact pushes bodies apart to undo "
+                   "penetration, m/s (default ODE's: unlimited)")
+        ->check(cli::positive(1e9));
+    app.add_option("--contact-surface-layer", surfaceLayer_,
+                   "dWorldSetContactSurfaceLayer: penetration depth a contact leaves alone, m (default ODE's 0)")
+        ->check(cli::finiteRange(0.0, 0.1));
     app.add_option("--threads", threads_, "threads for ODE's threaded island stepping (default 1: not threaded)")
         ->check(CLI::Range(1, MAX_THREADS));
   }
@@ -192,6 +203,8 @@ class ManyCollisions : public AbstractWindow {
     dWorldSetAutoDisableFlag(world(), autoDisable_ ? 1 : 0);
     dWorldSetAutoDisableLinearThreshold(world(), disableLinear_);
     dWorldSetAutoDisableAngularThreshold(world(), disableAngular_);
+    if (maxCorrectingVel_ > 0) dWorldSetContactMaxCorrectingVel(world(), maxCorrectingVel_);
+    dWorldSetContactSurfaceLayer(world(), surfaceLayer_);
     if (threads_ > 1) {
       if (!islandThreads_) islandThreads_ = std::make_unique<IslandThreads>(threads_);
       islandThreads_->attach(world());
@@ -215,6 +228,8 @@ class ManyCollisions : public AbstractWindow {
 
   // Plain contacts, as the thesis's near callback: mode 0 (no bounce, no
   // soft ERP/CFM); mu dInfinity as in the other scenes.
+  int maxContactsPerPair() const override { return maxContacts_; }
+
   void setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) override {
     surface.mode = 0;
     surface.mu = dInfinity;
@@ -263,6 +278,7 @@ class ManyCollisions : public AbstractWindow {
     m.set("plates_frozen_in_air", frozenInAirCount());
     m.set("auto_disable", autoDisable_ ? 1 : 0);
     m.set("threads", threads_);
+    m.set("max_contacts", maxContacts_);
     // Wall time inside collide + step + empty over the whole run; the rest of
     // wall_seconds is the framework's and this scene's own bookkeeping.
     m.set("collide_step_seconds", collidedSeconds_);
@@ -393,6 +409,9 @@ class ManyCollisions : public AbstractWindow {
   double disableLinear_ = ODE_DEFAULT_DISABLE_THRESHOLD;
   double disableAngular_ = ODE_DEFAULT_DISABLE_THRESHOLD;
   int threads_ = 1;
+  int maxContacts_ = FRAMEWORK_CONTACTS_PER_PAIR;
+  double maxCorrectingVel_ = 0.0;  // 0: not set, ODE's unlimited
+  double surfaceLayer_ = 0.0;
   std::unique_ptr<IslandThreads> islandThreads_;  // only with --threads > 1
   CLI::Option* linearOption_ = nullptr;
   CLI::Option* angularOption_ = nullptr;

@@ -22,7 +22,8 @@ namespace {
 
 // The thesis asks dCollide for at least 8 contacts per pair; box-box pairs
 // can produce more, so allow a few extra.
-constexpr int MAX_CONTACTS = 16;
+constexpr int MAX_CONTACTS = 16;        // per colliding pair, unless the scene asks otherwise
+constexpr int CONTACT_BUFFER = 64;      // the most a scene may ask for (maxContactsPerPair)
 constexpr double NOTICE_SECONDS = 4.0;
 // The live plot samples every hundredth of a simulated second. Contact
 // markers are capped so a huge pile cannot flood the renderer.
@@ -176,8 +177,9 @@ void AbstractWindow::nearCallback(void* data, dGeomID o1, dGeomID o2) {
   if (b1 == b2) return;
   if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;
 
-  dContact contact[MAX_CONTACTS];
-  const int count = dCollide(o1, o2, MAX_CONTACTS, &contact[0].geom, sizeof(dContact));
+  dContact contact[CONTACT_BUFFER];
+  const int wanted = std::clamp(self->maxContactsPerPair(), 1, CONTACT_BUFFER);
+  const int count = dCollide(o1, o2, wanted, &contact[0].geom, sizeof(dContact));
   if (count <= 0) return;
   dSurfaceParameters surface{};
   self->setContactSurface(o1, o2, surface);
@@ -195,6 +197,8 @@ void AbstractWindow::nearCallback(void* data, dGeomID o1, dGeomID o2) {
                                        float(g.depth)});
     }
 }
+
+int AbstractWindow::maxContactsPerPair() const { return MAX_CONTACTS; }
 
 void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& surface) {
   surface.mode = 0;

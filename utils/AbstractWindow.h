@@ -149,6 +149,8 @@ class AbstractWindow {
   virtual void configureWorld() {}
   // Contact surface for a colliding pair; the default is plain friction (mu dInfinity).
   virtual void setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface);
+  // Contacts dCollide may return per colliding pair (1 ... 64; default 16).
+  virtual int maxContactsPerPair() const;
   // Before every step, after recorded inputs and the drag spring are
   // applied and before collision: forces, swept tests, scripted changes.
   virtual void beforeStep() {}
