@@ -26,11 +26,19 @@ odelab_check(test5_50_plates_stack_straight_with_2_threads test5
 odelab_check(test5_50_plates_stack_with_auto_disable_0_3 test5
   EXPECT plates==50 landed_plates==50 auto_disable==1 plates_frozen_in_air==0 max_axis_offset<0.05 stack_height>2.45 stack_height<=2.5 non_finite==0
   ARGS --headless --seconds 20 --plates 50 --spawn-interval 0.3 --cfm 0 --auto-disable --auto-disable-linear 0.3 --auto-disable-angular 0.05)
+# --max-contacts 3 caps every colliding pair at 3 contacts: 50 plates make 50
+# pairs (49 plate on plate, 1 on the platform), so at most 150 contacts
+# (measured 150; about 4.3 per pair uncapped), and three contacts a pair still
+# hold the column straight (measured 0.014 m off the axis, 2.4945 m).
+odelab_check(test5_max_contacts_3_caps_each_pair test5
+  EXPECT plates==50 landed_plates==50 max_contacts==3 contacts<=150 max_axis_offset<0.05 stack_height>2.45 stack_height<=2.5 non_finite==0
+  ARGS --headless --seconds 20 --plates 50 --spawn-interval 0.3 --cfm 0 --max-contacts 3)
 
 # Plate count a positive integer up to 100000, interval positive and finite,
 # space one of four names; auto-disable thresholds finite and >= 0 (given
 # with --auto-disable: without it a threshold is refused for that alone, the
-# last case); threads 1 ... 64, an integer. Then one common option and an
+# last case); threads 1 ... 64, an integer; contacts per pair 1 ... 64;
+# surface layer in [0, 0.1] m; max correcting velocity positive and finite. Then one common option and an
 # unknown one (the shared options: common_options.cmake).
 odelab_refusals(test5 refuses_bad_options headless 2
   --plates=<empty> --plates=0 --plates=-5 --plates=100001 --plates=1.5 --plates=many --plates=99999999999999999999
@@ -41,6 +49,9 @@ odelab_refusals(test5 refuses_bad_options headless 2
   "--auto-disable-linear=inf --auto-disable" "--auto-disable-angular=-1 --auto-disable"
   "--auto-disable-angular=nan --auto-disable" "--auto-disable-angular= --auto-disable"
   --threads=0 --threads=65 --threads=-2 --threads=two --threads=1.5
+  --max-contacts=0 --max-contacts=65 --max-contacts=2.5 --max-contacts=<empty>
+  --contact-surface-layer=-0.001 --contact-surface-layer=nan --contact-surface-layer=0.2
+  --contact-max-correcting-vel=0 --contact-max-correcting-vel=-1 --contact-max-correcting-vel=inf
   --auto-disable-linear=0.3
   --step=nan --no-such-option)
 odelab_determinism(test5 --seconds 3 --spawn-interval 0.1)

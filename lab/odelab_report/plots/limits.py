@@ -170,7 +170,7 @@ def stack_cost(out_dir, stem, probes, budget_ms):
     ax.axhline(budget_ms, color="red", linestyle="-.", linewidth=1, label="real-time budget: the step, 1 ms")
     ax.plot([], [], linestyle="none", marker="x", color="black", label="failed the rule (x)")
     ax.set_xlabel("plates in the stack")
-    ax.set_ylabel("collide + step time per step (ms; wall x CPU share)")
+    ax.set_ylabel("cost per step (ms of the program's CPU time)")
     ax.set_ylim(bottom=0)
     ax.set_title("test5: cost of a step against the stack (step 0.001, ERP 0.2, CFM 0)")
     ax.legend(loc="upper left", fontsize=8, ncol=2)
