@@ -96,6 +96,21 @@ class Pendulum : public PendulumScene {
         ->capture_default_str();
   }
 
+  // A row interval below the step would ask for rows the run cannot take.
+  void checkOptions() const override {
+    if (sampleInterval_ < settings().step)
+      throw UsageError("--sample-interval: " + formatValue(sampleInterval_) + " s is below the step (--step " +
+                       formatValue(settings().step) + " s)");
+  }
+
+  std::vector<std::string> outputFileNames() const override {
+    auto names = AbstractWindow::outputFileNames();
+    names.push_back("Test2_output.txt");
+    return names;
+  }
+
+  void writeEndLine(const std::string& line) override { log_.finish(line); }
+
  protected:
   void buildScene() override {
     buildPendulum(BOB_MASS);

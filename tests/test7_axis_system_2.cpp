@@ -117,6 +117,13 @@ class AxisSystem2 : public AbstractWindow {
         ->capture_default_str();
   }
 
+  // A throw interval below one step would count throws that no step separates.
+  void checkOptions() const override {
+    if (throwInterval_ < settings().step)
+      throw UsageError("--throw-interval: " + formatValue(throwInterval_) + " s is below one step (--step " +
+                       formatValue(settings().step) + " s)");
+  }
+
  protected:
   void configureWorld() override {
     angularLimit_.applyToWorld(world());
