@@ -29,3 +29,11 @@ foreach(_program_file test2:Test2_output.txt test8:Test8_output.txt)
            COMMAND sh ${ODELAB_CHECK_SCRIPTS}/output_files.sh $<TARGET_FILE:${_program}> ${_file} ${_window})
   set_tests_properties(${_program}_output_file_whole_unshared_and_marked PROPERTIES TIMEOUT 300 LABELS hardening)
 endforeach()
+
+# Screenshots and --record frames on a full disk (ulimit -f): status 1 and no
+# PNG, whole or cut short (stb's own writer ignored write errors).
+if(XVFB_RUN)
+  add_test(NAME test0_png_on_a_full_disk_is_refused_not_truncated
+           COMMAND sh ${ODELAB_CHECK_SCRIPTS}/full_disk_screenshot.sh $<TARGET_FILE:test0>)
+  set_tests_properties(test0_png_on_a_full_disk_is_refused_not_truncated PROPERTIES TIMEOUT 300 LABELS hardening)
+endif()
