@@ -37,3 +37,16 @@ if(XVFB_RUN)
            COMMAND sh ${ODELAB_CHECK_SCRIPTS}/full_disk_screenshot.sh $<TARGET_FILE:test0>)
   set_tests_properties(test0_png_on_a_full_disk_is_refused_not_truncated PROPERTIES TIMEOUT 300 LABELS hardening)
 endif()
+
+# test5 --threads: an ODE error in a pool thread ends the run with status 4
+# and a message naming the threads (it aborted with status 134 and no
+# message); a threaded run says in its metrics that it is not reproducible.
+add_test(NAME test5_ode_error_in_a_pool_thread_exits_4
+         COMMAND sh -c "\"$1\" --headless --threads 2 --solver step >/dev/null 2>err.txt; s=$?; cat err.txt;
+                        [ $s = 4 ] && grep -q \"error: .*island-stepping threads\" err.txt" sh $<TARGET_FILE:test5>
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(test5_ode_error_in_a_pool_thread_exits_4 PROPERTIES TIMEOUT 300 LABELS hardening)
+odelab_check(test5_threaded_run_says_not_reproducible test5 LABEL hardening
+  EXPECT threads==2 reproducible==0 ARGS --headless --seconds 0.5 --threads 2)
+odelab_check(test5_single_thread_run_says_reproducible test5 LABEL hardening
+  EXPECT threads==1 reproducible==1 ARGS --headless --seconds 0.5)

@@ -83,6 +83,8 @@ void AbstractWindow::replayTo(long long step) {
   }
   rewind_.setReplaying(false);
   time_.setPaused(true);
+  const std::string caveat = rewindCaveat();
+  if (!caveat.empty()) notify("warning: " + caveat);
 }
 
 void AbstractWindow::shutdown() {

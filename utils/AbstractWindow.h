@@ -171,6 +171,8 @@ class AbstractWindow {
   // After a scene parameter changed from the panel.
   virtual void onParameterChanged(const SceneParameter& parameter) { (void)parameter; }
   virtual double defaultHeadlessSeconds() const { return 10.0; }  // without --seconds
+  // Why a rewind (a replay) may not match the run, or "": shown on rewinding.
+  virtual std::string rewindCaveat() const { return {}; }
   // Scenes with output files write `line` as their last line (MeasurementLog::finish).
   virtual void writeEndLine(const std::string& line) { (void)line; }
   virtual void initialCamera(Camera& camera) const;
