@@ -118,11 +118,7 @@ class AxisSystem2 : public AbstractWindow {
   }
 
   // A throw interval below one step would count throws that no step separates.
-  void checkOptions() const override {
-    if (throwInterval_ < settings().step)
-      throw UsageError("--throw-interval: " + formatValue(throwInterval_) + " s is below one step (--step " +
-                       formatValue(settings().step) + " s)");
-  }
+  void checkOptions() const override { cli::refuseBelowStep("--throw-interval", throwInterval_, settings().step); }
 
  protected:
   void configureWorld() override {

@@ -64,18 +64,10 @@ class HingeStability : public PendulumScene {
   }
 
   // A row interval below the step would ask for rows the run cannot take.
-  void checkOptions() const override {
-    if (sampleInterval_ < settings().step)
-      throw UsageError("--sample-interval: " + formatValue(sampleInterval_) + " s is below the step (--step " +
-                       formatValue(settings().step) + " s)");
-  }
-
+  void checkOptions() const override { cli::refuseBelowStep("--sample-interval", sampleInterval_, settings().step); }
   std::vector<std::string> outputFileNames() const override {
-    auto names = AbstractWindow::outputFileNames();
-    names.push_back("Test8_output.txt");
-    return names;
+    return {programName() + "_run_log.txt", "Test8_output.txt"};
   }
-
   void writeEndLine(const std::string& line) override { log_.finish(line); }
 
  protected:

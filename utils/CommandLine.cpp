@@ -204,6 +204,12 @@ void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>&
     throw UsageError("--metrics-json: '" + options.metricsJson + "' is also the --screenshot file");
 }
 
+void refuseBelowStep(const char* option, double interval, double step) {
+  if (interval < step)
+    throw UsageError(std::string(option) + ": " + formatNumber(interval) + " s is below one step (--step " +
+                     formatNumber(step) + " s)");
+}
+
 void refuseRunShorterThanStep(const RunOptions& options, double step) {
   // llround(seconds / step) would be 0 steps, a run that measured nothing.
   if (options.seconds > 0 && options.seconds < step)

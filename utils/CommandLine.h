@@ -53,6 +53,9 @@ void validateRunOptions(const RunOptions& options);
 
 // --metrics-json and --screenshot must not name one of the program's own
 // output files (names in --out-dir), nor each other. Throws UsageError.
+// An interval (between rows, between throws) below one step: a row or a
+// throw that no step separates. Throws UsageError naming `option`.
+void refuseBelowStep(const char* option, double interval, double step);
 // --seconds shorter than one step, a run of no step. Throws UsageError.
 void refuseRunShorterThanStep(const RunOptions& options, double step);
 
