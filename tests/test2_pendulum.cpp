@@ -90,14 +90,17 @@ class Pendulum : public PendulumScene {
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--sample-interval", sampleInterval_,
+    sampleOption_ = app.add_option("--sample-interval", sampleInterval_,
                    "simulated seconds between rows of Test2_output.txt")
         ->check(cli::positive(3600.0))
         ->capture_default_str();
   }
 
-  // A row interval below the step would ask for rows the run cannot take.
-  void checkOptions() const override { cli::refuseBelowStep("--sample-interval", sampleInterval_, settings().step); }
+  // A row interval asked for below the step would ask for rows the run
+  // cannot take. (The default with a large --step gives a row every step.)
+  void checkOptions() const override {
+    if (sampleOption_->count()) cli::refuseBelowStep("--sample-interval", sampleInterval_, settings().step);
+  }
   std::vector<std::string> outputFileNames() const override {
     return {programName() + "_run_log.txt", "Test2_output.txt"};
   }
@@ -201,6 +204,7 @@ class Pendulum : public PendulumScene {
   }
 
   double sampleInterval_ = SAMPLE_INTERVAL;
+  const CLI::Option* sampleOption_ = nullptr;
   MeasurementLog log_;
   FixedIntervalSampler sampler_{SAMPLE_INTERVAL};
   SwingTimer swingTimer_;
