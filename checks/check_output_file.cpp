@@ -1,7 +1,7 @@
 // Checks an output file of test2 / test8 (Test2_output.txt, Test8_output.txt)
 // independently of the program that wrote it:
 //
-//   check_output_file FILE --columns NAME,NAME,... --interval SECONDS --rows N
+//   check_output_file FILE --columns NAME,NAME,... --interval SECONDS --rows N [--complete]
 //
 // It must start with "# key: value" header lines naming every setting in
 // force (ode_version, ode_precision, step_seconds, erp, cfm, solver,
@@ -10,7 +10,10 @@
 // tab-separated rows of that many finite numbers. Row i must be
 // at time i * SECONDS within half a step (the step is read from the header),
 // and there must be exactly N rows. Lines starting with "# t=" (F-key changes)
-// may appear between rows. Exit status 0 when all holds, 1 otherwise.
+// may appear between rows. The last line may be "# complete: ..." or
+// "# incomplete: ..." (the run's end, and nothing after it); with
+// --complete it must be "# complete: ...". Exit status 0 when all holds, 1
+// otherwise.
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -41,6 +44,7 @@ struct Expected {
   std::vector<std::string> columns;
   double interval = 0;
   long rows = -1;
+  bool complete = false;  // the file must end with "# complete: ..."
 };
 
 bool parseArguments(int argc, char** argv, Expected& e) {
@@ -50,6 +54,7 @@ bool parseArguments(int argc, char** argv, Expected& e) {
     if (arg == "--columns" && hasValue) e.columns = split(argv[++i], ',');
     else if (arg == "--interval" && hasValue) e.interval = std::atof(argv[++i]);
     else if (arg == "--rows" && hasValue) e.rows = std::atol(argv[++i]);
+    else if (arg == "--complete") e.complete = true;
     else if (e.file.empty() && arg.rfind("--", 0) != 0) e.file = arg;
     else return false;
   }
@@ -75,10 +80,15 @@ int main(int argc, char** argv) {
   std::vector<std::string> failures;
   long rows = 0, comments = 0, lineNumber = 0;
   double step = NAN;
-  std::string line;
+  std::string line, ending;
   while (std::getline(in, line)) {
     ++lineNumber;
     const std::string where = "line " + std::to_string(lineNumber) + ": ";
+    if (!ending.empty()) failures.push_back(where + "a line after the end marker '" + ending + "'");
+    if ((line.rfind("# complete: ", 0) == 0 || line.rfind("# incomplete: ", 0) == 0) && !columns.empty()) {
+      ending = line;
+      continue;
+    }
     if (line.rfind("# t=", 0) == 0 && !columns.empty()) {
       ++comments;  // an F-key change between rows
       continue;
@@ -122,11 +132,13 @@ int main(int argc, char** argv) {
     for (const auto& c : columns) got += c + " ";
     failures.push_back("columns are '" + got + "'");
   }
+  if (expected.complete && ending.rfind("# complete: ", 0) != 0)
+    failures.push_back("the file does not end with '# complete: ...'" + (ending.empty() ? "" : ": " + ending));
   if (rows != expected.rows)
     failures.push_back(std::to_string(rows) + " rows, expected " + std::to_string(expected.rows));
 
   std::cout << expected.file << ": " << header.size() << " header entries, " << rows << " rows, " << comments
-            << " comment lines\n";
+            << " comment lines" << (ending.empty() ? std::string() : ", ending '" + ending + "'") << '\n';
   for (const auto& failure : failures) std::cout << "FAIL: " << failure << '\n';
   if (failures.empty()) std::cout << "ok: header, columns, " << rows << " rows on the " << expected.interval << " s grid\n";
   return failures.empty() ? 0 : 1;

@@ -90,7 +90,7 @@ class Pendulum : public PendulumScene {
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--sample-interval", sampleInterval_,
+    sampleOption_ = app.add_option("--sample-interval", sampleInterval_,
                    "simulated seconds between rows of Test2_output.txt")
         ->check(cli::positive(3600.0))
         ->capture_default_str();
@@ -118,7 +118,14 @@ class Pendulum : public PendulumScene {
     if (shape_.rodLength + 2 * shape_.bobRadius >= ANCHOR_HEIGHT)
       throw UsageError("--rod-length plus twice --bob-radius must stay below the anchor's height, " +
                        formatValue(ANCHOR_HEIGHT) + " m, so the bob swings clear of the ground");
+    // A row interval asked for below the step would ask for rows the run
+    // cannot take. (The default with a large --step gives a row every step.)
+    if (sampleOption_->count()) cli::refuseBelowStep("--sample-interval", sampleInterval_, settings().step);
   }
+  std::vector<std::string> outputFileNames() const override {
+    return {programName() + "_run_log.txt", "Test2_output.txt"};
+  }
+  void writeEndLine(const std::string& line) override { log_.finish(line); }
 
  protected:
   void buildScene() override {
@@ -237,6 +244,7 @@ class Pendulum : public PendulumScene {
   double sampleInterval_ = SAMPLE_INTERVAL;
   bool withoutRotation_ = false;
   double maxRotationalEnergy_ = 0.0;
+  const CLI::Option* sampleOption_ = nullptr;
   MeasurementLog log_;
   FixedIntervalSampler sampler_{SAMPLE_INTERVAL};
   SwingTimer swingTimer_;

@@ -264,10 +264,19 @@ class ManyCollisions : public AbstractWindow {
     else
       s << "off";
     s << "   island stepping threads " << threads_;
+    if (threads_ > 1) s << " (not reproducible: runs and rewinds differ)";
     lines.push_back(s.str());
   }
 
+  // Threaded island stepping finishes islands in whatever order the
+  // threads do, so the same seed need not give the same state.
+  std::string rewindCaveat() const override {
+    return threads_ > 1 ? "--threads " + std::to_string(threads_) + ": the replay need not match the run it rewinds"
+                        : std::string();
+  }
+
   void addMetrics(Metrics& m) const override {
+    m.set("reproducible", threads_ > 1 ? 0 : 1);
     m.set("plates", static_cast<double>(plates_.size()));
     m.set("landed_plates", landedCount());
     m.set("ms_per_step", cost_.meanMilliseconds());

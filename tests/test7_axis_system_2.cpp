@@ -117,6 +117,9 @@ class AxisSystem2 : public AbstractWindow {
         ->capture_default_str();
   }
 
+  // A throw interval below one step would count throws that no step separates.
+  void checkOptions() const override { cli::refuseBelowStep("--throw-interval", throwInterval_, settings().step); }
+
  protected:
   void configureWorld() override {
     angularLimit_.applyToWorld(world());

@@ -58,10 +58,20 @@ class HingeStability : public PendulumScene {
     app.add_option("--bob-mass", bobMass_, "mass of the pendulum's sphere in kg (the thesis tried 5 kg to 1000 t)")
         ->check(cli::positive(1e9))
         ->capture_default_str();
-    app.add_option("--sample-interval", sampleInterval_, "simulated seconds between rows of Test8_output.txt")
+    sampleOption_ = app.add_option("--sample-interval", sampleInterval_, "simulated seconds between rows of Test8_output.txt")
         ->check(cli::positive(3600.0))
         ->capture_default_str();
   }
+
+  // A row interval asked for below the step would ask for rows the run
+  // cannot take. (The default with a large --step gives a row every step.)
+  void checkOptions() const override {
+    if (sampleOption_->count()) cli::refuseBelowStep("--sample-interval", sampleInterval_, settings().step);
+  }
+  std::vector<std::string> outputFileNames() const override {
+    return {programName() + "_run_log.txt", "Test8_output.txt"};
+  }
+  void writeEndLine(const std::string& line) override { log_.finish(line); }
 
  protected:
   void buildScene() override {
@@ -157,6 +167,7 @@ class HingeStability : public PendulumScene {
 
   double bobMass_ = HEAVY_BOB_MASS;
   double sampleInterval_ = SAMPLE_INTERVAL;
+  const CLI::Option* sampleOption_ = nullptr;
   MeasurementLog log_;
   FixedIntervalSampler sampler_{SAMPLE_INTERVAL};
   double startLength_ = NaN;

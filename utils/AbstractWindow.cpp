@@ -15,6 +15,7 @@
 #include "FormatValue.h"
 #include "MeasurementLog.h"
 #include "OdeMessages.h"
+#include "StopSignal.h"
 
 namespace odelab {
 
@@ -81,6 +82,8 @@ void AbstractWindow::replayTo(long long step) {
   }
   rewind_.setReplaying(false);
   time_.setPaused(true);
+  const std::string caveat = rewindCaveat();
+  if (!caveat.empty()) notify("warning: " + caveat);
 }
 
 void AbstractWindow::shutdown() {
@@ -260,12 +263,12 @@ bool AbstractWindow::stepOnce() {
   return true;
 }
 
-// " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations)"
+// " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations, SOR w 1.3)"
 std::string AbstractWindow::settingsInForce() const {
   std::ostringstream text;
   text << " (step " << formatValue(settings_.step) << ", ERP " << formatValue(settings_.erp) << ", CFM "
        << formatValue(settings_.cfm) << ", solver " << solverName(settings_.solver) << ", " << settings_.iterations
-       << " iterations)";
+       << " iterations, SOR w " << formatValue(settings_.sor) << ")";
   return text.str();
 }
 
@@ -342,7 +345,7 @@ bool AbstractWindow::runFor(double seconds) {
   const long long total = steps_ + std::llround(seconds / settings_.step);
   const auto start = std::chrono::steady_clock::now();
   bool finite = blowUpReason_.empty();
-  while (steps_ < total && finite) finite = stepOnce();
+  while (steps_ < total && finite && stopSignal() == 0) finite = stepOnce();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   wallSeconds_ += wall;
   time_.addRun(wall, seconds);
@@ -350,6 +353,8 @@ bool AbstractWindow::runFor(double seconds) {
 }
 
 int AbstractWindow::reportHeadless() {
+  if (stopSignal() != 0) return stoppedBySignal();
+  endOutputs(blowUpReason_);
   const Metrics result = metrics();
   std::cout << title_ << ": " << formatValue(simulatedTime_) << " simulated seconds\n";
   result.print(std::cout);
@@ -359,6 +364,20 @@ int AbstractWindow::reportHeadless() {
     return exit_code::BLEW_UP;
   }
   return exit_code::OK;
+}
+
+void AbstractWindow::endOutputs(const std::string& cutShortBecause) {
+  const std::string where = "t=" + formatValue(simulatedTime_) + " s, " + std::to_string(steps_) + " steps";
+  writeEndLine(cutShortBecause.empty() ? "complete: " + where : "incomplete: " + where + "; " + cutShortBecause);
+}
+
+// SIGINT or SIGTERM stopped the run: the files say so, no metrics are
+// written as if the run were whole, and the status is the shell's 128 + N.
+int AbstractWindow::stoppedBySignal() {
+  endOutputs(std::string("stopped by ") + stopSignalName());
+  std::cerr << "error: stopped by " << stopSignalName() << " at t=" << formatValue(simulatedTime_)
+            << " s; no metrics written\n";
+  return 128 + stopSignal();
 }
 
 std::uint64_t AbstractWindow::stateHash() const {
@@ -449,6 +468,11 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
       {"gravity", formatValue(settings_.gravity)},
       {"space", spaceKindName(spaceKind_)},
       {"seed", std::to_string(options_.seed)},
+      // The run length asked for; the file's last line says whether it was reached.
+      {"run_seconds_asked",
+       options_.seconds > 0 ? formatValue(options_.seconds)
+       : options_.headless  ? formatValue(defaultHeadlessSeconds())
+                            : std::string("until the window is closed")},
   };
   if (contactChoicesUsed_) {
     description.push_back({"contact_mu", ContactChoices::muText(contact_.mu)});

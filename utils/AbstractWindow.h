@@ -51,6 +51,9 @@ class AbstractWindow {
   // --mu and --max-contacts, for scenes that called useContactChoices().
   void addContactOptions(CLI::App& app);
   void setRunOptions(const RunOptions& options) { options_ = options; }
+  // The files this program writes into --out-dir (its run log included),
+  // which --metrics-json and --screenshot may not name.
+  virtual std::vector<std::string> outputFileNames() const { return {programName() + "_run_log.txt"}; }
   // Checks between options after parsing; throw UsageError naming the option.
   virtual void checkOptions() const {}
   // Builds the world and the scene. Call once after options are parsed.
@@ -67,6 +70,12 @@ class AbstractWindow {
   // Headless path: runFor(--seconds or defaultHeadlessSeconds()), then
   // reportHeadless(). Scenes with their own experiment override it.
   virtual int runHeadless();
+  // The output files' last line: "complete: t=..., N steps", or, with a
+  // reason, "incomplete: ...; <reason>" (see writeEndLine).
+  void endOutputs(const std::string& cutShortBecause);
+  // After SIGINT/SIGTERM (StopSignal.h): marks the outputs incomplete,
+  // says so, and returns 128 + the signal's number.
+  int stoppedBySignal();
 
   // ---- read and driven by the front end -------------------------------------
   const std::string& title() const { return title_; }
@@ -172,6 +181,10 @@ class AbstractWindow {
   // After a scene parameter changed from the panel.
   virtual void onParameterChanged(const SceneParameter& parameter) { (void)parameter; }
   virtual double defaultHeadlessSeconds() const { return 10.0; }  // without --seconds
+  // Why a rewind (a replay) may not match the run, or "": shown on rewinding.
+  virtual std::string rewindCaveat() const { return {}; }
+  // Scenes with output files write `line` as their last line (MeasurementLog::finish).
+  virtual void writeEndLine(const std::string& line) { (void)line; }
   virtual void initialCamera(Camera& camera) const;
   // The live plot's value after a step and its label with unit; the default
   // plots the contacts of the last step.

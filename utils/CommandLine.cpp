@@ -6,6 +6,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "MeasurementLog.h"
+#include "SafeFile.h"
+
 namespace odelab::cli {
 
 namespace {
@@ -32,6 +35,11 @@ void requireWritableFolderOf(const char* option, const std::string& file) {
   struct stat info {};
   if (stat(file.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     throw UsageError(std::string(option) + ": '" + file + "' is a folder, not a file");
+  // The file is replaced by a rename, which would swap a device, FIFO or
+  // link for a regular file (as root, /dev/null): refused before running.
+  const std::string why = whyNotReplaceable(file);
+  if (!why.empty())
+    throw UsageError(std::string(option) + ": '" + file + "' " + why + "; only a regular file (or a new one) is written");
   const std::string folder = directoryOf(file);
   if (!isWritableDirectory(folder))
     throw UsageError(std::string(option) + ": cannot write '" + file + "': folder '" + folder +
@@ -51,6 +59,23 @@ CLI::Validator finiteRange(double min, double max) {
         return {};
       },
       "in " + range);
+}
+
+CLI::Validator decimalInteger() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        // CLI11 reads "010" as octal 8 and "0x10" as 16; a person typing a
+        // count means decimal. Digits only, leading zeros dropped.
+        size_t digits = (!text.empty() && (text[0] == '+' || text[0] == '-')) ? 1 : 0;
+        if (digits == text.size()) return "'" + text + "' is not a decimal whole number";
+        for (size_t i = digits; i < text.size(); ++i)
+          if (text[i] < '0' || text[i] > '9') return "'" + text + "' is not a decimal whole number";
+        const std::string sign = text.substr(0, digits) == "-" ? "-" : "";
+        const size_t first = text.find_first_not_of('0', digits);
+        text = first == std::string::npos ? "0" : sign + text.substr(first);
+        return {};
+      },
+      "");
 }
 
 CLI::Validator integerRange(int min, int max) {
@@ -100,7 +125,8 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
     if (id == SettingId::Solver)
       option->check(CLI::IsMember({"quick", "step"}));
     else if (spec.integer)
-      option->check(integerRange(static_cast<int>(spec.range->min), static_cast<int>(spec.range->max)));
+      option->check(integerRange(static_cast<int>(spec.range->min), static_cast<int>(spec.range->max)))
+          ->transform(decimalInteger());
     else
       option->check(finiteRange(spec.range->min, spec.range->max));
   }
@@ -156,6 +182,40 @@ void rejectEmptyValues(CLI::App& app) {
       [](std::string& text) -> std::string { return text.empty() ? "an empty value is not allowed" : ""; }, "");
   for (CLI::Option* option : app.get_options())
     if (option->get_type_size() > 0) option->check(nonEmpty);
+  // Whole-number options (the scenes' counts too) read decimal only.
+  for (CLI::Option* option : app.get_options()) {
+    // The type name carries the validators' descriptions: "INT:INT in [1 - 10]".
+    const std::string type = option->get_type_name();
+    const std::string base = type.substr(0, type.find(':'));
+    if (base == "INT" || base == "UINT") option->transform(decimalInteger());
+  }
+}
+
+void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>& outputNames) {
+  for (const std::string& name : outputNames) {
+    const std::string output = joinPath(options.outDir, name);
+    if (!options.metricsJson.empty() && sameFilePath(options.metricsJson, output))
+      throw UsageError("--metrics-json: '" + options.metricsJson + "' is this program's own output file '" + output +
+                       "'; name another file");
+    if (!options.screenshot.empty() && sameFilePath(options.screenshot, output))
+      throw UsageError("--screenshot: '" + options.screenshot + "' is this program's own output file '" + output +
+                       "'; name another file");
+  }
+  if (!options.metricsJson.empty() && sameFilePath(options.metricsJson, options.screenshot))
+    throw UsageError("--metrics-json: '" + options.metricsJson + "' is also the --screenshot file");
+}
+
+void refuseBelowStep(const char* option, double interval, double step) {
+  if (interval < step)
+    throw UsageError(std::string(option) + ": " + formatNumber(interval) + " s is below one step (--step " +
+                     formatNumber(step) + " s)");
+}
+
+void refuseRunShorterThanStep(const RunOptions& options, double step) {
+  // llround(seconds / step) would be 0 steps, a run that measured nothing.
+  if (options.seconds > 0 && options.seconds < step)
+    throw UsageError("--seconds: " + formatNumber(options.seconds) + " s is less than one step (--step " +
+                     formatNumber(step) + " s); the run would take no step");
 }
 
 void validateRunOptions(const RunOptions& options) {

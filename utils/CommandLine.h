@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "AbstractWindow.h"
 
@@ -39,12 +40,26 @@ void addWindowOptions(CLI::App& app, RunOptions& options);
 
 // Makes every option that takes a value refuse an empty one ("--seed=").
 // Call after every option is added.
+// Also makes every whole-number option (type INT or UINT) decimal only:
+// "010" is 10, "08" is 8, "0x10" is refused.
 void rejectEmptyValues(CLI::App& app);
+// The transform behind that: digits with an optional sign, leading zeros dropped.
+CLI::Validator decimalInteger();
 
 // Checks that need the file system: --out-dir is a writable directory, the
 // folders of --metrics-json and --screenshot exist and are writable, and the
 // window-only options are not combined with --headless. Throws UsageError.
 void validateRunOptions(const RunOptions& options);
+
+// --metrics-json and --screenshot must not name one of the program's own
+// output files (names in --out-dir), nor each other. Throws UsageError.
+// An interval (between rows, between throws) below one step: a row or a
+// throw that no step separates. Throws UsageError naming `option`.
+void refuseBelowStep(const char* option, double interval, double step);
+// --seconds shorter than one step, a run of no step. Throws UsageError.
+void refuseRunShorterThanStep(const RunOptions& options, double step);
+
+void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>& outputNames);
 
 // "Keys:" section for --help, from the scene's key table plus the camera keys.
 std::string keysHelp(const AbstractWindow& scene);

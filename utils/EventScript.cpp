@@ -1,5 +1,7 @@
 #include "EventScript.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -68,16 +70,35 @@ void parsePair(const std::vector<std::string>& words, long long min, long long m
 
 }  // namespace
 
+// std::getline with a bound: a line without an end (/dev/zero, a binary
+// file) is refused, not read into memory. False at the end of the input.
+static bool readBoundedLine(std::istream& in, std::string& text, bool& tooLong) {
+  text.clear();
+  tooLong = false;
+  int c;
+  while ((c = in.get()) != std::char_traits<char>::eof()) {
+    if (c == '\n') return true;
+    if (text.size() >= MAX_SCRIPT_LINE) {
+      tooLong = true;
+      return true;
+    }
+    text += static_cast<char>(c);
+  }
+  return !text.empty();
+}
+
 std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& fileName, const KeyLookup& keyLookup) {
   std::vector<ScriptEvent> events;
   std::string text;
   std::vector<std::string> words;
   int lineNumber = 0;
-  while (std::getline(in, text)) {
+  bool tooLong = false;
+  while (readBoundedLine(in, text, tooLong)) {
     ++lineNumber;
     auto fail = [&](const std::string& what) {
       throw UsageError("--events: " + fileName + ":" + std::to_string(lineNumber) + ": " + what);
     };
+    if (tooLong) fail("line longer than " + std::to_string(MAX_SCRIPT_LINE) + " characters");
     if (!text.empty() && text.back() == '\r') text.pop_back();
     if (!splitWords(text, words)) fail("unclosed quote");
     if (words.empty()) continue;
@@ -160,15 +181,34 @@ std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& f
     } else {
       fail("unknown event '" + verb + "' (key, down, move, up, wheel, resize, mark, quit, text)");
     }
+    if (events.size() + static_cast<std::size_t>(repeat) > MAX_SCRIPT_EVENTS)
+      fail("more than " + std::to_string(MAX_SCRIPT_EVENTS) + " events in the script (repeats counted)");
     for (int i = 0; i < repeat; ++i) events.push_back(event);
   }
   if (in.bad()) throw UsageError("--events: cannot read " + fileName);
   std::stable_sort(events.begin(), events.end(),
                    [](const ScriptEvent& a, const ScriptEvent& b) { return a.frame < b.frame; });
+  // One frame's events are queued at once: refused here, before a window
+  // opens, rather than failing mid-session with "event queue is full".
+  for (std::size_t first = 0, i = 0; i <= events.size(); ++i) {
+    if (i < events.size() && events[i].frame == events[first].frame) continue;
+    if (i - first > MAX_EVENTS_PER_FRAME)
+      throw UsageError("--events: " + fileName + ":" + std::to_string(events[first].line) + ": frame " +
+                       std::to_string(events[first].frame) + " has " + std::to_string(i - first) +
+                       " events (repeats counted); at most " + std::to_string(MAX_EVENTS_PER_FRAME) +
+                       " fit SDL's event queue in one frame");
+    first = i;
+  }
   return events;
 }
 
 std::vector<ScriptEvent> loadEventScript(const std::string& path, const KeyLookup& keyLookup) {
+  // A FIFO would block and /dev/zero never ends: regular files only.
+  struct stat info {};
+  if (stat(path.c_str(), &info) != 0) throw UsageError("--events: cannot read '" + path + "'");
+  if (!S_ISREG(info.st_mode)) throw UsageError("--events: '" + path + "' is not a regular file");
+  if (info.st_size > MAX_SCRIPT_BYTES)
+    throw UsageError("--events: '" + path + "' is larger than " + std::to_string(MAX_SCRIPT_BYTES >> 20) + " MiB");
   std::ifstream file(path);
   if (!file) throw UsageError("--events: cannot read '" + path + "'");
   return parseEventScript(file, path, keyLookup);

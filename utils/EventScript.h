@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <istream>
 #include <string>
@@ -51,6 +52,13 @@ using KeyLookup = std::function<int(const std::string& name)>;
 // The largest repeat count (*N) and frame number accepted.
 constexpr int MAX_EVENT_REPEAT = 100000;
 constexpr long long MAX_EVENT_FRAME = 1000000000LL;
+// Bounds that keep a script's memory and SDL's event queue (65,535 events;
+// a script event queues at most two) within reach: events in all (repeats
+// counted), events in one frame, characters in a line, bytes in the file.
+constexpr std::size_t MAX_SCRIPT_EVENTS = 200000;
+constexpr std::size_t MAX_EVENTS_PER_FRAME = 16384;
+constexpr std::size_t MAX_SCRIPT_LINE = 1024;
+constexpr long long MAX_SCRIPT_BYTES = 8LL << 20;
 // The largest wheel turn (notches) and window size (pixels) accepted.
 constexpr int MAX_WHEEL_NOTCHES = 100;
 constexpr int MAX_WINDOW_SIDE = 8192;
@@ -59,7 +67,8 @@ constexpr int MAX_WINDOW_SIDE = 8192;
 // a frame, repeats expanded. Throws UsageError (CommandLine.h) naming
 // `fileName`, the line and what is wrong.
 std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& fileName, const KeyLookup& keyLookup);
-// Reads and parses FILE; throws UsageError when it cannot be read.
+// Reads and parses FILE, a regular file of at most MAX_SCRIPT_BYTES (not a
+// FIFO or /dev/zero); throws UsageError when it cannot be read.
 std::vector<ScriptEvent> loadEventScript(const std::string& path, const KeyLookup& keyLookup);
 
 }  // namespace odelab

@@ -1,14 +1,18 @@
 #include "MeasurementLog.h"
 
 #include "FormatValue.h"
+#include "SafeFile.h"
 
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <stdexcept>
 
 namespace odelab {
 
-MeasurementLog::~MeasurementLog() { close(); }
+MeasurementLog::~MeasurementLog() {
+  if (file_) std::fclose(file_);
+}
 
 void MeasurementLog::open(const std::string& path, const std::string& title,
                           const std::vector<std::pair<std::string, std::string>>& settings,
@@ -16,8 +20,8 @@ void MeasurementLog::open(const std::string& path, const std::string& title,
   close();
   path_ = path;
   rows_ = 0;
-  file_ = std::fopen(path.c_str(), "w");
-  if (!file_) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  finished_ = false;
+  file_ = openExclusiveOutput(path);
   check(std::fprintf(file_, "# %s\n", title.c_str()));
   for (const auto& [key, value] : settings) check(std::fprintf(file_, "# %s: %s\n", key.c_str(), value.c_str()));
   // The column names are the first line that is not a comment, so the file
@@ -43,9 +47,19 @@ void MeasurementLog::comment(double time, const std::string& text) {
   check(std::fflush(file_));
 }
 
+void MeasurementLog::finish(const std::string& line) {
+  if (!file_ || finished_) return;
+  finished_ = true;
+  check(std::fprintf(file_, "# %s\n", line.c_str()));
+  check(std::fflush(file_));
+}
+
 void MeasurementLog::close() {
-  if (file_) std::fclose(file_);
+  std::FILE* file = file_;
   file_ = nullptr;
+  // fclose writes what is buffered and releases the lock; a failure there
+  // is a lost row, reported like any other (not from the destructor).
+  if (file && std::fclose(file) != 0 && !std::uncaught_exceptions()) check(-1);
 }
 
 void MeasurementLog::check(int result) {

@@ -10,7 +10,11 @@ namespace odelab {
 // A scene's output file (Test2_output.txt, Test8_output.txt): a header of
 // "# key: value" lines naming every setting in force, a line of column names
 // (the first line not starting with '#'), then tab-separated rows. Every row and comment is flushed at once, so a
-// crash or kill loses at most the row being written.
+// crash or kill loses at most the row being written. A run that ends
+// normally adds a last line "# complete: ..." (finish); one cut short says
+// "# incomplete: ..." when it still can, and a file with neither was cut
+// short by a kill or a full disk. The file is opened through
+// openExclusiveOutput (SafeFile.h): no links followed, one run at a time.
 class MeasurementLog {
  public:
   MeasurementLog() = default;
@@ -19,12 +23,16 @@ class MeasurementLog {
   ~MeasurementLog();
 
   // Creates or truncates `path` and writes the header. Throws
-  // std::runtime_error naming the path when it cannot be written.
+  // std::runtime_error naming the path when it cannot be written, is not a
+  // regular file, or another run holds it.
   void open(const std::string& path, const std::string& title,
             const std::vector<std::pair<std::string, std::string>>& settings, const std::vector<std::string>& columns);
   void row(const std::vector<double>& values);
   // A "# t=<time> s: text" line, e.g. an F-key change.
   void comment(double time, const std::string& text);
+  // The last line: "complete: ..." or "incomplete: ..." (written once).
+  void finish(const std::string& line);
+  bool finished() const { return finished_; }
   void close();
   bool isOpen() const { return file_ != nullptr; }
   const std::string& path() const { return path_; }
@@ -36,6 +44,7 @@ class MeasurementLog {
   std::FILE* file_ = nullptr;
   std::string path_;
   long rows_ = 0;
+  bool finished_ = false;
 };
 
 // "t=1.234 s": how every change message names its simulated time.

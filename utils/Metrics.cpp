@@ -1,10 +1,11 @@
 #include "Metrics.h"
 
+#include "SafeFile.h"
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -13,24 +14,18 @@
 namespace odelab {
 
 void Metrics::set(const std::string& name, double value) {
-  for (auto& entry : entries_)
-    if (entry.first == name) {
-      entry.second = value;
-      return;
-    }
-  entries_.emplace_back(name, value);
+  const auto [found, added] = index_.emplace(name, entries_.size());
+  if (added)
+    entries_.emplace_back(name, value);
+  else
+    entries_[found->second].second = value;
 }
 
-bool Metrics::has(const std::string& name) const {
-  for (const auto& entry : entries_)
-    if (entry.first == name) return true;
-  return false;
-}
+bool Metrics::has(const std::string& name) const { return index_.count(name) != 0; }
 
 double Metrics::get(const std::string& name) const {
-  for (const auto& entry : entries_)
-    if (entry.first == name) return entry.second;
-  return std::numeric_limits<double>::quiet_NaN();
+  const auto found = index_.find(name);
+  return found == index_.end() ? std::numeric_limits<double>::quiet_NaN() : entries_[found->second].second;
 }
 
 namespace {
@@ -60,22 +55,7 @@ std::string Metrics::toJson() const {
   return json;
 }
 
-void Metrics::writeJsonAtomically(const std::string& path) const {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    out << toJson();
-    out.flush();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write metrics to '" + temporary + "'");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot rename '" + temporary + "' to '" + path + "'");
-  }
-}
+void Metrics::writeJsonAtomically(const std::string& path) const { writeFileAtomically(path, toJson()); }
 
 Metrics parseMetricsJson(const std::string& text) {
   Metrics metrics;

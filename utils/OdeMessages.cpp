@@ -5,7 +5,12 @@
 #include <chrono>
 #include <cstdarg>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <mutex>
+#include <thread>
+
+#include "ExitCodes.h"
 
 namespace odelab {
 
@@ -30,11 +35,33 @@ std::string format(int number, const char* fmt, va_list args) {
   return "ODE " + std::to_string(number) + ": " + buffer;
 }
 
-void onError(int number, const char* fmt, va_list args) { throw OdeError("error: " + format(number, fmt, args)); }
+std::thread::id mainThread;
+std::mutex messagesMutex;
 
-void onDebug(int number, const char* fmt, va_list args) {
-  throw OdeError("internal check failed: " + format(number, fmt, args));
+// An exception cannot leave one of ODE's pool threads (test5 --threads):
+// it reaches no handler there and ends the process with std::terminate
+// (status 134, no message), and ODE aborts if the handler returns. Such an
+// error is reported and ends the program with the status it has on the
+// main thread (4); a window cannot pause and replay after it, because the
+// pool's other threads and the world are mid-step.
+[[noreturn]] void endFromPoolThread(const std::string& message) {
+  const std::string line = "error: " + message +
+                           " (in one of ODE's island-stepping threads, --threads; ODE cannot go on from an error "
+                           "there: the run ends. With --threads 1 the window pauses at the last good state)\n";
+  std::fputs(line.c_str(), stderr);
+  std::fflush(stderr);
+  std::fflush(stdout);
+  std::_Exit(exit_code::ODE_ERROR);
 }
+
+[[noreturn]] void raise(const std::string& message) {
+  if (std::this_thread::get_id() != mainThread) endFromPoolThread(message);
+  throw OdeError(message);
+}
+
+void onError(int number, const char* fmt, va_list args) { raise("error: " + format(number, fmt, args)); }
+
+void onDebug(int number, const char* fmt, va_list args) { raise("internal check failed: " + format(number, fmt, args)); }
 
 void onMessage(int number, const char* fmt, va_list args) {
   char buffer[1024];
@@ -45,12 +72,15 @@ void onMessage(int number, const char* fmt, va_list args) {
 }  // namespace
 
 void OdeMessages::install() {
+  mainThread = std::this_thread::get_id();
   dSetErrorHandler(onError);
   dSetDebugHandler(onDebug);
   dSetMessageHandler(onMessage);
 }
 
 void OdeMessages::handleMessage(int number, const std::string& text) {
+  // Pool threads (test5 --threads) may report at the same time.
+  const std::lock_guard<std::mutex> lock(messagesMutex);
   const std::string line = "ODE message " + std::to_string(number) + ": " + text;
   const auto now = std::chrono::steady_clock::now();
   recentMessages.push_back({now, line});
@@ -71,6 +101,7 @@ void OdeMessages::handleMessage(int number, const std::string& text) {
 }
 
 std::deque<std::string> OdeMessages::recent() {
+  const std::lock_guard<std::mutex> lock(messagesMutex);
   std::deque<std::string> lines;
   const auto oldest = std::chrono::steady_clock::now() - RECENT_SHOWN_FOR;
   for (const auto& message : recentMessages)
@@ -79,6 +110,7 @@ std::deque<std::string> OdeMessages::recent() {
 }
 long OdeMessages::suppressedCount() { return suppressed; }
 void OdeMessages::clear() {
+  const std::lock_guard<std::mutex> lock(messagesMutex);
   recentMessages.clear();
   suppressed = 0;
   printedThisSecond = 0;

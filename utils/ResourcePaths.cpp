@@ -1,6 +1,12 @@
 #include "ResourcePaths.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
 #include <unistd.h>
 
 #include <climits>
@@ -105,6 +111,36 @@ bool isReadableFile(const std::string& path) {
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return false;
   return std::ifstream(path).good();
+}
+
+std::string readSmallRegularFile(const std::string& path, std::size_t maxBytes) {
+  // O_NONBLOCK: a FIFO is refused, not waited on; the size is read from the
+  // open file, so what is checked is what is read.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(path + ": " + std::strerror(errno));
+  struct stat info {};
+  std::string why;
+  if (::fstat(fd, &info) != 0)
+    why = std::strerror(errno);
+  else if (!S_ISREG(info.st_mode))
+    why = "not a regular file";
+  else if (static_cast<unsigned long long>(info.st_size) > maxBytes)
+    why = "larger than " + std::to_string(maxBytes) + " bytes";
+  std::string bytes;
+  if (why.empty()) {
+    bytes.resize(static_cast<std::size_t>(info.st_size));
+    std::size_t got = 0;
+    while (got < bytes.size()) {
+      const ssize_t n = ::read(fd, &bytes[got], bytes.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<std::size_t>(n);
+    }
+    if (got != bytes.size()) why = "could not be read whole";
+  }
+  ::close(fd);
+  if (!why.empty()) throw std::runtime_error(path + ": " + why);
+  return bytes;
 }
 
 bool isShaderDir(const std::string& path) { return isReadableFile(join(path, "scene.vert")); }

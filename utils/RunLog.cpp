@@ -2,8 +2,10 @@
 
 #include <cerrno>
 #include <cstring>
+#include <exception>
 
 #include "MeasurementLog.h"
+#include "SafeFile.h"
 
 namespace odelab {
 
@@ -21,8 +23,12 @@ std::string RunLog::fail(const std::string& why) {
 std::string RunLog::write(double simulatedTime, long long step, const std::string& text) {
   if (failed_ || path_.empty()) return {};
   if (!file_) {
-    file_ = std::fopen(path_.c_str(), "w");
-    if (!file_) return fail(std::strerror(errno));
+    try {
+      file_ = openExclusiveOutput(path_);
+    } catch (const std::exception& error) {
+      failed_ = true;
+      return std::string("the run log is not kept: ") + error.what();
+    }
     std::fprintf(file_, "# %s: inputs that changed the simulation, with their simulated time\n", title_.c_str());
   }
   // Flushed entry by entry: a crash keeps every input made before it.

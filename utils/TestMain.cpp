@@ -6,6 +6,7 @@
 #include "CommandLine.h"
 #include "ExitCodes.h"
 #include "OdeMessages.h"
+#include "StopSignal.h"
 #include "render/WindowFrontend.h"
 
 namespace odelab {
@@ -31,8 +32,11 @@ int run(AbstractWindow& scene, const RunOptions& options) {
   // The window builds the scene itself once the window, shaders, font and
   // --events script are ready, so a missing resource leaves no output file.
   const int status = runWindow(scene, options);
+  if (stopSignal() != 0) return scene.stoppedBySignal();
+  if (status != exit_code::OK) return status;
+  scene.endOutputs("");
   // A window run reports too, so scripted sessions can be checked.
-  if (status == exit_code::OK && !options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);
+  if (!options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);
   return status;
 }
 
@@ -50,6 +54,8 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   try {
     app.parse(argc, argv);
     cli::validateRunOptions(options);
+    cli::refuseOwnOutputs(options, scene.outputFileNames());
+    cli::refuseRunShorterThanStep(options, scene.settings().step);
     scene.setRunOptions(options);
     scene.checkOptions();
   } catch (const CLI::CallForHelp& help) {
@@ -62,6 +68,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     return exit_code::USAGE;
   }
 
+  installStopSignalHandlers();
   OdeLibrary ode;
   if (!dCheckConfiguration("ODE_double_precision")) {
     std::cerr << "error: this ODE library is not built in double precision\n";

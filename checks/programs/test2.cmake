@@ -13,10 +13,10 @@ odelab_check(test2_energy_kept_at_thesis_settings test2
        --out-dir ${CMAKE_CURRENT_BINARY_DIR}/out_test2_energy_kept)
 set_tests_properties(test2_energy_kept_at_thesis_settings PROPERTIES FIXTURES_SETUP test2_output)
 # The file that run wrote, read by an independent parser: header with every
-# setting, the four columns, 6001 rows on the 0.01 s grid.
+# setting, the four columns, 6001 rows on the 0.01 s grid, then "# complete: ...".
 add_test(NAME test2_output_file_parses
   COMMAND $<TARGET_FILE:check_output_file> ${CMAKE_CURRENT_BINARY_DIR}/out_test2_energy_kept/Test2_output.txt
-          --columns time_s,potential_J,kinetic_J,total_J --interval 0.01 --rows 6001)
+          --columns time_s,potential_J,kinetic_J,total_J --interval 0.01 --rows 6001 --complete)
 set_tests_properties(test2_output_file_parses PROPERTIES FIXTURES_REQUIRED test2_output LABELS scene)
 # The thesis: "any CFM above 0 drains the energy". Searched by decades from
 # 1e-6 to 1 (60 s, ERP 0.4, step 0.001), the smallest CFM whose energy_drift

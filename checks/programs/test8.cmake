@@ -9,10 +9,10 @@ odelab_check(test8_hinge_keeps_length_at_cfm_0 test8
   ARGS --headless --seconds 60 --erp 0.4 --cfm 0 --step 0.001 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/out_test8_cfm_0)
 set_tests_properties(test8_hinge_keeps_length_at_cfm_0 PROPERTIES FIXTURES_SETUP test8_output)
 # The file that run wrote, read by an independent parser: header with every
-# setting, the three columns, 6001 rows on the 0.01 s grid.
+# setting, the three columns, 6001 rows on the 0.01 s grid, then "# complete: ...".
 add_test(NAME test8_output_file_parses
   COMMAND $<TARGET_FILE:check_output_file> ${CMAKE_CURRENT_BINARY_DIR}/out_test8_cfm_0/Test8_output.txt
-          --columns time_s,relative_elongation,deflection_rad --interval 0.01 --rows 6001)
+          --columns time_s,relative_elongation,deflection_rad --interval 0.01 --rows 6001 --complete)
 set_tests_properties(test8_output_file_parses PROPERTIES FIXTURES_REQUIRED test8_output LABELS scene)
 # At the scene's default CFM 1e-4 the hinge behaves as a spring of stiffness
 # k = ERP / (step * CFM) = 4e6 N/m (ODE manual's ERP/CFM-to-spring relation):

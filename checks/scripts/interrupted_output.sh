@@ -9,6 +9,7 @@
 #   file-limit  the run (--seconds 60) may write 2 KiB per file (ulimit -f 4,
 #               SIGXFSZ ignored): it must stop with status 1 and a message
 #               naming FILE.
+# Either way FILE must not end with "# complete: ..." (a whole run's marker).
 how=$1 program=$2 checker=$3 file=$4 columns=$5 interval=$6
 shift 6
 root=$(mktemp -d "${TMPDIR:-/tmp}/odelab_interrupted.XXXXXX") || exit 2
@@ -46,6 +47,8 @@ esac
 [ -e metrics.json ] && fail "a metrics JSON exists after the interrupted run"
 [ -e metrics.json.tmp ] && fail "a partial metrics JSON (metrics.json.tmp) exists"
 [ -s "$file" ] || { fail "$file is missing or empty"; exit 1; }
+# A run cut short never claims to be whole.
+grep -q '^# complete: ' "$file" && fail "$file says '# complete' after a run that was cut short"
 # The complete part: everything up to the last newline.
 bytes=$(wc -c < "$file")
 complete=$(tr -cd '\n' < "$file" | wc -c)

@@ -20,8 +20,9 @@
 #           <unwritable-dir>: a fresh folder with mode 555;
 #           <unreadable-shaders>: a copy of $ODELAB_SHADERS whose scene.frag
 #           has mode 000. As root, where permissions stop nothing, the last
-#           two are skipped with a message (status 77, CTest's skip, when
-#           nothing else ran).
+#           two run as the unprivileged user nobody (uid 65534) through
+#           setpriv (or runuser); without either they are skipped with a
+#           message (status 77, CTest's skip, when nothing else ran).
 # $NEEDLE, when set, replaces what the message must name.
 # Each run's working directory is a fresh empty folder: its --out-dir (the
 # default ".") and the home of its --metrics-json, so any file it leaves
@@ -31,8 +32,18 @@ shift 3
 root=$(mktemp -d "${TMPDIR:-/tmp}/odelab_refusals.XXXXXX") || exit 2
 trap 'chmod -R u+rwx "$root" 2>/dev/null; rm -rf "$root"' EXIT
 failures=0 ran=0 skipped=0 n=0
+# As root, permissions stop nothing: runs that test them drop to nobody.
+as_nobody=
+if [ "$(id -u)" = 0 ]; then
+  if command -v setpriv >/dev/null 2>&1; then
+    as_nobody="setpriv --reuid=65534 --regid=65534 --clear-groups"
+  elif command -v runuser >/dev/null 2>&1; then
+    as_nobody="runuser -u nobody --"
+  fi
+fi
 for case in "$@"; do
   n=$((n + 1))
+  dropped=
   run="$root/run$n"
   mkdir "$run"
   bad=${case%% *}
@@ -45,8 +56,8 @@ for case in "$@"; do
   case $value in
     "<empty>") value= ;;
     "<unwritable-dir>" | "<unreadable-shaders>")
-      if [ "$(id -u)" = 0 ]; then
-        echo "skipped: $case: running as root, where file permissions do not stop reading or writing"
+      if [ "$(id -u)" = 0 ] && [ -z "$as_nobody" ]; then
+        echo "skipped: $case: running as root without setpriv or runuser, where file permissions stop nothing"
         skipped=$((skipped + 1))
         continue
       fi
@@ -56,6 +67,12 @@ for case in "$@"; do
       else
         value="$root/unreadable$n"
         cp -r "$ODELAB_SHADERS" "$value" && chmod 000 "$value/scene.frag"
+      fi
+      # nobody must reach the program, the folders and the files it may use.
+      if [ -n "$as_nobody" ]; then
+        chmod 755 "$root" && chown 65534:65534 "$run"
+        [ -d "$value" ] && [ "$value" != "$root/unwritable$n" ] && chmod -R a+rX "$value" && chmod 000 "$value/scene.frag"
+        dropped=yes
       fi ;;
   esac
   # The arguments: mode, the bad one, the fixed ones, a metrics file.
@@ -79,10 +96,14 @@ for case in "$@"; do
   rm -f "$root/status"
   case $mode in
     window)
-      (cd "$run" && STATUS_FILE="$root/status" timeout 60 xvfb-run -a -s "-screen 0 1280x800x24" \
-        sh -c '"$@"; echo $? > "$STATUS_FILE"' sh "$program" "$@") >"$root/out" 2>"$root/err"
+      # The status file is written by the program's user (nobody, when dropped).
+      : > "$root/status" && chmod 666 "$root/status"
+      # shellcheck disable=SC2086 # $as_nobody is a command and its arguments
+      (cd "$run" && STATUS_FILE="$root/status" timeout 60 ${dropped:+$as_nobody} xvfb-run -a \
+        -s "-screen 0 1280x800x24" sh -c '"$@"; echo $? > "$STATUS_FILE"' sh "$program" "$@") >"$root/out" 2>"$root/err"
       wrapper=$?
-      got=$(cat "$root/status" 2>/dev/null) || got="none (xvfb-run or timeout ended with $wrapper)" ;;
+      got=$(cat "$root/status" 2>/dev/null)
+      [ -n "$got" ] || got="none (xvfb-run or timeout ended with $wrapper)" ;;
     no-display)
       (cd "$run" && timeout 60 env -u DISPLAY -u WAYLAND_DISPLAY "$program" "$@") >"$root/out" 2>"$root/err"
       got=$? ;;
@@ -90,7 +111,8 @@ for case in "$@"; do
       (cd "$run" && timeout 60 env -u WAYLAND_DISPLAY DISPLAY=:4242 "$program" "$@") >"$root/out" 2>"$root/err"
       got=$? ;;
     *)
-      (cd "$run" && timeout 60 "$program" "$@") >"$root/out" 2>"$root/err"
+      # shellcheck disable=SC2086 # $as_nobody is a command and its arguments
+      (cd "$run" && timeout 60 ${dropped:+$as_nobody} "$program" "$@") >"$root/out" 2>"$root/err"
       got=$? ;;
   esac
   ran=$((ran + 1))

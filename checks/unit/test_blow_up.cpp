@@ -47,7 +47,7 @@ std::string firstBlowUp(double speed, double spin, int steps) {
   return reason;
 }
 
-const char* SETTINGS = "(step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations)";
+const char* SETTINGS = "(step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations, SOR w 1.3)";
 
 TEST(BlowUp, FastButSaneBodyIsNoBlowUp) { EXPECT_EQ(firstBlowUp(1e7, 1e3, 10), ""); }
 

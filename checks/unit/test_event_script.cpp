@@ -159,4 +159,27 @@ TEST(EventScript, UnreadableFileIsAUsageError) {
   EXPECT_THROW(loadEventScript("/nonexistent/x.events", lookup), UsageError);
 }
 
+// Issue 15: 880 bytes of *N repeats grew to 622 MB; /dev/zero never ended;
+// 40,000 presses in one frame failed only once the window was open.
+TEST(EventScript, BoundsEventsLinesAndFrames) {
+  std::string many;
+  for (int frame = 1; frame <= 3; ++frame) many += std::to_string(frame) + " key P *100000\n";
+  EXPECT_NE(errorOf(many).find("more than 200000 events"), std::string::npos) << errorOf(many);
+  EXPECT_NE(errorOf("1 key P *40000\n").find("frame 1 has 40000 events"), std::string::npos)
+      << errorOf("1 key P *40000\n");
+  EXPECT_EQ(errorOf("1 key P *16384\n2 key P *16384\n"), "");
+  EXPECT_NE(errorOf("1 mark " + std::string(5000, 'a') + "\n").find("line longer than 1024"), std::string::npos);
+}
+
+TEST(EventScript, OnlyRegularFilesAreRead) {
+  for (const char* path : {"/dev/zero", "/dev/null", "/tmp"}) {
+    try {
+      loadEventScript(path, lookup);
+      ADD_FAILURE() << path << " was read";
+    } catch (const UsageError& error) {
+      EXPECT_NE(std::string(error.what()).find("not a regular file"), std::string::npos) << error.what();
+    }
+  }
+}
+
 }  // namespace

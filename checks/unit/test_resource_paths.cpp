@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -199,4 +201,25 @@ TEST(ResourcePaths, DefaultSearchFindsTheRepositoryShaders) {
   // folder, so the repository's shaders/ qualifies.
   const ScopedEnvironment environment("ODELAB_SHADER_DIR", nullptr);
   EXPECT_TRUE(odelab::findShaderDir("").ok());
+}
+
+// Issue 15: a FIFO as a shader hung the window, /dev/zero exhausted memory.
+TEST(ReadSmallRegularFile, RefusesFifosDevicesAndLargeFiles) {
+  const std::string folder = std::filesystem::temp_directory_path() / "odelab_small_file_test";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directory(folder);
+  const std::string fifo = folder + "/shader.frag", big = folder + "/big.frag", small = folder + "/small.frag";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::ofstream(big) << std::string(odelab::MAX_SHADER_BYTES + 1, ' ');
+  std::ofstream(small) << "void main() {}\n";
+  for (const std::string& path : {fifo, std::string("/dev/zero"), big, folder}) {
+    try {
+      odelab::readSmallRegularFile(path, odelab::MAX_SHADER_BYTES);
+      ADD_FAILURE() << path << " was read";
+    } catch (const std::runtime_error& error) {
+      EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << error.what();
+    }
+  }
+  EXPECT_EQ(odelab::readSmallRegularFile(small, odelab::MAX_SHADER_BYTES), "void main() {}\n");
+  std::filesystem::remove_all(folder);
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace odelab {
@@ -20,6 +21,9 @@ class FixedIntervalSampler {
   bool due(double time, double step) {
     const double reach = time + 0.5 * step;
     if (reach < next_ * interval_) return false;
+    // Jump to the first grid point after `reach` (counting them one by one
+    // spun for ever with a tiny interval), then settle any rounding.
+    next_ = std::max(next_ + 1, static_cast<long>(std::floor(reach / interval_)));
     while (next_ * interval_ <= reach) ++next_;
     return true;
   }

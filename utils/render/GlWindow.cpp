@@ -32,6 +32,9 @@ void refuseInvisibleFallback() {
 }  // namespace
 
 GlWindow::VideoSubsystem::VideoSubsystem() {
+  // SDL would turn SIGINT and SIGTERM into a window close, which ends the
+  // run as if complete (status 0); the program handles them (StopSignal.h).
+  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
   if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) throw NoDisplayError(SDL_GetError());
   try {
     refuseInvisibleFallback();

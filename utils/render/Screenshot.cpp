@@ -2,11 +2,11 @@
 
 #include <GL/glew.h>
 
-#include <cerrno>
-#include <cstdio>
+#include <stdexcept>
 #include <cstring>
 #include <vector>
 
+#include "../SafeFile.h"
 #include "RenderError.h"
 
 // The one place stb_image_write's code is compiled. Static, so it cannot
@@ -40,15 +40,19 @@ void saveScreenshot(const std::string& path, int width, int height) {
   // frames (flat sky, shaded faces) plain rows compress as well or better and
   // take a fraction of the time, which --record pays every frame.
   stbi_write_force_png_filter = 0;
-  const std::string temporary = path + ".tmp";
-  if (!stbi_write_png(temporary.c_str(), width, height, 3, flipped.data(), static_cast<int>(rowBytes))) {
-    std::remove(temporary.c_str());
-    throw RenderError("cannot write screenshot " + path);
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw RenderError("cannot write screenshot " + path + ": " + reason);
+  // Encoded in memory, then written through writeFileAtomically: stb's own
+  // file writer ignores write errors, so a full disk left a truncated PNG
+  // and status 0; this way every write and the close are checked and the
+  // file appears whole or not at all.
+  int length = 0;
+  unsigned char* png = stbi_write_png_to_mem(flipped.data(), static_cast<int>(rowBytes), width, height, 3, &length);
+  if (!png) throw RenderError("cannot write screenshot " + path + ": PNG encoding failed");
+  const std::string bytes(reinterpret_cast<const char*>(png), static_cast<std::size_t>(length));
+  STBIW_FREE(png);
+  try {
+    writeFileAtomically(path, bytes);
+  } catch (const std::runtime_error& error) {
+    throw RenderError(std::string("screenshot: ") + error.what());
   }
 }
 

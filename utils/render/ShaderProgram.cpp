@@ -1,9 +1,10 @@
 #include "ShaderProgram.h"
 
-#include <fstream>
-#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "../ResourcePaths.h"
 #include "RenderError.h"
 
 namespace odelab {
@@ -11,11 +12,11 @@ namespace odelab {
 namespace {
 
 std::string readFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw ResourceError("cannot read shader " + path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
+  try {
+    return readSmallRegularFile(path, MAX_SHADER_BYTES);
+  } catch (const std::runtime_error& error) {
+    throw ResourceError(std::string("cannot read shader ") + error.what());
+  }
 }
 
 // The info log of a shader (glGetShaderiv, glGetShaderInfoLog) or a

@@ -11,6 +11,7 @@
 
 #include "../ExitCodes.h"
 #include "../MeasurementLog.h"
+#include "../StopSignal.h"
 #include "../ResourcePaths.h"
 #include "ControlPanel.h"
 #include "DebugDraw.h"
@@ -58,7 +59,7 @@ void printTotals(const char* what, const FrameTotals& t) {
 }
 
 bool finished(const AbstractWindow& scene, const RunOptions& options) {
-  return scene.quitRequested() || (options.seconds > 0.0 && scene.simulatedTime() >= options.seconds);
+  return scene.quitRequested() || stopSignal() != 0 || (options.seconds > 0.0 && scene.simulatedTime() >= options.seconds);
 }
 
 // Everything drawn in a window, built once the GL context exists and

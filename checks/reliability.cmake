@@ -1,0 +1,52 @@
+# Issue 15, the programs' side: files that are whole or say they are not,
+# no file replaced that should not be, two runs never mixed, signals that
+# end a run as cut short, numbers read as written (doc/hardening.md,
+# "What you can rely on"). Label: hardening.
+
+# Refused before running, status 2, nothing left behind (scripts/refusals.sh).
+odelab_refusals(test2 refuses_metrics_json_that_is_not_a_regular_file headless 2
+                --metrics-json=/dev/null --metrics-json=/dev/stdout --metrics-json=Test2_output.txt)
+odelab_refusals(test8 refuses_metrics_json_naming_its_output headless 2 --metrics-json=Test8_output.txt
+                --metrics-json=./Test8_output.txt)
+odelab_refusals(test2 refuses_runs_and_intervals_below_one_step headless 2
+                --seconds=1e-7 "--seconds=0.009 --step=0.01" --sample-interval=1e-300 "--sample-interval=0.001 --step=0.002")
+odelab_refusals(test8 refuses_sample_interval_below_the_step headless 2 --sample-interval=1e-300)
+odelab_refusals(test7 refuses_throw_interval_below_one_step headless 2 --throw-interval=1e-320)
+odelab_refusals(test0 refuses_integers_that_are_not_decimal headless 2 --iterations=0x10 --iterations=1e1
+                --seed=0x10 --frames=0x10)
+
+# Complete marker, planted link, a second run into one folder, SIGTERM
+# headless and in a window (scripts/output_files.sh).
+foreach(_program_file test2:Test2_output.txt test8:Test8_output.txt)
+  string(REPLACE ":" ";" _pair ${_program_file})
+  list(GET _pair 0 _program)
+  list(GET _pair 1 _file)
+  set(_window)
+  if(XVFB_RUN)
+    set(_window window)
+  endif()
+  add_test(NAME ${_program}_output_file_whole_unshared_and_marked
+           COMMAND sh ${ODELAB_CHECK_SCRIPTS}/output_files.sh $<TARGET_FILE:${_program}> ${_file} ${_window})
+  set_tests_properties(${_program}_output_file_whole_unshared_and_marked PROPERTIES TIMEOUT 300 LABELS hardening)
+endforeach()
+
+# Screenshots and --record frames on a full disk (ulimit -f): status 1 and no
+# PNG, whole or cut short (stb's own writer ignored write errors).
+if(XVFB_RUN)
+  add_test(NAME test0_png_on_a_full_disk_is_refused_not_truncated
+           COMMAND sh ${ODELAB_CHECK_SCRIPTS}/full_disk_screenshot.sh $<TARGET_FILE:test0>)
+  set_tests_properties(test0_png_on_a_full_disk_is_refused_not_truncated PROPERTIES TIMEOUT 300 LABELS hardening)
+endif()
+
+# test5 --threads: an ODE error in a pool thread ends the run with status 4
+# and a message naming the threads (it aborted with status 134 and no
+# message); a threaded run says in its metrics that it is not reproducible.
+add_test(NAME test5_ode_error_in_a_pool_thread_exits_4
+         COMMAND sh -c "\"$1\" --headless --threads 2 --solver step >/dev/null 2>err.txt; s=$?; cat err.txt;
+                        [ $s = 4 ] && grep -q \"error: .*island-stepping threads\" err.txt" sh $<TARGET_FILE:test5>
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(test5_ode_error_in_a_pool_thread_exits_4 PROPERTIES TIMEOUT 300 LABELS hardening)
+odelab_check(test5_threaded_run_says_not_reproducible test5 LABEL hardening
+  EXPECT threads==2 reproducible==0 ARGS --headless --seconds 0.5 --threads 2)
+odelab_check(test5_single_thread_run_says_reproducible test5 LABEL hardening
+  EXPECT threads==1 reproducible==1 ARGS --headless --seconds 0.5)

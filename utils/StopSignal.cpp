@@ -1,0 +1,41 @@
+#include "StopSignal.h"
+
+#include <csignal>
+#include <string>
+
+namespace odelab {
+
+namespace {
+volatile std::sig_atomic_t received = 0;
+
+extern "C" void onStopSignal(int signal) {
+  // A second signal while the first is being handled kills as usual, so a
+  // stuck run can still be ended.
+  if (received != 0) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+    return;
+  }
+  received = signal;
+}
+}  // namespace
+
+void installStopSignalHandlers() {
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int stopSignal() { return received; }
+
+const char* stopSignalName() {
+  switch (received) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    default: return "a signal";
+  }
+}
+
+}  // namespace odelab
