@@ -14,9 +14,14 @@ function(odelab_check name program)
   if(NOT DEFINED C_LABEL)
     set(C_LABEL scene)
   endif()
+  # A folder of its own: the programs write their output files into the
+  # working folder, and two runs into one folder refuse each other (a lock),
+  # so checks that run at the same time (ctest -j) must not share one.
+  set(dir ${CMAKE_CURRENT_BINARY_DIR}/runs/${name})
+  file(MAKE_DIRECTORY ${dir})
   add_test(NAME ${name}
            COMMAND expect_metrics ${status_args} ${C_EXPECT} -- $<TARGET_FILE:${program}> ${C_ARGS}
-           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+           WORKING_DIRECTORY ${dir})
   set_tests_properties(${name} PROPERTIES LABELS ${C_LABEL})
 endfunction()
 
