@@ -29,7 +29,7 @@ namespace {
 
 // A paused window with nothing to show redraws only when an event comes,
 // or after this long (the notices time out).
-const int IDLE_WAIT_MS = 500;
+const int IDLE_WAIT_MS = 1000;
 // With --record every frame stands for 1/60 s of simulated time (times the
 // time scale), however long writing it takes, so the frames make a 60 fps
 // video that plays in real time.
