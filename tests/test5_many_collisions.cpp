@@ -33,6 +33,8 @@
 #include "TestMain.h"
 #include "shared/SceneConstants.h"
 #include "shared/BodyMeasures.h"
+#include "shared/IslandThreads.h"
+#include "shared/StepCostWindow.h"
 
 #include <ode/threading_impl.h>
 
@@ -65,66 +67,6 @@ constexpr int MAX_THREADS = 64;
 // (or platform) below it is not resting on the stack: auto-disable froze it
 // in the air.
 constexpr double FROZEN_GAP = 0.01;  // m
-
-// ODE's built-in thread pool serving its multi-threaded implementation, for
-// threaded island stepping. Created once and kept across resets (the world is
-// rebuilt on every R); attach() hooks it to each new world.
-class IslandThreads {
- public:
-  explicit IslandThreads(int threads) : threads_(threads) {
-    impl_ = dThreadingAllocateMultiThreadedImplementation();
-    if (!impl_) throw std::runtime_error("ODE has no built-in multi-threaded implementation");
-    pool_ = dThreadingAllocateThreadPool(static_cast<unsigned>(threads), 0, dAllocateFlagBasicData, nullptr);
-    if (!pool_) {
-      dThreadingFreeImplementation(impl_);
-      throw std::runtime_error("ODE could not start a pool of " + std::to_string(threads) + " threads");
-    }
-    dThreadingThreadPoolServeMultiThreadedImplementation(pool_, impl_);
-  }
-  ~IslandThreads() {
-    dThreadingImplementationShutdownProcessing(impl_);
-    dThreadingFreeThreadPool(pool_);
-    dThreadingFreeImplementation(impl_);
-  }
-  IslandThreads(const IslandThreads&) = delete;
-  IslandThreads& operator=(const IslandThreads&) = delete;
-
-  void attach(dWorldID world) const {
-    dWorldSetStepIslandsProcessingMaxThreadCount(world, static_cast<unsigned>(threads_));
-    dWorldSetStepThreadingImplementation(world, dThreadingImplementationGetFunctions(impl_), impl_);
-  }
-
- private:
-  int threads_;
-  dThreadingImplementationID impl_ = nullptr;
-  dThreadingThreadPoolID pool_ = nullptr;
-};
-
-// The cost of the last simulated second: wall time of collide + step + empty
-// per step, summed incrementally so the measurement stays O(1) per step.
-class StepCostWindow {
- public:
-  void clear() {
-    samples_.clear();
-    sum_ = 0.0;
-  }
-  void add(double simulatedTime, double wallSeconds) {
-    samples_.push_back({simulatedTime, wallSeconds});
-    sum_ += wallSeconds;
-    while (!samples_.empty() && samples_.front().time <= simulatedTime - COST_WINDOW) {
-      sum_ -= samples_.front().wall;
-      samples_.pop_front();
-    }
-  }
-  double meanMilliseconds() const { return samples_.empty() ? 0.0 : 1000.0 * sum_ / samples_.size(); }
-
- private:
-  struct Sample {
-    double time, wall;
-  };
-  std::deque<Sample> samples_;
-  double sum_ = 0.0;
-};
 
 struct Plate {
   Box* box;
@@ -407,8 +349,8 @@ class ManyCollisions : public AbstractWindow {
   }
 
   std::vector<Plate> plates_;
-  StepCostWindow cost_;
-  StepCostWindow cpuCost_;  // process CPU time per step (all threads, the whole step loop)
+  StepCostWindow cost_{COST_WINDOW};
+  StepCostWindow cpuCost_{COST_WINDOW};  // process CPU time per step (all threads, the whole step loop)
   std::clock_t lastCpuClock_ = 0;
   double collidedSeconds_ = 0.0;
   double nextSpawn_ = 0.0;

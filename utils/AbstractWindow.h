@@ -51,8 +51,7 @@ class AbstractWindow {
   // --mu and --max-contacts, for scenes that called useContactChoices().
   void addContactOptions(CLI::App& app);
   void setRunOptions(const RunOptions& options) { options_ = options; }
-  // The files this program writes into --out-dir (its run log included),
-  // which --metrics-json and --screenshot may not name.
+  // Its files in --out-dir (run log included): --metrics-json and --screenshot may not name them.
   virtual std::vector<std::string> outputFileNames() const { return {programName() + "_run_log.txt"}; }
   // Checks between options after parsing; throw UsageError naming the option.
   virtual void checkOptions() const {}
@@ -70,11 +69,9 @@ class AbstractWindow {
   // Headless path: runFor(--seconds or defaultHeadlessSeconds()), then
   // reportHeadless(). Scenes with their own experiment override it.
   virtual int runHeadless();
-  // The output files' last line: "complete: t=..., N steps", or, with a
-  // reason, "incomplete: ...; <reason>" (see writeEndLine).
+  // Ends the output files: "complete: t=..., N steps" or "incomplete: ...; <reason>".
   void endOutputs(const std::string& cutShortBecause);
-  // After SIGINT/SIGTERM (StopSignal.h): marks the outputs incomplete,
-  // says so, and returns 128 + the signal's number.
+  // After SIGINT/SIGTERM: marks the outputs incomplete; returns 128 + the signal.
   int stoppedBySignal();
 
   // ---- read and driven by the front end -------------------------------------
@@ -162,9 +159,7 @@ class AbstractWindow {
   // Contact surface for a colliding pair; the default is plain friction (mu dInfinity).
   // Overrides take mu from contactMu() so --mu, F / G and the panel reach them.
   virtual void setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface);
-  // Call in the constructor of a scene with contacts: --mu and --max-contacts
-  // become options (the scene's default mu given here), F / G step mu along
-  // a ladder, the panel shows both, and headers and metrics name them.
+  // A scene with contacts calls it in its constructor: --mu, --max-contacts, F / G, panel, metrics.
   void useContactChoices(double defaultMu);
   double contactMu() const { return contact_.mu; }
   int maxContacts() const { return contact_.contactLimit(); }
