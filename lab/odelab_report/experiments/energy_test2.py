@@ -11,10 +11,14 @@ THESIS_MIN, THESIS_MAX = 29.250, 29.471
 
 
 def read_output_file(path):
-    """Rows (time, potential, kinetic, total) of Test2_output.txt, skipping `#` lines."""
-    rows = []
+    """Rows (time, potential, kinetic, total) of Test2_output.txt, skipping `#`
+    lines and the first other line, which names the columns."""
+    rows, header_seen = [], False
     for line in path.read_text().splitlines():
         if line.startswith("#") or not line.strip():
+            continue
+        if not header_seen:
+            header_seen = True
             continue
         rows.append(tuple(float(v) for v in line.split("\t")))
     return rows
