@@ -123,28 +123,46 @@ ShapeAt describe(dGeomID geom) {
 // Two boxes: the largest gap between their projections on the 15 separating
 // axes (the 3 + 3 face normals and the 9 edge-edge cross products). It is
 // at most the distance (a projection never lengthens), and positive exactly
-// when they are apart (the separating axis theorem).
+// when they are apart (the separating axis theorem). Worked in a's frame:
+// R is b's rotation seen from a (R[i][j] = a_i . b_j), t the centres'
+// offset there, so each axis costs a few products (it runs in every probe
+// of a time of impact).
 double boxBoxSeparation(const ShapeAt& a, const ShapeAt& b, double enough) {
   const double between[3] = {b.centre[0] - a.centre[0], b.centre[1] - a.centre[1], b.centre[2] - a.centre[2]};
+  double R[3][3], absR[3][3], t[3];
+  for (int i = 0; i < 3; ++i) {
+    t[i] = a.rotation.column(0, i) * between[0] + a.rotation.column(1, i) * between[1] +
+           a.rotation.column(2, i) * between[2];
+    for (int j = 0; j < 3; ++j) {
+      R[i][j] = a.rotation.column(0, i) * b.rotation.column(0, j) + a.rotation.column(1, i) * b.rotation.column(1, j) +
+                a.rotation.column(2, i) * b.rotation.column(2, j);
+      absR[i][j] = std::fabs(R[i][j]);
+    }
+  }
+  const double* ha = a.half;
+  const double* hb = b.half;
   double best = -INF;
-  auto tryAxis = [&](const double* axis) {
-    best = std::max(best, std::fabs(dot(axis, between)) - a.halfWidthAlong(axis) - b.halfWidthAlong(axis));
-  };
-  double axesA[3][3], axesB[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) axesA[i][k] = a.rotation.column(k, i), axesB[i][k] = b.rotation.column(k, i);
-  for (int i = 0; i < 3; ++i) tryAxis(axesA[i]), tryAxis(axesB[i]);
+  for (int i = 0; i < 3; ++i)  // a's faces
+    best = std::max(best, std::fabs(t[i]) - ha[i] - (hb[0] * absR[i][0] + hb[1] * absR[i][1] + hb[2] * absR[i][2]));
+  for (int j = 0; j < 3; ++j)  // b's faces
+    best = std::max(best, std::fabs(t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j]) -
+                              (ha[0] * absR[0][j] + ha[1] * absR[1][j] + ha[2] * absR[2][j]) - hb[j]);
   // Any axis gives a lower bound: far apart, the face normals are enough
   // and the edge axes are left out (most of a far sweep's cost).
   if (best > enough) return best;
-  for (const auto& u : axesA)
-    for (const auto& v : axesB) {
-      double axis[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-      const double n = length(axis);
+  for (int i = 0; i < 3; ++i) {
+    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    for (int j = 0; j < 3; ++j) {
+      // a_i x b_j, of length sin(angle) = sqrt(1 - R[i][j]^2).
+      const double n = std::sqrt(std::max(0.0, 1.0 - R[i][j] * R[i][j]));
       if (n < 1e-9) continue;  // parallel edges: the face axes cover them
-      for (double& c : axis) c /= n;
-      tryAxis(axis);
+      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      const double centres = std::fabs(t[i2] * R[i1][j] - t[i1] * R[i2][j]);
+      const double widthA = ha[i1] * absR[i2][j] + ha[i2] * absR[i1][j];
+      const double widthB = hb[j1] * absR[i][j2] + hb[j2] * absR[i][j1];
+      best = std::max(best, (centres - widthA - widthB) / n);
     }
+  }
   return best;
 }
 
@@ -184,6 +202,9 @@ struct BodyPose {
   double position[3];
   Matrix rotation;
   dQuaternion quaternion;
+  // Whether it has been moved: setting a pose renormalises the rotation and
+  // marks the geoms for a new bounding box, which an unmoved body is spared.
+  mutable bool moved = false;
 
   explicit BodyPose(dBodyID b) : body(b) {
     const dReal* p = dBodyGetPosition(b);
@@ -193,14 +214,18 @@ struct BodyPose {
     for (int k = 0; k < 4; ++k) quaternion[k] = q[k];
   }
   void moveTo(const StepMotion& motion, double s) const {
+    moved = true;
     dBodySetPosition(body, position[0] + s * motion.travel[0], position[1] + s * motion.travel[1],
                      position[2] + s * motion.travel[2]);
     const double turn[3] = {s * motion.turn[0], s * motion.turn[1], s * motion.turn[2]};
+    if (turn[0] == 0.0 && turn[1] == 0.0 && turn[2] == 0.0) return;  // a body that does not turn keeps its rotation
     const Matrix r = multiply(rotationBy(turn), rotation);
     dMatrix3 ode = {r.m[0], r.m[1], r.m[2], 0, r.m[3], r.m[4], r.m[5], 0, r.m[6], r.m[7], r.m[8], 0};
     dBodySetRotation(body, ode);
   }
   void restore() const {
+    if (!moved) return;
+    moved = false;
     dBodySetPosition(body, position[0], position[1], position[2]);
     dBodySetQuaternion(body, quaternion);
   }
@@ -284,18 +309,23 @@ void SweptCollision::setStaticGeoms(const std::vector<dGeomID>& geoms) {
 
 namespace {
 
-// Quick rejection: the sphere of radius `reach` round the body's origin,
-// which holds the geom at every fraction of the motion, swept from p to
-// p + travel, stays clear of the static geom's bounding box or plane.
-bool sweptSphereMisses(const SweptCollision::StaticGeom& fixed, const double p[3], const double d[3],
-                       double reach) {
+// Quick rejection: the geom's own bounding box (ODE's, at the start of the
+// motion), swept along the travel and grown on every side by how far its
+// turn can carry any point (|turn| x reach: an arc is no shorter than its
+// chord), stays clear of the static geom's bounding box or plane. It holds
+// the geom at every fraction of the motion, and for a box is far tighter
+// than a sphere round it: most steps of a fast body end here.
+bool sweptBoxMisses(const SweptCollision::StaticGeom& fixed, const double lower[3], const double upper[3],
+                    const double d[3], double margin) {
   if (fixed.plane) {
-    const double start = dot(fixed.normal, p) - fixed.offset;
-    return start > reach && start + dot(fixed.normal, d) > reach;
+    // The box's lowest corner along the normal, at the start and the end.
+    double start = -fixed.offset;
+    for (int k = 0; k < 3; ++k) start += fixed.normal[k] * (fixed.normal[k] > 0.0 ? lower[k] : upper[k]);
+    return start > margin && start + dot(fixed.normal, d) > margin;
   }
   for (int k = 0; k < 3; ++k) {
-    if (std::min(p[k], p[k] + d[k]) - reach > fixed.upper[k]) return true;
-    if (std::max(p[k], p[k] + d[k]) + reach < fixed.lower[k]) return true;
+    if (lower[k] + std::min(0.0, d[k]) - margin > fixed.upper[k]) return true;
+    if (upper[k] + std::max(0.0, d[k]) + margin < fixed.lower[k]) return true;
   }
   return false;
 }
@@ -333,15 +363,18 @@ SweepResult SweptCollision::sweep(const Body& moving, double step, const double 
   // The speed test and the quick rejection come first and touch only the
   // velocities and the position: most steps of a fast body end there.
   const StepMotion motion = nextStepMotion(body, gravity, step);
-  const dReal* origin = dBodyGetPosition(body);
-  const double p[3] = {origin[0], origin[1], origin[2]};
-  const double reach = moving.reach;
-  if (length(motion.travel) + length(motion.turn) * reach <= options_.fastFraction * moving.smallestHalfExtent)
+  const double turnReach = length(motion.turn) * moving.reach;
+  if (length(motion.travel) + turnReach <= options_.fastFraction * moving.smallestHalfExtent)
     return SweepResult::Slow;
   ++counts_.sweeps;
+  // ODE computes this box for the coming collide anyway (the geom moved in
+  // the last step): asking for it now costs nothing extra.
+  dReal aabb[6];
+  dGeomGetAABB(geom, aabb);
+  const double lower[3] = {aabb[0], aabb[2], aabb[4]}, upper[3] = {aabb[1], aabb[3], aabb[5]};
   near_.clear();
   for (const StaticGeom& fixed : statics_)
-    if (fixed.geom != geom && !sweptSphereMisses(fixed, p, motion.travel, reach)) near_.push_back(&fixed);
+    if (fixed.geom != geom && !sweptBoxMisses(fixed, lower, upper, motion.travel, turnReach)) near_.push_back(&fixed);
   if (near_.empty()) return SweepResult::Clear;
   const ShapeAt start = describe(geom);
   const BodyPose pose(body);
@@ -407,7 +440,10 @@ struct Corners {
   const Corner* end() const { return corner + count; }
 };
 
-Corners cornersOutside(const ShapeAt& box, const ShapeAt& wall) {
+// The corners of `box` outside `wall` by at most `within` (m): the others
+// are inside it already or cannot reach it this step, and cost only their
+// gap (the closest point and the normal are worked out for the few kept).
+Corners cornersWithin(const ShapeAt& box, const ShapeAt& wall, double within) {
   Corners corners;
   for (int index = 0; index < 8; ++index) {
     const double local[3] = {(index & 1 ? 1 : -1) * box.half[0], (index & 2 ? 1 : -1) * box.half[1],
@@ -418,20 +454,32 @@ Corners cornersOutside(const ShapeAt& box, const ShapeAt& wall) {
     const double* x = c.position;
     if (wall.kind == ShapeAt::Plane) {
       c.gap = dot(wall.normal, x) - wall.offset;
+      if (c.gap <= 0.0 || c.gap > within) continue;
       for (int k = 0; k < 3; ++k) c.normal[k] = wall.normal[k];
+    } else if (wall.kind == ShapeAt::Sphere) {
+      const double d[3] = {x[0] - wall.centre[0], x[1] - wall.centre[1], x[2] - wall.centre[2]};
+      const double distance = length(d);
+      c.gap = distance - wall.radius;
+      if (c.gap <= 0.0 || c.gap > within) continue;
+      for (int k = 0; k < 3; ++k) c.normal[k] = d[k] / distance;
     } else {
-      double closest[3];
-      if (wall.kind == ShapeAt::Sphere) {
-        const double d[3] = {x[0] - wall.centre[0], x[1] - wall.centre[1], x[2] - wall.centre[2]};
-        c.gap = length(d) - wall.radius;
-        for (int k = 0; k < 3; ++k) closest[k] = wall.centre[k] + wall.radius * d[k] / length(d);
-      } else {
-        c.gap = wall.boxDistance(x, closest);
+      // The corner in the wall's frame, its excess over the half-sides.
+      const double r[3] = {x[0] - wall.centre[0], x[1] - wall.centre[1], x[2] - wall.centre[2]};
+      double excess[3], squared = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        const double along =
+            wall.rotation.column(0, i) * r[0] + wall.rotation.column(1, i) * r[1] + wall.rotation.column(2, i) * r[2];
+        excess[i] = along - std::clamp(along, -wall.half[i], wall.half[i]);
+        squared += excess[i] * excess[i];
       }
-      if (c.gap > 0.0)
-        for (int k = 0; k < 3; ++k) c.normal[k] = (x[k] - closest[k]) / c.gap;
+      if (squared <= 0.0 || squared > within * within) continue;
+      c.gap = std::sqrt(squared);
+      double out[3];
+      for (double& e : excess) e /= c.gap;
+      apply(wall.rotation, excess, out);  // from the closest point out to the corner
+      for (int k = 0; k < 3; ++k) c.normal[k] = out[k];
     }
-    if (c.gap > 0.0) corners.corner[corners.count++] = c;
+    corners.corner[corners.count++] = c;
   }
   return corners;
 }
@@ -448,12 +496,11 @@ int SweptCollision::addSpeculativeContacts(dBodyID body, dGeomID geom, dGeomID f
   const double spin = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
   const double reach = (length(velocity) + spin * (length(offset) + box.boundingRadius())) * step;
   int added = 0;
-  for (const Corner& c : cornersOutside(box, describe(fixed))) {
+  for (const Corner& c : cornersWithin(box, describe(fixed), reach)) {
     const double r[3] = {c.position[0] - origin[0], c.position[1] - origin[1], c.position[2] - origin[2]};
     const double u[3] = {velocity[0] + w[1] * r[2] - w[2] * r[1], velocity[1] + w[2] * r[0] - w[0] * r[2],
                          velocity[2] + w[0] * r[1] - w[1] * r[0]};
-    // Moving away, or out of reach this step: nothing to stop.
-    if (dot(c.normal, u) >= 0.0 || c.gap > reach) continue;
+    if (dot(c.normal, u) >= 0.0) continue;  // moving away: nothing to stop
     dContact contact{};
     contact.surface.mode = dContactMotionN;
     contact.surface.mu = 0.0;                  // normal only: friction comes with the real contact
