@@ -187,6 +187,11 @@ double separation(const ShapeAt& moving, const ShapeAt& fixed, double enough = 0
 // start and its offset from the body's origin (the centre of rotation).
 ShapeAt shapeAtFraction(const ShapeAt& start, const double origin[3], const StepMotion& motion, double s) {
   const double turn[3] = {s * motion.turn[0], s * motion.turn[1], s * motion.turn[2]};
+  if (turn[0] == 0.0 && turn[1] == 0.0 && turn[2] == 0.0) {  // it only travels (the common case)
+    ShapeAt shape = start;
+    for (int k = 0; k < 3; ++k) shape.centre[k] += s * motion.travel[k];
+    return shape;
+  }
   const Matrix r = rotationBy(turn);
   const double offset[3] = {start.centre[0] - origin[0], start.centre[1] - origin[1], start.centre[2] - origin[2]};
   ShapeAt shape = start;
