@@ -158,6 +158,7 @@ class ManyCollisions : public AbstractWindow {
     platform.setPosition(0.0, -PLATFORM_THICKNESS / 2, 0.0);
     platform.color = Color{0.45f, 0.5f, 0.55f};
     plates_.clear();
+    firstInAir_ = 0;
     cost_.clear();
     cpuCost_.clear();
     lastCpuClock_ = std::clock();
@@ -271,16 +272,19 @@ class ManyCollisions : public AbstractWindow {
     return height;
   }
 
-  // Only plates still in the air are checked, so the cost per step stays
-  // with the few falling plates, not the whole stack.
+  // Only plates from the oldest one not yet landed on are checked, so the
+  // cost per step stays with the few falling plates, not the whole stack.
+  // A plate can come to rest on one still rocking below it: the one below
+  // is checked again until it is still too.
   void markLandedPlates() {
-    for (auto it = plates_.rbegin(); it != plates_.rend(); ++it) {
-      Plate& plate = *it;
-      if (plate.landed) break;  // plates land in the order they were dropped
+    for (std::size_t i = firstInAir_; i < plates_.size(); ++i) {
+      Plate& plate = plates_[i];
+      if (plate.landed) continue;
       if (simulatedTime() - plate.bornAt < LANDING_MIN_AGE || speedOf(plate.box->getBody()) > LANDED_SPEED)
         continue;
       plate.landed = true;
     }
+    while (firstInAir_ < plates_.size() && plates_[firstInAir_].landed) ++firstInAir_;
   }
 
   // Top face of the highest landed plate, where it is now (the stack settles
@@ -349,6 +353,7 @@ class ManyCollisions : public AbstractWindow {
   }
 
   std::vector<Plate> plates_;
+  std::size_t firstInAir_ = 0;  // plates_ before it have all landed
   StepCostWindow cost_{COST_WINDOW};
   StepCostWindow cpuCost_{COST_WINDOW};  // process CPU time per step (all threads, the whole step loop)
   std::clock_t lastCpuClock_ = 0;
