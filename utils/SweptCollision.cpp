@@ -366,7 +366,7 @@ SweepResult SweptCollision::sweep(const Body& moving, double step, const double 
   const dGeomID geom = moving.geom;
   if (!dBodyIsEnabled(body)) return SweepResult::Slow;
   // The speed test and the quick rejection come first and touch only the
-  // velocities and the position: most steps of a fast body end there.
+  // velocities and the bounding box: most steps of a fast body end there.
   const StepMotion motion = nextStepMotion(body, gravity, step);
   const double turnReach = length(motion.turn) * moving.reach;
   if (length(motion.travel) + turnReach <= options_.fastFraction * moving.smallestHalfExtent)
