@@ -12,6 +12,7 @@ constexpr double INF = std::numeric_limits<double>::infinity();
 
 double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double length(const double* a) { return std::sqrt(dot(a, a)); }
+bool isZero(const double* a) { return a[0] == 0.0 && a[1] == 0.0 && a[2] == 0.0; }
 
 // 3x3 matrices, row-major; column i of a geom's rotation is its axis i.
 struct Matrix {
@@ -68,16 +69,24 @@ struct ShapeAt {
   double boundingRadius() const { return kind == Sphere ? radius : length(half); }
   // Distance from the point x to this box (0 inside), and the closest point.
   double boxDistance(const double* x, double* closest) const {
+    double excess[3], out[3];
+    const double squared = excessOutside(x, excess);
+    apply(rotation, excess, out);
+    for (int k = 0; k < 3; ++k) closest[k] = x[k] - out[k];
+    return std::sqrt(squared);
+  }
+  // How far the point x lies beyond this box's faces along each of its
+  // axes (0 between a pair of faces), in the box's frame; the squared
+  // distance from x to the box.
+  double excessOutside(const double* x, double excess[3]) const {
     const double r[3] = {x[0] - centre[0], x[1] - centre[1], x[2] - centre[2]};
-    double clamped[3], squared = 0.0;
+    double squared = 0.0;
     for (int i = 0; i < 3; ++i) {
       const double local = rotation.column(0, i) * r[0] + rotation.column(1, i) * r[1] + rotation.column(2, i) * r[2];
-      clamped[i] = std::clamp(local, -half[i], half[i]);
-      squared += (local - clamped[i]) * (local - clamped[i]);
+      excess[i] = local - std::clamp(local, -half[i], half[i]);
+      squared += excess[i] * excess[i];
     }
-    apply(rotation, clamped, closest);
-    for (int k = 0; k < 3; ++k) closest[k] += centre[k];
-    return std::sqrt(squared);
+    return squared;
   }
 };
 
@@ -187,7 +196,7 @@ double separation(const ShapeAt& moving, const ShapeAt& fixed, double enough = 0
 // start and its offset from the body's origin (the centre of rotation).
 ShapeAt shapeAtFraction(const ShapeAt& start, const double origin[3], const StepMotion& motion, double s) {
   const double turn[3] = {s * motion.turn[0], s * motion.turn[1], s * motion.turn[2]};
-  if (turn[0] == 0.0 && turn[1] == 0.0 && turn[2] == 0.0) {  // it only travels (the common case)
+  if (isZero(turn)) {  // it only travels (the common case)
     ShapeAt shape = start;
     for (int k = 0; k < 3; ++k) shape.centre[k] += s * motion.travel[k];
     return shape;
@@ -223,7 +232,7 @@ struct BodyPose {
     dBodySetPosition(body, position[0] + s * motion.travel[0], position[1] + s * motion.travel[1],
                      position[2] + s * motion.travel[2]);
     const double turn[3] = {s * motion.turn[0], s * motion.turn[1], s * motion.turn[2]};
-    if (turn[0] == 0.0 && turn[1] == 0.0 && turn[2] == 0.0) return;  // a body that does not turn keeps its rotation
+    if (isZero(turn)) return;  // a body that does not turn keeps its rotation
     const Matrix r = multiply(rotationBy(turn), rotation);
     dMatrix3 ode = {r.m[0], r.m[1], r.m[2], 0, r.m[3], r.m[4], r.m[5], 0, r.m[6], r.m[7], r.m[8], 0};
     dBodySetRotation(body, ode);
@@ -468,21 +477,12 @@ Corners cornersWithin(const ShapeAt& box, const ShapeAt& wall, double within) {
       if (c.gap <= 0.0 || c.gap > within) continue;
       for (int k = 0; k < 3; ++k) c.normal[k] = d[k] / distance;
     } else {
-      // The corner in the wall's frame, its excess over the half-sides.
-      const double r[3] = {x[0] - wall.centre[0], x[1] - wall.centre[1], x[2] - wall.centre[2]};
-      double excess[3], squared = 0.0;
-      for (int i = 0; i < 3; ++i) {
-        const double along =
-            wall.rotation.column(0, i) * r[0] + wall.rotation.column(1, i) * r[1] + wall.rotation.column(2, i) * r[2];
-        excess[i] = along - std::clamp(along, -wall.half[i], wall.half[i]);
-        squared += excess[i] * excess[i];
-      }
+      double excess[3];
+      const double squared = wall.excessOutside(x, excess);
       if (squared <= 0.0 || squared > within * within) continue;
       c.gap = std::sqrt(squared);
-      double out[3];
       for (double& e : excess) e /= c.gap;
-      apply(wall.rotation, excess, out);  // from the closest point out to the corner
-      for (int k = 0; k < 3; ++k) c.normal[k] = out[k];
+      apply(wall.rotation, excess, c.normal);  // from the closest point out to the corner
     }
     corners.corner[corners.count++] = c;
   }
