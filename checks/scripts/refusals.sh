@@ -32,6 +32,7 @@ shift 3
 root=$(mktemp -d "${TMPDIR:-/tmp}/odelab_refusals.XXXXXX") || exit 2
 trap 'chmod -R u+rwx "$root" 2>/dev/null; rm -rf "$root"' EXIT
 failures=0 ran=0 skipped=0 n=0
+exe=$program  # what a run as nobody starts (see below)
 # As root, permissions stop nothing: runs that test them drop to nobody.
 as_nobody=
 if [ "$(id -u)" = 0 ]; then
@@ -69,8 +70,16 @@ for case in "$@"; do
         cp -r "$ODELAB_SHADERS" "$value" && chmod 000 "$value/scene.frag"
       fi
       # nobody must reach the program, the folders and the files it may use.
+      # A checkout in a private folder (mktemp -d makes them mode 700) is out
+      # of its reach: then nobody runs a copy of the program from $root (its
+      # font and shaders are found without the build folder).
       if [ -n "$as_nobody" ]; then
         chmod 755 "$root" && chown 65534:65534 "$run"
+        # shellcheck disable=SC2086 # $as_nobody is a command and its arguments
+        if [ "$exe" = "$program" ] && ! $as_nobody sh -c 'test -x "$1"' sh "$program"; then
+          exe="$root/program"
+          cp "$program" "$exe" && chmod 755 "$exe"
+        fi
         [ -d "$value" ] && [ "$value" != "$root/unwritable$n" ] && chmod -R a+rX "$value" && chmod 000 "$value/scene.frag"
         dropped=yes
       fi ;;
@@ -94,13 +103,15 @@ for case in "$@"; do
   set -- "$@" $fixed
   [ "$option" = --metrics-json ] || set -- "$@" --metrics-json metrics.json
   rm -f "$root/status"
+  start=$program
+  [ -n "$dropped" ] && start=$exe
   case $mode in
     window)
       # The status file is written by the program's user (nobody, when dropped).
       : > "$root/status" && chmod 666 "$root/status"
       # shellcheck disable=SC2086 # $as_nobody is a command and its arguments
       (cd "$run" && STATUS_FILE="$root/status" timeout 60 ${dropped:+$as_nobody} xvfb-run -a \
-        -s "-screen 0 1280x800x24" sh -c '"$@"; echo $? > "$STATUS_FILE"' sh "$program" "$@") >"$root/out" 2>"$root/err"
+        -s "-screen 0 1280x800x24" sh -c '"$@"; echo $? > "$STATUS_FILE"' sh "$start" "$@") >"$root/out" 2>"$root/err"
       wrapper=$?
       got=$(cat "$root/status" 2>/dev/null)
       [ -n "$got" ] || got="none (xvfb-run or timeout ended with $wrapper)" ;;
@@ -112,7 +123,7 @@ for case in "$@"; do
       got=$? ;;
     *)
       # shellcheck disable=SC2086 # $as_nobody is a command and its arguments
-      (cd "$run" && timeout 60 ${dropped:+$as_nobody} "$program" "$@") >"$root/out" 2>"$root/err"
+      (cd "$run" && timeout 60 ${dropped:+$as_nobody} "$start" "$@") >"$root/out" 2>"$root/err"
       got=$? ;;
   esac
   ran=$((ran + 1))
