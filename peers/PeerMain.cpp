@@ -3,11 +3,11 @@
 // headless runs, so the lab runs either the same way.
 #include <sys/resource.h>
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <iostream>
 #include <map>
 
+#include "CommandLine.h"
 #include "Measurements.h"
 #include "Metrics.h"
 #include "PeerScene.h"
@@ -42,36 +42,37 @@ int runPeer(int argc, char** argv, Engine& engine) {
   app.add_option("--scene", options.scene, "the scene, named as the ODE program that measures it")
       ->check(CLI::IsMember(scenes))
       ->capture_default_str();
-  app.add_option("--step", options.step, "simulation step in s")->check(CLI::Range(1e-7, 0.1))->capture_default_str();
+  // Every number finite and within its range, every value non-empty,
+  // every count decimal: the ODE programs' rules, from utils/CommandLine.
+  app.add_option("--step", options.step, "simulation step in s")->check(cli::finiteRange(1e-7, 0.1))->capture_default_str();
   app.add_option("--seconds", options.seconds, "simulated seconds (default: the ODE program's run for the scene)")
-      ->check(CLI::Range(0.0, 86400.0));
+      ->check(cli::positive(86400.0));
   app.add_option("--setting", setting,
                  "default: the engine as a user gets it; best: the engine's most accurate settings for the scene")
       ->check(CLI::IsMember({"default", "best"}))
       ->capture_default_str();
   app.add_flag("--ccd", options.ccd, "test10: the engine's continuous collision detection (Bullet only)");
   app.add_option("--velocity", options.velocity, "test10: launch velocity in m/s")
-      ->check(CLI::Range(1e-3, 1e7))
+      ->check(cli::finiteRange(1e-3, 1e7))
       ->capture_default_str();
   app.add_flag("--find-max-velocity", options.findMaxVelocity,
                "test10: scan from 1 m/s (every 1 m/s to 1000, every 0.1% above) for the highest velocity with every "
                "launch up to it stopped");
   app.add_option("--big-mass", options.bigMass, "test4: mass of the big cube in kg (default: the scene's)")
-      ->check(CLI::Range(1e-3, 1e9));
+      ->check(cli::finiteRange(1e-3, 1e9));
   app.add_option("--bob-mass", options.bobMass, "test8: mass of the bob in kg (default: the scene's)")
-      ->check(CLI::Range(1e-3, 1e9));
+      ->check(cli::finiteRange(1e-3, 1e9));
   app.add_option("--metrics-json", metricsJson, "write the metrics to this file as JSON");
   app.add_flag("--headless", headless, "accepted for the lab's sake; the peers never open a window");
-  try {
-    app.parse(argc, argv);
+  cli::rejectEmptyValues(app);
+  const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     if (options.ccd && !engine.hasContinuousCollision())
-      throw CLI::ValidationError("--ccd", engine.name() + " has no continuous collision detection");
-    if (options.ccd && options.scene != "test10") throw CLI::ValidationError("--ccd", "only test10 uses it");
-  } catch (const CLI::ParseError& error) {
-    // --help: 0; a bad option: its reason on stderr and 2, as the ODE programs
-    // (CLI11's own codes are 1xx).
-    return app.exit(error) == 0 ? 0 : 2;
-  }
+      throw UsageError("--ccd: " + engine.name() + " has no continuous collision detection");
+    if (options.ccd && options.scene != "test10") throw UsageError("--ccd: only test10 uses it");
+    cli::refuseRunShorterThanStep(options.seconds, options.step);
+    cli::requireReplaceableFile("--metrics-json", metricsJson);
+  });
+  if (refused) return *refused;
   options.setting = setting == "best" ? Setting::Best : Setting::Default;
 
   Metrics metrics;

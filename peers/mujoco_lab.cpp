@@ -7,6 +7,7 @@
 #include <mujoco/mujoco.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <sstream>
@@ -63,7 +64,14 @@ class MujocoScene {
   explicit MujocoScene(const std::string& xml) : model_(loadModel(xml)), data_(mj_makeData(model_.get())) {
     mj_forward(model_.get(), data_.get());
   }
-  void step() { mj_step(model_.get(), data_.get()); }
+  void step() {
+    mj_step(model_.get(), data_.get());
+    // MuJoCo answers a NaN, infinite or huge acceleration by resetting the
+    // state and going on: a result measured after that would be a lie.
+    if (data_->warning[mjWARN_BADQACC].number > 0)
+      throw std::runtime_error("MuJoCo found a bad acceleration (NaN, infinite or huge) at t=" +
+                               std::to_string(data_->time) + " s and reset the simulation; no result");
+  }
   mjModel* m() const { return model_.get(); }
   mjData* d() const { return data_.get(); }
 
@@ -259,7 +267,20 @@ class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLa
 
 }  // namespace
 
+// MuJoCo's own handlers append to MUJOCO_LOG.TXT in the working folder
+// (and its error handler waits for Enter); these say it on standard error
+// and leave no file behind.
+namespace {
+void onMujocoWarning(const char* message) { std::fprintf(stderr, "warning: MuJoCo: %s\n", message); }
+[[noreturn]] void onMujocoError(const char* message) {
+  std::fprintf(stderr, "error: MuJoCo: %s\n", message);
+  std::exit(1);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
+  mju_user_warning = onMujocoWarning;
+  mju_user_error = onMujocoError;
   Mujoco mujoco;
   try {
     return odelab::peers::runPeer(argc, argv, mujoco);

@@ -4,8 +4,10 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
+#include "ExitCodes.h"
 #include "MeasurementLog.h"
 #include "SafeFile.h"
 
@@ -30,7 +32,9 @@ std::string directoryOf(const std::string& file) {
   return slash == 0 ? "/" : file.substr(0, slash);
 }
 
-void requireWritableFolderOf(const char* option, const std::string& file) {
+}  // namespace
+
+void requireReplaceableFile(const char* option, const std::string& file) {
   if (file.empty()) return;
   struct stat info {};
   if (stat(file.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
@@ -45,8 +49,6 @@ void requireWritableFolderOf(const char* option, const std::string& file) {
     throw UsageError(std::string(option) + ": cannot write '" + file + "': folder '" + folder +
                      "' does not exist or is not writable");
 }
-
-}  // namespace
 
 CLI::Validator finiteRange(double min, double max) {
   const std::string range = "[" + formatNumber(min) + ", " + formatNumber(max) + "]";
@@ -212,17 +214,37 @@ void refuseBelowStep(const char* option, double interval, double step) {
 }
 
 void refuseRunShorterThanStep(const RunOptions& options, double step) {
+  refuseRunShorterThanStep(options.seconds, step);
+}
+
+void refuseRunShorterThanStep(double seconds, double step) {
   // llround(seconds / step) would be 0 steps, a run that measured nothing.
-  if (options.seconds > 0 && options.seconds < step)
-    throw UsageError("--seconds: " + formatNumber(options.seconds) + " s is less than one step (--step " +
+  if (seconds > 0 && seconds < step)
+    throw UsageError("--seconds: " + formatNumber(seconds) + " s is less than one step (--step " +
                      formatNumber(step) + " s); the run would take no step");
+}
+
+std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const std::function<void()>& checks) {
+  try {
+    app.parse(argc, argv);
+    checks();
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
+    return exit_code::USAGE;
+  } catch (const UsageError& error) {
+    std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
+    return exit_code::USAGE;
+  }
+  return std::nullopt;
 }
 
 void validateRunOptions(const RunOptions& options) {
   if (!isWritableDirectory(options.outDir))
     throw UsageError("--out-dir: '" + options.outDir + "' does not exist or is not a writable folder");
-  requireWritableFolderOf("--metrics-json", options.metricsJson);
-  requireWritableFolderOf("--screenshot", options.screenshot);
+  requireReplaceableFile("--metrics-json", options.metricsJson);
+  requireReplaceableFile("--screenshot", options.screenshot);
   if (!options.recordDir.empty() && !isWritableDirectory(options.recordDir))
     throw UsageError("--record: '" + options.recordDir + "' does not exist or is not a writable folder");
   if (options.headless && !options.recordDir.empty())

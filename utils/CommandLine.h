@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -58,6 +60,18 @@ void validateRunOptions(const RunOptions& options);
 void refuseBelowStep(const char* option, double interval, double step);
 // --seconds shorter than one step, a run of no step. Throws UsageError.
 void refuseRunShorterThanStep(const RunOptions& options, double step);
+// The same for a run length given as `seconds` (0 or less: not given).
+void refuseRunShorterThanStep(double seconds, double step);
+// FILE (of `option`) will be replaced whole by a rename: it must not be a
+// folder, device, FIFO or link, and its folder must be writable. Throws UsageError.
+void requireReplaceableFile(const char* option, const std::string& file);
+
+// Parses the command line the one way every program does (the ODE programs
+// and the peers): CLI11's parse, then `checks` (which throw UsageError or a
+// CLI::Error). Returns the status to end with at once (0 after --help, 2 for
+// a refused command line, its reason on standard error), or nothing when
+// the program should go on.
+std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const std::function<void()>& checks);
 
 void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>& outputNames);
 

@@ -51,22 +51,14 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   scene.addContactOptions(app);
   cli::rejectEmptyValues(app);
   app.footer(cli::keysHelp(scene));
-  try {
-    app.parse(argc, argv);
+  const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     cli::validateRunOptions(options);
     cli::refuseOwnOutputs(options, scene.outputFileNames());
     cli::refuseRunShorterThanStep(options, scene.settings().step);
     scene.setRunOptions(options);
     scene.checkOptions();
-  } catch (const CLI::CallForHelp& help) {
-    return app.exit(help);
-  } catch (const CLI::ParseError& error) {
-    std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
-    return exit_code::USAGE;
-  } catch (const UsageError& error) {
-    std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
-    return exit_code::USAGE;
-  }
+  });
+  if (refused) return *refused;
 
   installStopSignalHandlers();
   OdeLibrary ode;
