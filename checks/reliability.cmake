@@ -63,3 +63,12 @@ foreach(_peer bullet_lab mujoco_lab)
                   --scene=test7 --setting=maybe --metrics-json=/dev/null --metrics-json=/nonexistent/m.json
                   --metrics-json=. --no-such-option "--step=0.001 --step=0.002")
 endforeach()
+
+# The lab's inputs and endings: a CMakeCache.txt that is a FIFO, huge,
+# binary or no cache at all; SIGTERM while a program hangs; SIGHUP while the
+# runs go on; a run leaving a FIFO or gigabytes. Each ends at once with its
+# status and a message, leaving no staging folder, runs' folder or program.
+add_test(NAME lab_inputs_checked_and_every_ending_clean
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/scripts/lab_inputs_and_endings_check.sh $<TARGET_FILE_DIR:test2>
+                 ${CMAKE_CURRENT_BINARY_DIR}/lab-inputs)
+set_tests_properties(lab_inputs_checked_and_every_ending_clean PROPERTIES TIMEOUT 600 LABELS lab)

@@ -8,6 +8,12 @@ import subprocess
 import tempfile
 from pathlib import Path
 
+from .inputs import InputError, read_text
+
+# A CMake cache is some tens of KiB; the most a file read here may be.
+MAX_CACHE_BYTES = 16 * 1024 * 1024
+MAX_SMALL_FILE_BYTES = 16 * 1024 * 1024
+
 
 def _first_line(command, cwd=None):
     try:
@@ -26,12 +32,12 @@ def ode_version(build_dir):
             subprocess.run([str(Path(build_dir) / "test2"), "--headless", "--seconds", "0.001",
                             "--sample-interval", "1", "--out-dir", folder],
                            capture_output=True, timeout=60, cwd=folder)
-            text = (Path(folder) / "Test2_output.txt").read_text()
+            text = read_text(Path(folder) / "Test2_output.txt", MAX_SMALL_FILE_BYTES, "test2's output file")
             version = re.search(r"^# ode_version: (.+)$", text, re.M)
             precision = re.search(r"^# ode_precision: (.+)$", text, re.M)
             if version and precision:
                 return f"{version.group(1).strip()}, {precision.group(1).strip()} precision (reported by test2)"
-        except (OSError, subprocess.TimeoutExpired):
+        except (OSError, subprocess.TimeoutExpired, InputError):
             pass
     version = _first_line(["pkg-config", "--modversion", "ode"])
     precision = _first_line(["pkg-config", "--variable=precision", "ode"])
@@ -39,28 +45,35 @@ def ode_version(build_dir):
 
 
 def compiler(build_dir):
-    """The C++ compiler the build used (its CMakeCache), with its version line."""
+    """The C++ compiler the build used (its CMakeCache), with its version
+    line. No cache: "unknown", never a guess. A cache that is not a regular
+    text file of bounded size, or names no compiler, is an InputError: the
+    header would otherwise name a compiler the build did not use."""
     cache = Path(build_dir).parent / "CMakeCache.txt"
+    if not os.path.lexists(cache):
+        return f"unknown (no {cache})"
     path, build_type = None, None
-    if cache.exists():
-        for line in cache.read_text(errors="replace").splitlines():
-            if line.startswith("CMAKE_CXX_COMPILER:"):
-                path = line.split("=", 1)[1].strip()
-            elif line.startswith("CMAKE_BUILD_TYPE:"):
-                build_type = line.split("=", 1)[1].strip()
-    version = _first_line([path or "c++", "--version"])
-    text = f"{version or 'unknown'} ({path or 'c++ on PATH'})"
+    for line in read_text(cache, MAX_CACHE_BYTES, "the build's CMake cache").splitlines():
+        if line.startswith("CMAKE_CXX_COMPILER:"):
+            path = line.split("=", 1)[1].strip()
+        elif line.startswith("CMAKE_BUILD_TYPE:"):
+            build_type = line.split("=", 1)[1].strip()
+    if not path:
+        raise InputError(f"the build's CMake cache {cache} names no C++ compiler (no CMAKE_CXX_COMPILER entry); "
+                         f"is it a CMake cache?")
+    version = _first_line([path, "--version"])
+    text = f"{version or 'unknown version'} ({path})"
     return text + (f", CMAKE_BUILD_TYPE {build_type}" if build_type else "")
 
 
 def cpu():
     model = "unknown"
     try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
+        for line in read_text("/proc/cpuinfo", MAX_SMALL_FILE_BYTES, "the CPU list").splitlines():
             if line.startswith("model name"):
                 model = line.split(":", 1)[1].strip()
                 break
-    except OSError:
+    except InputError:
         pass
     return f"{model}, {os.cpu_count()} cores"
 

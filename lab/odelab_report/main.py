@@ -17,6 +17,7 @@ import traceback
 from pathlib import Path
 
 from . import executors, interrupt, output_folder
+from .inputs import InputError
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 
@@ -75,10 +76,13 @@ def names_help():
 
 def check_build(build_dir, experiments):
     needed = sorted({p for e in experiments for p in e.programs}, key=lambda p: int(p[4:]))
-    missing = [p for p in needed if not os.access(build_dir / p, os.X_OK)]
+    # A regular file: a FIFO or a folder with the x bit passes os.access but
+    # cannot be run (the run would fail as a defect of the lab).
+    missing = [p for p in needed if not ((build_dir / p).is_file() and os.access(build_dir / p, os.X_OK))]
     if missing:
         sys.stderr.write(
-            f"odelab-report: error: no {', '.join(missing)} in {build_dir} (needed by the experiments chosen).\n"
+            f"odelab-report: error: no {', '.join(missing)} in {build_dir} (needed by the experiments chosen; "
+            f"each must be an executable regular file).\n"
             f"Build the programs first, e.g. `cmake -S . -B build && cmake --build build -j`, "
             f"or point --build-dir at the folder that holds them.\n")
         sys.exit(3)
@@ -87,11 +91,17 @@ def check_build(build_dir, experiments):
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
-    stop = interrupt.install()  # Ctrl-C and SIGTERM set a flag; nothing raises mid-way
+    stop = interrupt.install()  # Ctrl-C, SIGTERM, SIGHUP: see interrupt.py
     try:
+        interrupt.start_raising()
         status = _main(argv, stop)
+    except interrupt.Interrupted:  # the finally blocks on the way removed the temporaries
+        status = 1
     except SystemExit as exit_:  # argparse's status 2, check_build's 3
         status = exit_.code if isinstance(exit_.code, int) else 2
+    except InputError as error:  # a file the lab reads is not what it should be
+        sys.stderr.write(f"odelab-report: error: {error}; nothing written\n")
+        status = 2
     except OSError as error:  # an unwritable folder, a full disk: a message, not a traceback
         sys.stderr.write(f"odelab-report: error: {error}; nothing written\n")
         status = 1
@@ -123,7 +133,8 @@ def _main(argv, stop):
     try:
         return _report(args, argv, stop, build_dir, programs, out, executor)
     finally:
-        executor.close()
+        with interrupt.deferred():
+            executor.close()
 
 
 def _report(args, argv, stop, build_dir, programs, out, executor):
@@ -140,19 +151,24 @@ def _report(args, argv, stop, build_dir, programs, out, executor):
                ("all" if not args.partial else ", ".join(e.name for e in args.experiments)))
     header = run_header.collect(build_dir, REPO_ROOT, options)
     header.append(("executor", f"{executor.description}; timed runs on {executor.timing_host} only"))
-    if stop.is_set():
-        return 130
     out.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
-    runs_dir = Path(tempfile.mkdtemp(prefix="odelab-report-runs-"))
+    staging = runs_dir = None
+    keep_runs = False
     try:
+        with interrupt.deferred():  # made and named at once, so the finally below sees them
+            staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
+            runs_dir = Path(tempfile.mkdtemp(prefix="odelab-report-runs-"))
+        interrupt.check()
         staging.chmod(0o755)
         status = _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, executor)
+        keep_runs = status == 1  # a failed experiment: its runs are kept and named
+        return status
     finally:
-        shutil.rmtree(staging, ignore_errors=True)  # gone already when published
-    if status != 1:
-        shutil.rmtree(runs_dir, ignore_errors=True)
-    return status
+        with interrupt.deferred():
+            if staging:
+                shutil.rmtree(staging, ignore_errors=True)  # gone already when published
+            if runs_dir and not keep_runs:
+                shutil.rmtree(runs_dir, ignore_errors=True)
 
 
 def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, executor):
@@ -187,21 +203,25 @@ def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, execu
     # The costliest experiments start first; all run at once, their runs share the slots.
     ordered = sorted(args.experiments, key=lambda e: -e.cost[1 if args.quick else 0])
     threads = [threading.Thread(target=run_one, args=(e,), name=e.name, daemon=True) for e in ordered]
-    progress.start()
-    for thread in threads:
-        thread.start()
-    while any(t.is_alive() for t in threads) and not stop.is_set():
-        stop.wait(0.2)
+    # Signals only set the flag from here to the end of the runs: the threads
+    # start whole and the abort below reaches every run.
+    with interrupt.deferred():
+        try:
+            progress.start()
+            for thread in threads:
+                thread.start()
+            while any(t.is_alive() for t in threads) and not stop.is_set():
+                stop.wait(0.2)
+        finally:
+            if stop.is_set() or any(t.is_alive() for t in threads):
+                runner.abort()
+                interrupt.wait_for(threads, 60)  # the experiments end once their runs fail
+            progress.stop()
+            runner.close()
     if stop.is_set():
-        runner.abort()
-        interrupt.wait_for(threads, 60)  # the experiments end once their runs fail
-        progress.stop()
-        runner.close()
         sys.stderr.write(f"odelab-report: interrupted; the outstanding runs ({executor.description}) "
                          f"were cancelled, nothing written\n")
         return 130
-    progress.stop()
-    runner.close()
     if not failures:
         failures.update(_check_timing_hosts(runner, executor))
     if stop.is_set():
@@ -214,7 +234,8 @@ def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, execu
     if stop.is_set():
         return 130
     try:
-        output_folder.publish(staging, out)  # the signal handlers only set a flag: both renames happen
+        with interrupt.deferred():  # both renames happen, or neither
+            output_folder.publish(staging, out)
     except output_folder.Refused as error:
         sys.stderr.write(f"odelab-report: --out: {error}; nothing written\n")
         return 2

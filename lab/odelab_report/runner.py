@@ -20,6 +20,8 @@ from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 
 from .executors import ExecutorError
+from .executors.process import MAX_PACKED_BYTES
+from .inputs import InputError, check_regular, read_text
 
 # Exit statuses of the test programs (doc/manual.md). 3 and 4 are results
 # (the simulation blew up / ODE reported an error), not mistakes of the lab.
@@ -34,6 +36,10 @@ RETRY_MAX_WALL = 2.0
 RECENT = 15
 BUSY_SHARE = 0.6
 RESULT_STATUSES = (EXIT_OK, EXIT_BLEW_UP, EXIT_ODE_ERROR)
+# What a run may leave in its folder, in all (the bound the remote executors
+# already put on a run's files) and in its metrics JSON.
+MAX_RUN_BYTES = MAX_PACKED_BYTES
+MAX_METRICS_BYTES = 16 * 1024 * 1024
 
 
 class LabError(Exception):
@@ -154,6 +160,7 @@ class Runner:
         self._aborted = False
         self._lost = None  # the executor's failure (a lost scheduler...), once it happened
         self._retry = retry
+        self._children = set()  # the lab's own children outside the executor (--help)
         self.runs = []  # every RunResult, in completion order (for runs.csv)
 
     # ---- public -------------------------------------------------------------
@@ -192,10 +199,25 @@ class Runner:
         with self._lock:
             if program in self._help:
                 return self._help[program]
-        out = subprocess.run([str(self.build_dir / program), "--help"], capture_output=True, text=True, timeout=60)
+        if self._aborted:
+            raise LabError("interrupted")
+        child = subprocess.Popen([str(self.build_dir / program), "--help"], stdout=subprocess.PIPE,
+                                 stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, text=True)
         with self._lock:
-            self._help[program] = out.stdout
-        return out.stdout
+            self._children.add(child)  # abort() ends it too
+        try:
+            text, _ = child.communicate(timeout=60)
+        except subprocess.TimeoutExpired:
+            child.kill()
+            raise LabError(f"{program} --help gave no answer within 60 s") from None
+        finally:
+            with self._lock:
+                self._children.discard(child)
+        if self._aborted:
+            raise LabError("interrupted")
+        with self._lock:
+            self._help[program] = text
+        return text
 
     @property
     def aborted(self):
@@ -205,6 +227,10 @@ class Runner:
         """Stops every running program, here or remote (Ctrl-C); new runs fail at once."""
         self._aborted = True
         self._executor.abort()
+        with self._lock:
+            children = list(self._children)
+        for child in children:
+            child.kill()
 
     def close(self):
         self._pool.shutdown(wait=False, cancel_futures=True)
@@ -252,10 +278,14 @@ class Runner:
         finally:
             self._slots.release(spec.timed)
         rc = done["rc"]
-        stdout = (workdir / "stdout.txt").read_text(errors="replace")
-        stderr = (workdir / "stderr.txt").read_text(errors="replace")
         if self._aborted:
             raise LabError("interrupted")
+        try:
+            check_run_folder(workdir)
+            stdout = read_text(workdir / "stdout.txt", MAX_RUN_BYTES, "the run's standard output")
+            stderr = read_text(workdir / "stderr.txt", MAX_RUN_BYTES, "the run's standard error")
+        except InputError as error:
+            raise LabError(f"{spec.command_line()} --headless (in {workdir}): {error}") from None
         if rc not in RESULT_STATUSES:
             tail = "\n".join(stderr.strip().splitlines()[-5:])
             raise LabError(f"{spec.command_line()} --headless exited with status {rc}"
@@ -264,15 +294,29 @@ class Runner:
         metrics_file = workdir / "metrics.json"
         if metrics_file.exists():
             try:
-                metrics = json.loads(metrics_file.read_text())
-            except ValueError as error:
+                metrics = json.loads(read_text(metrics_file, MAX_METRICS_BYTES, "the metrics file"))
+            except (ValueError, InputError) as error:
                 raise LabError(f"{spec.command_line()} wrote an invalid metrics file (in {workdir}): {error}") from None
+            if not isinstance(metrics, dict):
+                raise LabError(f"{spec.command_line()} wrote a metrics file that is not a JSON object (in {workdir})")
         elif rc == EXIT_OK:
             raise LabError(f"{spec.command_line()} wrote no metrics file (in {workdir})")
         result = RunResult(spec, rc, metrics, stdout, stderr, done["cpu_seconds"], workdir, done["host"])
         with self._lock:
             self.runs.append(result)  # every attempt, kept or not
         return result
+
+
+def check_run_folder(folder):
+    """What a run left is read later by the experiments (its output files):
+    only regular files, not followed through links, MAX_RUN_BYTES in all.
+    Raises InputError."""
+    total = 0
+    for entry in sorted(Path(folder).iterdir()):
+        check_regular(entry, MAX_RUN_BYTES, "the run's file")
+        total += entry.lstat().st_size
+        if total > MAX_RUN_BYTES:
+            raise InputError(f"the run's files exceed {MAX_RUN_BYTES} bytes in all (at {entry.name})")
 
 
 def median(values):
