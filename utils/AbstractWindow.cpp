@@ -238,7 +238,7 @@ bool AbstractWindow::stepOnce() {
   } catch (const OdeError& error) {
     // ODE's own checks often see a blow-up before stateProblem() does (a NaN
     // quaternion fails dxNormalize4): report it with the time and settings.
-    throw OdeError(std::string(error.what()) + " at t=" + formatValue(simulatedTime_) + " s" + settingsInForce());
+    throw OdeError(std::string(error.what()) + momentAndSettings());
   }
   dJointGroupEmpty(contactGroup_);
   contactsLastStep_ = contactsThisStep_;
@@ -255,12 +255,15 @@ bool AbstractWindow::stepOnce() {
   const std::string problem = stateProblem();
   if (!problem.empty()) {
     std::ostringstream reason;
-    reason << "simulation blew up: " << problem << " at t=" << formatValue(simulatedTime_) << " s"
-           << settingsInForce();
+    reason << "simulation blew up: " << problem << momentAndSettings();
     blowUpReason_ = reason.str();
     return false;
   }
   return true;
+}
+
+std::string AbstractWindow::momentAndSettings() const {
+  return " at t=" + formatValue(simulatedTime_) + " s" + settingsInForce();
 }
 
 // " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations, SOR w 1.3)"

@@ -135,6 +135,9 @@ class AbstractWindow {
   int contactsLastStep() const { return contactsLastStep_; }
   double lastStepWallSeconds() const { return lastStepWallSeconds_; }
   const std::string& blowUpReason() const { return blowUpReason_; }
+  // " at t=1.23 s (step 0.001, ERP 0.2, ...)": what every ODE error and
+  // blow-up message ends with, on the main thread or in a pool thread.
+  std::string momentAndSettings() const;
   int bodyCount() const;
   int disabledBodyCount() const;
   // A hash of every body's exact state (the determinism check).

@@ -44,10 +44,20 @@ std::mutex messagesMutex;
 // error is reported and ends the program with the status it has on the
 // main thread (4); a window cannot pause and replay after it, because the
 // pool's other threads and the world are mid-step.
+std::function<std::string()> runMoment;
+std::function<void(const std::string&)> markRunOutputs;
+
 [[noreturn]] void endFromPoolThread(const std::string& message) {
-  const std::string line = "error: " + message +
+  // The same words as the main thread's error, then where it happened.
+  const std::string full = message + (runMoment ? runMoment() : std::string());
+  const std::string line = "error: " + full +
                            " (in one of ODE's island-stepping threads, --threads; ODE cannot go on from an error "
                            "there: the run ends. With --threads 1 the window pauses at the last good state)\n";
+  try {
+    if (markRunOutputs) markRunOutputs("ODE error: " + full);
+  } catch (const std::exception& error) {  // a full disk: said, and the run still ends with 4
+    std::fprintf(stderr, "error: %s\n", error.what());
+  }
   std::fputs(line.c_str(), stderr);
   std::fflush(stderr);
   std::fflush(stdout);
@@ -76,6 +86,12 @@ void OdeMessages::install() {
   dSetErrorHandler(onError);
   dSetDebugHandler(onDebug);
   dSetMessageHandler(onMessage);
+}
+
+void OdeMessages::setRunContext(std::function<std::string()> moment,
+                                std::function<void(const std::string&)> markOutputs) {
+  runMoment = std::move(moment);
+  markRunOutputs = std::move(markOutputs);
 }
 
 void OdeMessages::handleMessage(int number, const std::string& text) {

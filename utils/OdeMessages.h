@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,14 @@ class OdeMessages {
   static std::deque<std::string> recent();
   static long suppressedCount();
   static void clear();
+
+  // What the run adds to an error raised in one of ODE's pool threads, where
+  // no exception can carry it to the main thread: `moment` gives the time
+  // and settings (" at t=... s (step ...)"), `markOutputs` ends the output
+  // files as cut short, before the process ends. Both are called on the
+  // failing pool thread while the main thread waits inside the step.
+  // Empty functions (the default) add nothing.
+  static void setRunContext(std::function<std::string()> moment, std::function<void(const std::string&)> markOutputs);
 
   // Exposed for tests: the handler ODE calls for dMessage.
   static void handleMessage(int number, const std::string& text);

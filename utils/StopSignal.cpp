@@ -26,6 +26,10 @@ void installStopSignalHandlers() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  // The terminal or session went away: a stop like the others (129), not a
+  // kill that leaves the output files unmarked. Ignored stays ignored (nohup).
+  struct sigaction hangup {};
+  if (sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);
 }
 
 int stopSignal() { return received; }
@@ -34,6 +38,7 @@ const char* stopSignalName() {
   switch (received) {
     case SIGINT: return "SIGINT";
     case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
     default: return "a signal";
   }
 }

@@ -2,10 +2,10 @@
 
 namespace odelab {
 
-// SIGINT and SIGTERM ask a run to stop rather than kill it: the step loops
+// SIGINT, SIGTERM and SIGHUP ask a run to stop rather than kill it: the step loops
 // (headless and window) end at the next step, the output files get an
 // "# incomplete: stopped by SIGTERM ..." line, no metrics JSON is written,
-// and the program exits with 128 + the signal's number (130, 143), as a
+// and the program exits with 128 + the signal's number (130, 143, 129), as a
 // shell reports a process killed by it. SDL's own handlers, which would turn
 // the signal into an ordinary window close (status 0), are switched off.
 void installStopSignalHandlers();

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <string>
 
 #include "CommandLine.h"
 #include "ExitCodes.h"
@@ -24,6 +25,44 @@ class OdeLibrary {
   ~OdeLibrary() { dCloseODE(); }
 };
 
+// However a run ends, its output files say so ("# incomplete: ...; why").
+// A failure caught here marks them with its message; an ODE error in a pool
+// thread marks them through OdeMessages; exit() called inside the run by a
+// library (Xlib's, when the display goes away) marks them from an atexit
+// hook. RunEnding holds all three from before the first step to the end.
+AbstractWindow* runningScene = nullptr;
+
+void markCutShort(AbstractWindow& scene, const std::string& why) {
+  try {
+    scene.endOutputs(why);  // once: a file already ended keeps its line
+  } catch (const std::exception& error) {  // a full disk: the file stays without a last line
+    std::cerr << "error: " << error.what() << '\n';
+  }
+}
+
+void markOutputsAtExit() {
+  AbstractWindow* scene = runningScene;
+  runningScene = nullptr;
+  if (scene) markCutShort(*scene, "the program exited inside the run (exit() from a library; see standard error)");
+}
+
+class RunEnding {
+ public:
+  explicit RunEnding(AbstractWindow& scene) {
+    static const bool registered = std::atexit(markOutputsAtExit) == 0;
+    (void)registered;
+    runningScene = &scene;
+    OdeMessages::setRunContext([&scene] { return scene.momentAndSettings(); },
+                               [&scene](const std::string& why) { scene.endOutputs(why); });
+  }
+  ~RunEnding() {
+    runningScene = nullptr;
+    OdeMessages::setRunContext({}, {});
+  }
+  RunEnding(const RunEnding&) = delete;
+  RunEnding& operator=(const RunEnding&) = delete;
+};
+
 int run(AbstractWindow& scene, const RunOptions& options) {
   if (options.headless) {
     scene.initialize(options);
@@ -33,7 +72,10 @@ int run(AbstractWindow& scene, const RunOptions& options) {
   // --events script are ready, so a missing resource leaves no output file.
   const int status = runWindow(scene, options);
   if (stopSignal() != 0) return scene.stoppedBySignal();
-  if (status != exit_code::OK) return status;
+  if (status != exit_code::OK) {
+    markCutShort(scene, "the window run failed with status " + std::to_string(status) + " (see standard error)");
+    return status;
+  }
   scene.endOutputs("");
   // A window run reports too, so scripted sessions can be checked.
   if (!options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);
@@ -67,6 +109,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     return exit_code::RUNTIME_ERROR;
   }
   int status = exit_code::OK;
+  RunEnding ending(scene);
   try {
     status = run(scene, options);
   } catch (const OdeError& error) {
@@ -74,13 +117,16 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     // world down can raise another one from a destructor. Leave without
     // unwinding; output files are flushed row by row already.
     std::cerr << "error: " << error.what() << '\n';
+    markCutShort(scene, std::string("ODE error: ") + error.what());
     std::cout.flush();
     std::exit(exit_code::ODE_ERROR);
   } catch (const UsageError& error) {
     std::cerr << "error: " << error.what() << '\n';
+    markCutShort(scene, error.what());
     status = exit_code::USAGE;
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << '\n';
+    markCutShort(scene, error.what());
     status = exit_code::RUNTIME_ERROR;
   }
   scene.shutdown();

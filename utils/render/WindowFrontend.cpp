@@ -305,7 +305,10 @@ int runWindow(AbstractWindow& scene, const RunOptions& options) {
     std::fprintf(stderr, "error: %s\n", error.what());
     return exit_code::MISSING_RESOURCE;
   } catch (const RenderError& error) {
+    // A frame that cannot be recorded (a full disk), a GL failure: the
+    // output files name it as the reason the run was cut short.
     std::fprintf(stderr, "error: %s\n", error.what());
+    scene.endOutputs(error.what());
     return exit_code::RUNTIME_ERROR;
   }
 }
