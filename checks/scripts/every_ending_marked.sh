@@ -5,7 +5,8 @@
 # whether it finished: the last line is "# complete: ..." or "# incomplete:
 # ...; <why>" (doc/hardening.md, "What you can rely on"). The endings tried:
 #   - SIGHUP to a headless run (the terminal went away): status 129,
-#     "stopped by SIGHUP", no metrics JSON;
+#     "stopped by SIGHUP", no metrics JSON; SIGINT likewise, status 130
+#     (SIGTERM: output_files.sh);
 #   - with "window" (needs Xvfb): --record on a full disk (ulimit -f 4, as
 #     full_disk_screenshot.sh): status 1, the write failure as the reason;
 #   - with "window": the X server goes away mid-run (Xlib then calls exit()
@@ -36,14 +37,17 @@ wait_lines() {
   done
 }
 
-mkdir "$root/hup" && cd "$root/hup" || exit 2
-"$program" --headless --seconds 100000 --metrics-json m.json >/dev/null 2>err.txt &
-pid=$!
-pids=$pid
-wait_lines 50 || fail "SIGHUP: no 50 lines within 60 s"
-kill -HUP "$pid"
-wait "$pid"
-marked "SIGHUP, headless" $? 129 "stopped by SIGHUP"
+for signal_status in HUP:129 INT:130; do
+  signal=${signal_status%:*}
+  mkdir "$root/$signal" && cd "$root/$signal" || exit 2
+  "$program" --headless --seconds 100000 --metrics-json m.json >/dev/null 2>err.txt &
+  pid=$!
+  pids=$pid
+  wait_lines 50 || fail "SIG$signal: no 50 lines within 60 s"
+  kill -"$signal" "$pid"
+  wait "$pid"
+  marked "SIG$signal, headless" $? "${signal_status#*:}" "stopped by SIG$signal"
+done
 
 if [ "$window" = window ]; then
   mkdir -p "$root/record/frames" && cd "$root/record" || exit 2

@@ -8,7 +8,9 @@
 #  - SIGHUP to the lab (in a session of its own) while its runs go on:
 #    status 130, no staging folder, no runs' folder, no run left going;
 #  - a run that leaves a FIFO as its metrics, or 3 GB of standard output:
-#    status 1 naming the file, no traceback, no hang.
+#    status 1 naming the file, no traceback, no hang;
+#  - a run that ends with status 0 and metrics saying it took no step:
+#    status 1, not a result.
 # The "programs" are a wrapper around test2 (FAKE_MODE picks what it does).
 # Usage: lab_inputs_and_endings_check.sh BUILD_TESTS_DIR WORK_DIR [LAB_LAUNCHER]
 set -uo pipefail
@@ -59,6 +61,7 @@ case "\${FAKE_MODE:-}:\$run" in
   hang-header:no | hang-runs:yes) echo \$\$ >>"\$FAKE_PIDS"; exec sleep 300 ;;
   fifo-metrics:yes) mkfifo metrics.json; exit 0 ;;
   huge-stdout:yes) truncate -s 3G /proc/self/fd/1; exit 0 ;;
+  no-step:yes) echo '{"steps": 0, "sim_seconds": 0, "non_finite": 0}' >metrics.json; exit 0 ;;
 esac
 exec "$build/test2" "\$@"
 EOF
@@ -143,5 +146,6 @@ try_run() {  # MODE NEEDLE
 }
 try_run fifo-metrics "metrics.json is a FIFO"
 try_run huge-stdout "stdout.txt is 3221225472 bytes"
+try_run no-step "ended with status 0 but took no step"
 
 [ $failures -eq 0 ] && echo PASS || { echo "$failures failures"; exit 1; }

@@ -301,6 +301,9 @@ class Runner:
                 raise LabError(f"{spec.command_line()} wrote a metrics file that is not a JSON object (in {workdir})")
         elif rc == EXIT_OK:
             raise LabError(f"{spec.command_line()} wrote no metrics file (in {workdir})")
+        if rc == EXIT_OK and metrics.get("steps") == 0:
+            # A run that never happened is no result, however good its figures look.
+            raise LabError(f"{spec.command_line()} ended with status 0 but took no step (in {workdir})")
         result = RunResult(spec, rc, metrics, stdout, stderr, done["cpu_seconds"], workdir, done["host"])
         with self._lock:
             self.runs.append(result)  # every attempt, kept or not
