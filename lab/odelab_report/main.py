@@ -20,6 +20,9 @@ from . import executors, interrupt, output_folder
 from .inputs import InputError
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
+# Set the moment the report is in place, so that a signal landing after it
+# (before the status is returned) still reports it as written.
+_published = threading.Event()
 
 
 def parse_args(argv):
@@ -96,7 +99,7 @@ def main(argv=None):
         interrupt.start_raising()
         status = _main(argv, stop)
     except interrupt.Interrupted:  # the finally blocks on the way removed the temporaries
-        status = 1
+        status = 0 if _published.is_set() else 1
     except SystemExit as exit_:  # argparse's status 2, check_build's 3
         status = exit_.code if isinstance(exit_.code, int) else 2
     except InputError as error:  # a file the lab reads is not what it should be
@@ -236,6 +239,7 @@ def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, execu
     try:
         with interrupt.deferred():  # both renames happen, or neither
             output_folder.publish(staging, out)
+            _published.set()
     except output_folder.Refused as error:
         sys.stderr.write(f"odelab-report: --out: {error}; nothing written\n")
         return 2
