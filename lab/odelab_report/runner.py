@@ -270,6 +270,8 @@ class Runner:
             if self._aborted:
                 raise LabError("interrupted")
             done = self._executor.execute(argv, workdir, spec.timeout, spec.timed)
+        except OSError as error:  # a program that cannot be started here (not executable, gone)
+            raise LabError(f"cannot run {executable}: {error.strerror or error}") from None
         except ExecutorError as error:
             if not self._aborted:
                 with self._lock:
