@@ -7,6 +7,7 @@
 #    status 130 within 10 s and the program ended;
 #  - SIGHUP to the lab (in a session of its own) while its runs go on:
 #    status 130, no staging folder, no runs' folder, no run left going;
+#  - standard error closed early: the report is still written (status 0);
 #  - a run that leaves a FIFO as its metrics, or 3 GB of standard output:
 #    status 1 naming the file, no traceback, no hang;
 #  - a run that ends with status 0 and metrics saying it took no step:
@@ -129,6 +130,18 @@ else
 fi
 no_trace "$work/hup.log" "SIGHUP during the runs"
 nothing_left hup "SIGHUP during the runs"
+
+# Standard error closed after the first line (a pipe to head, a terminal that
+# went away): the messages are lost, the report is not.
+"$lab" "${lab_args[@]}" --out "$work/closed-stderr" 2>&1 | head -n 1 >/dev/null
+status=${PIPESTATUS[0]}
+if [ "$status" -eq 0 ] && [ -f "$work/closed-stderr/RESULTS.md" ]; then
+  ok "standard error closed: status 0, the report written"
+else
+  fail "standard error closed: status $status (the report failed on its progress lines)"
+fi
+rm -rf "${work:?}/closed-stderr"
+nothing_left closed-stderr "standard error closed"
 
 # ---- what a run leaves ------------------------------------------------------------
 try_run() {  # MODE NEEDLE

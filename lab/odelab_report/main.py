@@ -94,6 +94,8 @@ def check_build(build_dir, experiments):
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
+    from .progress import TolerantStream
+    sys.stderr = TolerantStream(sys.stderr)  # a closed standard error loses the messages, not the report
     stop = interrupt.install()  # Ctrl-C, SIGTERM, SIGHUP: see interrupt.py
     try:
         interrupt.start_raising()

@@ -6,19 +6,49 @@ import threading
 import time
 
 
+class TolerantStream:
+    """Standard error that may go away (a closed pipe, a terminal that is
+    gone): what the lab says there is advice, and losing it must not fail
+    or falsify the report. Writes that fail are dropped, silently."""
+
+    def __init__(self, stream):
+        self._stream = stream
+
+    def write(self, text):
+        try:
+            return self._stream.write(text)
+        except (OSError, ValueError):
+            return len(text)
+
+    def flush(self):
+        try:
+            self._stream.flush()
+        except (OSError, ValueError):
+            pass
+
+    def isatty(self):
+        try:
+            return self._stream.isatty()
+        except (OSError, ValueError):
+            return False
+
+    def __getattr__(self, name):
+        return getattr(self._stream, name)
+
+
 def clock(seconds):
     seconds = int(round(seconds))
     return f"{seconds // 60}:{seconds % 60:02d}"
 
 
 class Progress:
-    def __init__(self, experiments, quick, stream=sys.stderr):
+    def __init__(self, experiments, quick, stream=None):
         self._weights = {e.name: e.cost[1 if quick else 0] for e in experiments}
         self._fractions = {e.name: 0.0 for e in experiments}
         self._done = set()
         self._started = time.monotonic()
-        self._stream = stream
-        self._tty = stream.isatty()
+        self._stream = stream or sys.stderr  # looked up now: main() may have wrapped it
+        self._tty = self._stream.isatty()
         self._lock = threading.Lock()
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._loop, daemon=True)
