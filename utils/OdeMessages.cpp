@@ -37,6 +37,10 @@ std::string format(int number, const char* fmt, va_list args) {
 
 std::thread::id mainThread;
 std::mutex messagesMutex;
+// Set by the run (setRunContext): where an error happened, and how to mark
+// the output files.
+std::function<std::string()> runMoment;
+std::function<void(const std::string&)> markRunOutputs;
 
 // An exception cannot leave one of ODE's pool threads (test5 --threads):
 // it reaches no handler there and ends the process with std::terminate
@@ -44,9 +48,6 @@ std::mutex messagesMutex;
 // error is reported and ends the program with the status it has on the
 // main thread (4); a window cannot pause and replay after it, because the
 // pool's other threads and the world are mid-step.
-std::function<std::string()> runMoment;
-std::function<void(const std::string&)> markRunOutputs;
-
 [[noreturn]] void endFromPoolThread(const std::string& message) {
   // The same words as the main thread's error, then where it happened.
   const std::string full = message + (runMoment ? runMoment() : std::string());

@@ -171,4 +171,24 @@ TEST(CommandLine, UnwritableWindowPathsAreRefused) {
   }
 }
 
+// The one parse every program makes (the ODE programs and the peers): go on,
+// 0 after --help, 2 for a refused value or a failed check after the parse.
+TEST(CommandLine, ParseCommandLineGivesTheStatusToEndWith) {
+  auto run = [](std::vector<const char*> argv, bool failCheck) {
+    double step = 0.001;
+    CLI::App app;
+    app.add_option("--step", step)->check(odelab::cli::finiteRange(1e-7, 0.1));
+    odelab::cli::rejectEmptyValues(app);
+    argv.insert(argv.begin(), "peer");
+    return odelab::cli::parseCommandLine(app, static_cast<int>(argv.size()), const_cast<char**>(argv.data()), [&] {
+      if (failCheck) throw odelab::UsageError("--step: refused after the parse");
+    });
+  };
+  EXPECT_FALSE(run({"--step", "0.01"}, false).has_value());
+  EXPECT_EQ(run({"--help"}, false), 0);
+  EXPECT_EQ(run({"--step", "nan"}, false), 2);
+  EXPECT_EQ(run({"--step", ""}, false), 2);
+  EXPECT_EQ(run({"--step", "0.01"}, true), 2);
+}
+
 }  // namespace
