@@ -23,6 +23,10 @@ rm -rf "$work" && mkdir -p "$work/fake/tests" "$work/tmp"
 work=$(cd "$work" && pwd)
 export TMPDIR=$work/tmp FAKE_PIDS=$work/pids
 failures=0
+pid=
+# Whatever stops this check (a failure, CTest's timeout), no lab and no fake
+# program outlives it.
+trap 'for p in ${pid:-} $(cat "$FAKE_PIDS" 2>/dev/null); do kill -KILL "$p" 2>/dev/null; done' EXIT
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 ok() { echo "ok:   $*"; }
 no_trace() { ! grep -q "Traceback\|FATAL" "$1" || fail "$2: a traceback: $(grep -m1 "Traceback\|FATAL" "$1")"; }
