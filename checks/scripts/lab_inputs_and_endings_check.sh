@@ -107,7 +107,7 @@ if wait_started 60; then
   n=0
   while alive "$pid" && [ $n -lt 100 ]; do sleep 0.1; n=$((n + 1)); done
   if alive "$pid"; then fail "SIGTERM during the header: still running after 10 s"; kill -KILL "$pid"; fi
-  wait "$pid"; status=$?
+  wait "$pid"; status=$?; pid=
   [ $status -eq 130 ] && ok "SIGTERM during the header: status 130 after $(($(date +%s) - start)) s" \
     || fail "SIGTERM during the header: status $status"
 else
@@ -127,7 +127,7 @@ if wait_started 120; then
   n=0
   while alive "$pid" && [ $n -lt 150 ]; do sleep 0.1; n=$((n + 1)); done
   if alive "$pid"; then fail "SIGHUP during the runs: still running after 15 s"; kill -KILL "$pid"; fi
-  wait "$pid"; status=$?
+  wait "$pid"; status=$?; pid=
   [ $status -eq 130 ] && ok "SIGHUP during the runs: status 130" || fail "SIGHUP during the runs: status $status"
 else
   fail "no run started within 120 s: $(tail -n 3 "$work/hup.log")"; kill -KILL "$pid"
