@@ -46,7 +46,9 @@ for signal_status in HUP:129 INT:130; do
   wait_lines 50 || fail "SIG$signal: no 50 lines within 60 s"
   kill -"$signal" "$pid"
   wait "$pid"
-  marked "SIG$signal, headless" $? "${signal_status#*:}" "stopped by SIG$signal"
+  status=$?
+  pids=
+  marked "SIG$signal, headless" $status "${signal_status#*:}" "stopped by SIG$signal"
 done
 
 if [ "$window" = window ]; then
@@ -69,7 +71,9 @@ if [ "$window" = window ]; then
   wait_lines 50 || fail "display lost: no 50 lines within 60 s"
   kill -TERM "$server"
   wait "$pid"
-  marked "the display went away" $? 1 "exited inside the run"
+  status=$?
+  wait "$server"
   pids=
+  marked "the display went away" $status 1 "exited inside the run"
 fi
 [ "$failures" = 0 ]
