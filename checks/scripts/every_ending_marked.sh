@@ -12,29 +12,17 @@
 #   - with "window": the X server goes away mid-run (Xlib then calls exit()
 #     itself): status 1, the exit named as the reason.
 program=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") file=$2 window=${3:-}
-root=$(mktemp -d "${TMPDIR:-/tmp}/odelab_every_ending.XXXXXX") || exit 2
-pids=
-trap 'for p in $pids; do kill -KILL "$p" 2>/dev/null; done; rm -rf "$root"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+check_name=every_ending
+. "$(dirname "$0")/output_check_common.sh"
 # marked NAME STATUS EXPECTED-STATUS PATTERN: FILE's last line in the current folder
 marked() {
   last=$(tail -n 1 "$file" 2>/dev/null)
   [ "$2" = "$3" ] || fail "$1: status $2, expected $3"
   case $last in
-    "# incomplete: "*$4*) echo "ok:   $1: status $2, last line '$last'" ;;
+    "# incomplete: "*$4*) ok "$1: status $2, last line '$last'" ;;
     *) fail "$1: last line '$last', expected '# incomplete: ...$4...'" ;;
   esac
   [ -e m.json ] && fail "$1: metrics JSON written for a run that did not finish"
-}
-# Waits until FILE holds at least $1 lines (60 s at most).
-wait_lines() {
-  n=0
-  while [ "$(cat "$file" 2>/dev/null | wc -l)" -lt "$1" ]; do
-    [ "$n" -ge 600 ] && return 1
-    sleep 0.1
-    n=$((n + 1))
-  done
 }
 
 for signal_status in HUP:129 INT:130; do
@@ -43,7 +31,7 @@ for signal_status in HUP:129 INT:130; do
   "$program" --headless --seconds 100000 --metrics-json m.json >/dev/null 2>err.txt &
   pid=$!
   pids=$pid
-  wait_lines 50 || fail "SIG$signal: no 50 lines within 60 s"
+  wait_lines . 50 || fail "SIG$signal: no 50 lines within 60 s"
   kill -"$signal" "$pid"
   wait "$pid"
   status=$?
@@ -68,7 +56,7 @@ if [ "$window" = window ]; then
   DISPLAY=:$(cat display.txt) "$program" --seconds 100000 --no-vsync --metrics-json m.json >/dev/null 2>err.txt &
   pid=$!
   pids="$server $pid"
-  wait_lines 50 || fail "display lost: no 50 lines within 60 s"
+  wait_lines . 50 || fail "display lost: no 50 lines within 60 s"
   kill -TERM "$server"
   wait "$pid"
   status=$?

@@ -12,21 +12,8 @@
 #     by SIGTERM" as FILE's last line, and no metrics JSON;
 #   - with "window" (under xvfb-run), SIGTERM ends a window run the same way.
 program=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") file=$2 window=${3:-}
-root=$(mktemp -d "${TMPDIR:-/tmp}/odelab_output_files.XXXXXX") || exit 2
-pids=
-trap 'for p in $pids; do kill -KILL "$p" 2>/dev/null; done; rm -rf "$root"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-ok() { echo "ok:   $*"; }
-# Waits until FILE in folder $1 holds at least $2 lines (60 s at most).
-wait_lines() {
-  n=0
-  while [ "$(cat "$1/$file" 2>/dev/null | wc -l)" -lt "$2" ]; do
-    [ "$n" -ge 600 ] && return 1
-    sleep 0.1
-    n=$((n + 1))
-  done
-}
+check_name=output_files
+. "$(dirname "$0")/output_check_common.sh"
 
 # A whole run.
 mkdir "$root/whole" && cd "$root/whole" || exit 2
