@@ -26,10 +26,12 @@ void installStopSignalHandlers() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+#ifdef SIGHUP
   // The terminal or session went away: a stop like the others (129), not a
   // kill that leaves the output files unmarked. Ignored stays ignored (nohup).
   struct sigaction hangup {};
   if (sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);
+#endif
 }
 
 int stopSignal() { return received; }
@@ -38,7 +40,9 @@ const char* stopSignalName() {
   switch (received) {
     case SIGINT: return "SIGINT";
     case SIGTERM: return "SIGTERM";
+#ifdef SIGHUP
     case SIGHUP: return "SIGHUP";
+#endif
     default: return "a signal";
   }
 }
