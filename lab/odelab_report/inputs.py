@@ -43,10 +43,13 @@ def _check_info(info, path, limit, what):
 
 def read_bytes(path, limit, what):
     """The contents of the regular file `path`, at most `limit` bytes.
-    O_NONBLOCK: opening a FIFO does not wait for a writer; fstat then
-    refuses it. The read stops at limit + 1 bytes, whatever st_size said
-    (/proc files say 0; a file may grow while it is read)."""
+    Checked before it is opened (opening some devices acts), and again on
+    the open file, in case it was swapped meanwhile; O_NONBLOCK: opening a
+    FIFO put there meanwhile does not wait for a writer. The read stops at
+    limit + 1 bytes, whatever st_size said (/proc files say 0; a file may
+    grow while it is read)."""
     try:
+        _check_info(os.stat(path), path, limit, what)
         fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
     except OSError as error:
         raise InputError(f"cannot read {what} {path}: {error.strerror}") from None
