@@ -84,6 +84,17 @@ def check():
         _raise_once()
 
 
+def close(status):
+    """The final exit status. The stop signals are ignored from here on: one
+    that came during the interpreter's shutdown (which gives the handlers
+    back to the system) would kill the lab with 128 + its number after its
+    report was written. One that came before gives 130 (finish)."""
+    for number in STOP_SIGNALS:
+        if signal.getsignal(number) is _handler:
+            signal.signal(number, signal.SIG_IGN)
+    return finish(status) if _flag.is_set() else status
+
+
 def wait_for(threads, seconds):
     deadline = time.monotonic() + seconds
     for thread in threads:

@@ -110,19 +110,29 @@ def main(argv=None):
     except OSError as error:  # an unwritable folder, a full disk: a message, not a traceback
         sys.stderr.write(f"odelab-report: error: {error}; nothing written\n")
         status = 1
-    if stop.is_set():
-        return interrupt.finish(status)
-    return status
+    except BaseException:  # noqa: BLE001 - once a signal came, what follows is its doing
+        # Libraries turn an exception raised inside them into one of their
+        # own (numpy's import makes Interrupted an ImportError).
+        if not stop.is_set():
+            raise
+        status = 0 if _published.is_set() else 1
+    return interrupt.close(status)
 
 
 def _main(argv, stop):
-    args = parse_args(argv)
-    if stop.is_set():
-        return 130
-    try:
-        import matplotlib
-        del matplotlib
-    except ImportError:
+    # Imports (numpy, matplotlib) wait on nothing outside the lab, and an
+    # exception raised inside them comes out as another error: signals
+    # only set the flag until they are done.
+    with interrupt.deferred():
+        args = parse_args(argv)
+        try:
+            import matplotlib
+            del matplotlib
+            missing_matplotlib = False
+        except ImportError:
+            missing_matplotlib = True
+    interrupt.check()
+    if missing_matplotlib:
         sys.stderr.write("odelab-report: error: matplotlib is missing; install Debian's python3-matplotlib "
                          "(scripts/odelab.sh installs it)\n")
         return 3
