@@ -3,6 +3,8 @@
 #include <csignal>
 #include <string>
 
+#include "Platform.h"
+
 namespace odelab {
 
 namespace {
@@ -20,13 +22,7 @@ extern "C" void onStopSignal(int signal) {
 }
 }  // namespace
 
-void installStopSignalHandlers() {
-  struct sigaction action {};
-  action.sa_handler = onStopSignal;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-}
+void installStopSignalHandlers() { platform::onStopRequest(onStopSignal); }
 
 int stopSignal() { return received; }
 
