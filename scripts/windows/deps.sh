@@ -6,10 +6,10 @@
 #   scripts/windows/deps.sh
 #
 # The prefix is ${XDG_CACHE_HOME:-$HOME/.cache}/odelab/windows-<key>; the
-# key covers the source versions, the compiler's version and this script,
-# so a change to any of them builds a new prefix and a finished one is
-# reused as it is. Needs the mingw-w64 compilers, autoconf, automake,
-# libtool, pkg-config and dpkg-dev (scripts/windows/build.sh installs them).
+# key covers the source versions, the compiler's version and this script's
+# commands (not its comments), so a change to any of them builds a new
+# prefix and a finished one is reused as it is. Needs the mingw-w64 compilers, autoconf, automake,
+# libtool, pkg-config and dpkg-dev (scripts/odelab.sh windows installs them).
 # Environment: JOBS (default 2).
 set -euo pipefail
 
@@ -26,7 +26,7 @@ say() { printf 'windows-deps: %s\n' "$*" >&2; }
 cc=$host-gcc-posix
 cxx=$host-g++-posix
 for tool in "$cc" "$cxx" "$host-ar" "$host-ranlib" autoreconf pkg-config make; do
-  command -v "$tool" >/dev/null || { say "error: $tool is missing (scripts/windows/build.sh installs it)"; exit 1; }
+  command -v "$tool" >/dev/null || { say "error: $tool is missing (scripts/odelab.sh windows installs it)"; exit 1; }
 done
 launcher=()
 command -v ccache >/dev/null && launcher=(ccache)
@@ -43,7 +43,7 @@ src() { # the unpacked folder of one package
 key=$({
   for s in "${sources[@]}"; do basename "$s"; done
   "$cxx" -dumpfullversion
-  cat "${BASH_SOURCE[0]}"
+  grep -v '^[[:space:]]*#' "${BASH_SOURCE[0]}"
 } | sha256sum | cut -c1-12)
 prefix=$cache/windows-$key
 if [ -f "$prefix/.complete" ]; then
