@@ -59,3 +59,11 @@ if(XVFB_RUN)
                        ENVIRONMENT "WINEPREFIX=${_windows_dir}/wine-x11;WINEDEBUG=-all;WINEDLLOVERRIDES=mscoree,mshtml="
                        SKIP_RETURN_CODE 77 TIMEOUT 600 RUN_SERIAL TRUE LABELS windows)
 endif()
+
+# Makefile.win, the thesis's build, as a cross makefile from the same prefix
+# (checks/scripts/windows_makefile.sh).
+add_test(NAME windows_makefile_builds_the_programs
+         COMMAND ${_skip} ${ODELAB_WINDOWS_BUILD_DIR}/tests/test0.exe
+                 sh ${ODELAB_CHECK_SCRIPTS}/windows_makefile.sh ${CMAKE_SOURCE_DIR} ${_windows_dir}/makefile)
+set_tests_properties(windows_makefile_builds_the_programs PROPERTIES FIXTURES_REQUIRED windows_wine
+                     ENVIRONMENT "${_wine_env}" SKIP_RETURN_CODE 77 TIMEOUT 1200 LABELS windows)

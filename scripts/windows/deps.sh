@@ -3,12 +3,13 @@
 # from Debian's source packages, static, into a prefix cached outside the
 # tree, and prints that prefix.
 #
-#   scripts/windows/deps.sh
+#   scripts/windows/deps.sh           builds the prefix if needed, prints it
+#   scripts/windows/deps.sh --built   prints it if it is built, else exits 1
 #
 # The prefix is ${XDG_CACHE_HOME:-$HOME/.cache}/odelab/windows-<key>; the
-# key covers the source versions, the compiler's version and this script's
-# commands (not its comments), so a change to any of them builds a new
-# prefix and a finished one is reused as it is. Needs the mingw-w64 compilers, autoconf, automake,
+# key covers the source versions, the compiler's version and RECIPE below,
+# so a change to any of them builds a new prefix and a finished one is
+# reused as it is. Needs the mingw-w64 compilers, autoconf, automake,
 # libtool, pkg-config and dpkg-dev (scripts/odelab.sh windows installs them).
 # Environment: JOBS (default 2).
 set -euo pipefail
@@ -28,6 +29,9 @@ cxx=$host-g++-posix
 for tool in "$cc" "$cxx" "$host-ar" "$host-ranlib" autoreconf pkg-config make; do
   command -v "$tool" >/dev/null || { say "error: $tool is missing (scripts/odelab.sh windows installs it)"; exit 1; }
 done
+# The build steps' version: raise it whenever a step below changes what is
+# built (a flag, a patch, a library), so the cached prefix is rebuilt.
+RECIPE=1
 launcher=()
 command -v ccache >/dev/null && launcher=(ccache)
 
@@ -43,12 +47,16 @@ src() { # the unpacked folder of one package
 key=$({
   for s in "${sources[@]}"; do basename "$s"; done
   "$cxx" -dumpfullversion
-  grep -v '^[[:space:]]*#' "${BASH_SOURCE[0]}"
+  echo "recipe $RECIPE"
 } | sha256sum | cut -c1-12)
 prefix=$cache/windows-$key
 if [ -f "$prefix/.complete" ]; then
   printf '%s\n' "$prefix"
   exit 0
+fi
+if [ "${1:-}" = --built ]; then
+  say "$prefix is not built"
+  exit 1
 fi
 
 # One build at a time per prefix: a second caller waits for the first.
@@ -65,6 +73,9 @@ trap 'rm -rf "$work"' EXIT
 mkdir -p "$prefix/include" "$prefix/lib/pkgconfig"
 
 export PKG_CONFIG_LIBDIR=$prefix/lib/pkgconfig PKG_CONFIG_PATH=
+# Paths inside the (randomly named) build folder are hashed relative to it,
+# so a compiler cache serves a rebuild of the same sources.
+export CCACHE_BASEDIR=$work
 export CC="${launcher[*]} $cc" CXX="${launcher[*]} $cxx" AR=$host-ar RANLIB=$host-ranlib
 configure_flags=(--host="$host" --prefix="$prefix" --disable-shared --enable-static)
 started=$(date +%s)
