@@ -2,12 +2,16 @@
 # included by CMakeLists.txt after the libraries are found.
 
 # Console programs: SDL's pkg-config asks for -mwindows, a GUI program, whose
-# standard output and error go nowhere; the programs report there.
+# standard output and error go nowhere; the programs report there. It also
+# renames main to SDL_main (-Dmain=SDL_main) for its WinMain to call, which
+# a console program does not need, and which gives a C++ SDL_main where no
+# SDL_main.h declares it: each program's own main is kept.
 foreach(_target PkgConfig::SDL2 PkgConfig::SDL2_TTF PkgConfig::IMGUI)
-  foreach(_property INTERFACE_LINK_OPTIONS INTERFACE_LINK_LIBRARIES)
+  foreach(_property INTERFACE_LINK_OPTIONS INTERFACE_LINK_LIBRARIES INTERFACE_COMPILE_OPTIONS
+                    INTERFACE_COMPILE_DEFINITIONS)
     get_target_property(_flags ${_target} ${_property})
     if(_flags)
-      list(REMOVE_ITEM _flags -mwindows)
+      list(REMOVE_ITEM _flags -mwindows -Dmain=SDL_main main=SDL_main)
       set_target_properties(${_target} PROPERTIES ${_property} "${_flags}")
     endif()
   endforeach()

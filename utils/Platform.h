@@ -6,9 +6,10 @@
 
 // What the operating system does differently, behind one set of calls:
 // PlatformPosix.cpp (Linux and the like) and PlatformWindows.cpp (Windows,
-// built with MinGW-w64); the build compiles one of them. Paths are UTF-8;
-// the Windows side converts them for the wide-character API, and hands
-// paths back with '/' between folders.
+// built with MinGW-w64); the build compiles one of them. Paths are the C
+// library's narrow strings: on Windows in the ANSI code page, as main's
+// arguments come, converted for the wide-character API; paths handed back
+// have '/' between folders.
 namespace odelab::platform {
 
 // The folder separators a path may use: "/" on POSIX, "/\\" on Windows.
