@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 // What the operating system does differently, behind one set of calls:
 // PlatformPosix.cpp (Linux and the like) and PlatformWindows.cpp (Windows,
@@ -65,6 +66,7 @@ struct OutputFile {
   std::FILE* file = nullptr;  // set when refusal is None
   Refusal refusal = Refusal::None;
   std::string why;            // the reason, when refused
+  static OutputFile refused(Refusal refusal, std::string why) { return {nullptr, refusal, std::move(why)}; }
 };
 OutputFile openHeldOutput(const std::string& path);
 

@@ -89,12 +89,8 @@ std::string replaceFile(const std::string& source, const std::string& target) {
 void removeFile(const std::string& path) { unlink(path.c_str()); }
 
 OutputFile openHeldOutput(const std::string& path) {
+  const auto refuse = OutputFile::refused;
   OutputFile out;
-  auto refuse = [&](OutputFile::Refusal refusal, std::string why) {
-    out.refusal = refusal;
-    out.why = std::move(why);
-    return out;
-  };
   // O_NONBLOCK: opening a FIFO must not wait for a reader; O_NOFOLLOW: a
   // planted link fails instead of sending the rows to its target.
   const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666);

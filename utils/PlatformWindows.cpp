@@ -166,12 +166,8 @@ std::string replaceFile(const std::string& source, const std::string& target) {
 void removeFile(const std::string& path) { DeleteFileW(wide(path).c_str()); }
 
 OutputFile openHeldOutput(const std::string& path) {
+  const auto refuse = OutputFile::refused;
   OutputFile out;
-  auto refuse = [&](OutputFile::Refusal refusal, std::string why) {
-    out.refusal = refusal;
-    out.why = std::move(why);
-    return out;
-  };
   // The link itself is opened, never its target, and looked at before a
   // byte is written. Sharing reading only: a second writer's open fails
   // with a sharing violation, and readers still see the rows.
