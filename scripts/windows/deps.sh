@@ -18,7 +18,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 jobs=${JOBS:-2}
 host=x86_64-w64-mingw32
-cache=${XDG_CACHE_HOME:-$HOME/.cache}/odelab
+cache=${XDG_CACHE_HOME:-${HOME:?HOME is not set}/.cache}/odelab
 
 say() { printf 'windows-deps: %s\n' "$*" >&2; }
 
