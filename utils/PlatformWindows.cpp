@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <csignal>
 #include <stdexcept>
 
@@ -75,11 +76,25 @@ HANDLE openForInspection(const std::string& path) {
                      nullptr, OPEN_EXISTING, FILE_FLAG_BACKUP_SEMANTICS | FILE_FLAG_OPEN_REPARSE_POINT, nullptr);
 }
 
+// CON, PRN, AUX, NUL, COM1-9 and LPT1-9, with any extension, name devices in
+// every folder; opening one may fail (CON without a console) yet it is no file.
+bool isReservedDeviceName(const std::string& path) {
+  const auto slash = path.find_last_of(FOLDER_SEPARATORS);
+  std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+  name = name.substr(0, name.find('.'));
+  while (!name.empty() && name.back() == ' ') name.pop_back();
+  for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if (name == "CON" || name == "PRN" || name == "AUX" || name == "NUL") return true;
+  return name.size() == 4 && (name.rfind("COM", 0) == 0 || name.rfind("LPT", 0) == 0) && name[3] >= '1' &&
+         name[3] <= '9';
+}
+
 std::atomic<unsigned> uniqueCounter{0};
 
 }  // namespace
 
 FileKind fileKind(const std::string& path) {
+  if (isReservedDeviceName(path)) return FileKind::Device;
   const HANDLE handle = openForInspection(path);
   if (handle == INVALID_HANDLE_VALUE) {
     const DWORD error = GetLastError();
