@@ -58,10 +58,12 @@ set_tests_properties(windows_test2_files_whole_held_and_replaced PROPERTIES FIXT
 # Windows' own kinds of file that are not regular files: devices by reserved
 # name in any folder (NUL, CON, COM1, with or without an extension) and a
 # folder; refused with status 2 before the run, as /dev/null is on Linux.
+# And the program's own output file named in other letter case, which on
+# Windows is the same file.
 add_test(NAME windows_test2_refuses_metrics_json_devices_and_folders
          COMMAND ${_skip} ${ODELAB_WINDOWS_BUILD_DIR}/tests/test2.exe sh ${ODELAB_CHECK_SCRIPTS}/refusals.sh headless
                  ${_windows_dir}/test2.sh 2 --metrics-json=NUL --metrics-json=CON --metrics-json=com1.json
-                 --metrics-json=C:/windows)
+                 --metrics-json=C:/windows --metrics-json=test2_OUTPUT.txt)
 set_tests_properties(windows_test2_refuses_metrics_json_devices_and_folders PROPERTIES FIXTURES_REQUIRED windows_wine
                      ENVIRONMENT "${_wine_env}" SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS windows)
 
