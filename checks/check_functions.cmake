@@ -47,6 +47,10 @@ function(odelab_refusals program name mode status)
   endif()
   set_tests_properties(${program}_${name} PROPERTIES TIMEOUT 600 SKIP_RETURN_CODE 77 ENVIRONMENT "${environment}"
                        LABELS hardening)
+  # Each program's own bad values, run again on its Windows build (windows.cmake).
+  if(name STREQUAL "refuses_bad_options")
+    set_property(GLOBAL PROPERTY ODELAB_BAD_OPTIONS_${program} "${R_UNPARSED_ARGUMENTS}")
+  endif()
 endfunction()
 
 # odelab_window_refusals(PROGRAM): a window run that cannot start is refused
@@ -79,6 +83,8 @@ function(odelab_determinism program)
            COMMAND sh ${ODELAB_CHECK_SCRIPTS}/determinism.sh $<TARGET_FILE:${program}> ${D_OTHER_SEED}
                    ${D_UNPARSED_ARGUMENTS})
   set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS hardening)
+  # The same short run, compared with the program's Windows build (windows.cmake).
+  set_property(GLOBAL PROPERTY ODELAB_SHORT_RUN_${program} "${D_UNPARSED_ARGUMENTS}")
 endfunction()
 
 # odelab_interrupted_output(PROGRAM HOW FILE COLUMNS): PROGRAM's output FILE

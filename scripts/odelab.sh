@@ -5,6 +5,8 @@
 #                                             in a window; with no display, say so and run it headless
 #   scripts/odelab.sh test                    install what is missing, build, run the sanitizer check
 #                                             (checks/sanitize.sh) and the whole CTest suite
+#   scripts/odelab.sh windows                 install MinGW-w64 and Wine, cross-build the programs for
+#                                             Windows into build-windows/ (doc/building-on-windows.md)
 #
 # Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
 set -euo pipefail
@@ -31,11 +33,20 @@ packages=(
   python3-distributed munge slurmctld slurmd slurm-client
 )
 
+# The Windows cross-build (scripts/windows/) and its checks under Wine: the
+# MinGW-w64 compilers, the autotools and dpkg-source for the libraries'
+# Debian sources, Wine to run the programs.
+windows_packages=(
+  g++-mingw-w64-x86-64-posix autoconf automake libtool dpkg-dev pkg-config make
+  wine wine64
+)
+
 say() { printf 'odelab: %s\n' "$*" >&2; }
 
-install_missing() {
-  local missing=()
-  for p in "${packages[@]}"; do
+install_missing() {  # install_missing [PACKAGE...] (default: the packages above)
+  local missing=() wanted=("$@")
+  [ $# -gt 0 ] || wanted=("${packages[@]}")
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
@@ -83,9 +94,17 @@ case "$command" in
     fi
     exit "$status"
     ;;
+  windows)
+    install_missing "${windows_packages[@]}"
+    exec "$root/scripts/windows/build.sh"
+    ;;
   test)
     install_missing
+    install_missing "${windows_packages[@]}"
     build
+    # The programs cross-built for Windows, which the label `windows` runs
+    # under Wine.
+    JOBS=$jobs "$root/scripts/windows/build.sh"
     # The unit tests and a short run of every program under AddressSanitizer
     # and UndefinedBehaviorSanitizer, in build-sanitize/ (about 6 minutes
     # from scratch on 2 cores).
@@ -94,7 +113,7 @@ case "$command" in
     exec ctest --output-on-failure -j "$jobs"
     ;;
   *)
-    sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+    sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
     case "$command" in -h | --help) exit 0 ;; esac
     [ -n "$command" ] && say "error: unknown command '$command'"
     exit 2

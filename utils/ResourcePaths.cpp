@@ -1,18 +1,13 @@
 #include "ResourcePaths.h"
 
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
-#include <cerrno>
-#include <cstring>
-#include <stdexcept>
-#include <unistd.h>
-
-#include <climits>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+
+#include "Platform.h"
 
 // CMake defines the source tree's root so that programs run from the build
 // directory find shaders without installing them, the build folder so that
@@ -55,8 +50,8 @@ std::string explicitChoice(const ResourceSearch& search) {
 // program's; the path itself when it does not exist.
 std::string resolved(const std::string& path) {
   if (path.empty()) return path;
-  char buffer[PATH_MAX];
-  return ::realpath(path.c_str(), buffer) ? std::string(buffer) : path;
+  const std::string canonical = platform::canonicalPath(path);
+  return canonical.empty() ? path : canonical;
 }
 
 ResourceSearch realSearch(const std::string& option, const char* environmentName) {
@@ -114,31 +109,8 @@ bool isReadableFile(const std::string& path) {
 }
 
 std::string readSmallRegularFile(const std::string& path, std::size_t maxBytes) {
-  // O_NONBLOCK: a FIFO is refused, not waited on; the size is read from the
-  // open file, so what is checked is what is read.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw std::runtime_error(path + ": " + std::strerror(errno));
-  struct stat info {};
-  std::string why;
-  if (::fstat(fd, &info) != 0)
-    why = std::strerror(errno);
-  else if (!S_ISREG(info.st_mode))
-    why = "not a regular file";
-  else if (static_cast<unsigned long long>(info.st_size) > maxBytes)
-    why = "larger than " + std::to_string(maxBytes) + " bytes";
   std::string bytes;
-  if (why.empty()) {
-    bytes.resize(static_cast<std::size_t>(info.st_size));
-    std::size_t got = 0;
-    while (got < bytes.size()) {
-      const ssize_t n = ::read(fd, &bytes[got], bytes.size() - got);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      got += static_cast<std::size_t>(n);
-    }
-    if (got != bytes.size()) why = "could not be read whole";
-  }
-  ::close(fd);
+  const std::string why = platform::readRegularFile(path, maxBytes, bytes);
   if (!why.empty()) throw std::runtime_error(path + ": " + why);
   return bytes;
 }
@@ -166,13 +138,10 @@ ResourceLookup findFont(const std::string& option) {
 }
 
 std::string executableDirectory() {
-  std::string buffer(4096, '\0');
-  const ssize_t length = ::readlink("/proc/self/exe", buffer.data(), buffer.size());
-  if (length <= 0 || static_cast<std::size_t>(length) >= buffer.size()) return "";
-  buffer.resize(static_cast<std::size_t>(length));
-  const std::size_t slash = buffer.rfind('/');
+  const std::string program = platform::executablePath();
+  const std::size_t slash = program.rfind('/');
   if (slash == std::string::npos) return "";
-  return slash == 0 ? "/" : buffer.substr(0, slash);
+  return slash == 0 ? "/" : program.substr(0, slash);
 }
 
 }  // namespace odelab

@@ -77,7 +77,7 @@ ResourceLookup findFirst(const std::vector<std::string>& candidates,
 ResourceLookup findShaderDir(const std::string& option);
 ResourceLookup findFont(const std::string& option);
 
-// Directory of the running executable (from /proc/self/exe); empty if unknown.
+// Directory of the running executable (platform::executablePath); empty if unknown.
 std::string executableDirectory();
 
 }  // namespace odelab

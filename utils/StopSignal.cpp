@@ -3,6 +3,8 @@
 #include <csignal>
 #include <string>
 
+#include "Platform.h"
+
 namespace odelab {
 
 namespace {
@@ -20,19 +22,7 @@ extern "C" void onStopSignal(int signal) {
 }
 }  // namespace
 
-void installStopSignalHandlers() {
-  struct sigaction action {};
-  action.sa_handler = onStopSignal;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-#ifdef SIGHUP
-  // The terminal or session went away: a stop like the others (129), not a
-  // kill that leaves the output files unmarked. Ignored stays ignored (nohup).
-  struct sigaction hangup {};
-  if (sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);
-#endif
-}
+void installStopSignalHandlers() { platform::onStopRequest(onStopSignal); }
 
 int stopSignal() { return received; }
 
