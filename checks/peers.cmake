@@ -81,3 +81,84 @@ set_tests_properties(${ODELAB_PEER_CHECKS} PROPERTIES LABELS peers)
 odelab_check(peers_refuse_unknown_scene bullet_lab STATUS 2 ARGS --scene test7)
 odelab_check(peers_refuse_mujoco_ccd mujoco_lab STATUS 2 ARGS --scene test10 --ccd)
 set_tests_properties(peers_refuse_unknown_scene peers_refuse_mujoco_ccd PROPERTIES LABELS peers)
+
+# ---- the web peers (peers/wasm): Havok, Jolt and Rapier in Node.js ----------
+# Left out where node is missing or `npm ci` has not run in peers/wasm
+# (peers/CMakeLists.txt says which at configure time).
+if(ODELAB_WEB_PEERS_READY)
+  set(ODELAB_WEB_CHECKS)
+  # odelab_web_check(NAME ENGINE [STATUS n] EXPECT ... ARGS ...): as
+  # odelab_check, on the launcher build/peers/<engine>_lab.
+  function(odelab_web_check name engine)
+    cmake_parse_arguments(C "" "STATUS" "EXPECT;ARGS" ${ARGN})
+    set(status_args)
+    if(DEFINED C_STATUS)
+      set(status_args --status ${C_STATUS})
+    endif()
+    set(dir ${CMAKE_CURRENT_BINARY_DIR}/runs/${name})
+    file(MAKE_DIRECTORY ${dir})
+    add_test(NAME ${name} COMMAND expect_metrics ${status_args} ${C_EXPECT} -- ${CMAKE_BINARY_DIR}/peers/${engine}_lab
+                                  ${C_ARGS} WORKING_DIRECTORY ${dir})
+    set_tests_properties(${name} PROPERTIES LABELS peers)
+  endfunction()
+
+  foreach(_engine ${ODELAB_WEB_PEERS})
+    set(_lab ${CMAKE_BINARY_DIR}/peers/${_engine}_lab)
+    # The same metrics twice in a row (every metric but the timings, exactly):
+    # the bounce (contacts, 5 s) and one launch at the wall.
+    add_test(NAME peers_${_engine}_repeats_test9
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_repeat.py ${_lab} --scene test9 --seconds 5)
+    add_test(NAME peers_${_engine}_repeats_test10
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_repeat.py ${_lab} --scene test10
+                     --velocity 300 --setting best)
+    # Bad input: status 2 and no metrics file, whatever was wrong.
+    odelab_web_check(peers_${_engine}_refuses_nan_step ${_engine} STATUS 2 ARGS --step nan)
+    odelab_web_check(peers_${_engine}_refuses_zero_length_run ${_engine} STATUS 2 ARGS --seconds 0)
+    odelab_web_check(peers_${_engine}_refuses_run_shorter_than_a_step ${_engine} STATUS 2 ARGS --seconds 0.0004)
+    odelab_web_check(peers_${_engine}_refuses_unknown_scene ${_engine} STATUS 2 ARGS --scene test0)
+    odelab_web_check(peers_${_engine}_refuses_unknown_option ${_engine} STATUS 2 ARGS --erp 0.2)
+    # One source of truth: the constants read from the C++ header build the
+    # same scene as the ODE programs, to float32's rounding (1e-6 relative).
+    foreach(_row "test2;energy_start_J;--seconds=0.01" "test8;start_length_m;--seconds=0.01"
+                 "test9;start_height_m,ball_radius_m;--seconds=0.01" "test4;big_mass;--seconds=0.01"
+                 "test10;geometric_prediction,guaranteed_stop_velocity;--velocity=50")
+      list(GET _row 0 _scene)
+      list(GET _row 1 _metrics)
+      list(GET _row 2 _args)
+      add_test(NAME peers_same_scene_${_engine}_${_scene}
+               COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_same_scene.py --tolerance=1e-6 ${_metrics}
+                       $<TARGET_FILE:${_scene}> ${_lab} ${_scene} ${_args})
+      list(APPEND ODELAB_WEB_CHECKS peers_same_scene_${_engine}_${_scene})
+    endforeach()
+    list(APPEND ODELAB_WEB_CHECKS peers_${_engine}_repeats_test9 peers_${_engine}_repeats_test10)
+  endforeach()
+
+  # Physical facts, each measured first (step 0.001 unless said).
+  # Havok damps rotation by 0.1 by default: the pendulum loses 9.9% of its
+  # energy in 20 s; without the damping and with the solver tuned for the
+  # step it keeps it within 2% (measured 1.2%, float32).
+  odelab_web_check(peers_havok_default_damping_drains havok EXPECT energy_drift<-0.05 ARGS --scene test2 --seconds 20)
+  odelab_web_check(peers_havok_pendulum_energy havok EXPECT energy_max_deviation<0.02
+                   ARGS --scene test2 --seconds 20 --setting best)
+  # Havok's speculative contacts (always on) stop a cube at 2000 m/s, eight
+  # times what the wall's thickness allows a discrete step (250 m/s).
+  odelab_web_check(peers_havok_speculative_stops havok EXPECT stopped==1 ARGS --scene test10 --velocity 2000)
+  # Jolt damps 0.05 by default: 25% of the pendulum's energy gone in 20 s.
+  odelab_web_check(peers_jolt_default_damping_drains jolt EXPECT energy_drift<-0.1 ARGS --scene test2 --seconds 20)
+  # Jolt with restitution at any speed and more iterations bounces 20 times
+  # with the 20th apex within 1e-5 of the first (measured 1.0e-6: float32).
+  odelab_web_check(peers_jolt_exact_bounce jolt EXPECT apex_error_20<1e-5 bounces>=20
+                   ARGS --scene test9 --seconds 21 --setting best)
+  # Jolt's LinearCast sweep stops a cube at 5000 m/s that passes without it.
+  odelab_web_check(peers_jolt_wall_passed jolt EXPECT passed_through==1 ARGS --scene test10 --velocity 5000)
+  odelab_web_check(peers_jolt_ccd_stops jolt EXPECT stopped==1 ARGS --scene test10 --velocity 5000 --ccd)
+  # Rapier (no damping, 4 iterations) keeps the pendulum's energy within 0.5%
+  # over 20 s (measured 0.30%).
+  odelab_web_check(peers_rapier_pendulum_energy rapier EXPECT energy_max_deviation<5e-3 ARGS --scene test2 --seconds 20)
+  # Rapier without CCD lets a cube at 250 m/s through; its soft CCD stops it.
+  odelab_web_check(peers_rapier_wall_passed rapier EXPECT passed_through==1 ARGS --scene test10 --velocity 250)
+  odelab_web_check(peers_rapier_ccd_stops rapier EXPECT stopped==1 ARGS --scene test10 --velocity 250 --ccd)
+  # Havok has no CCD switch: --ccd is refused rather than ignored.
+  odelab_web_check(peers_havok_refuses_ccd havok STATUS 2 ARGS --scene test10 --ccd)
+  set_tests_properties(${ODELAB_WEB_CHECKS} PROPERTIES LABELS peers)
+endif()

@@ -85,6 +85,13 @@ case "$command" in
     ;;
   test)
     install_missing
+    # The web peers (peers/wasm, doc/peers.md): Havok, Jolt and Rapier from
+    # the npm registry, pinned by the lockfile; offline after this.
+    if command -v node >/dev/null && command -v npm >/dev/null; then
+      (cd "$root/peers/wasm" && npm ci --no-audit --no-fund --loglevel=error)
+    else
+      say "no node/npm: the web peers (Havok, Jolt, Rapier) and their checks are skipped"
+    fi
     build
     # The unit tests and a short run of every program under AddressSanitizer
     # and UndefinedBehaviorSanitizer, in build-sanitize/ (about 6 minutes
