@@ -160,5 +160,21 @@ if(ODELAB_WEB_PEERS_READY)
   odelab_web_check(peers_rapier_ccd_stops rapier EXPECT stopped==1 ARGS --scene test10 --velocity 250 --ccd)
   # Havok has no CCD switch: --ccd is refused rather than ignored.
   odelab_web_check(peers_havok_refuses_ccd havok STATUS 2 ARGS --scene test10 --ccd)
+
+  # The measurement rules, written in C++ for the C++ peers and in JavaScript
+  # for the web peers, give the same metrics on the same recorded trajectory
+  # (peers/check_parity.py): each scene once, on an engine and setting where
+  # the rule has something to decide (apexes, a fall, a pass and a stop).
+  foreach(_row "havok;test2;default;0.001;5" "rapier;test8;best;0.001;5" "jolt;test9;best;0.001;21"
+               "rapier;test4;default;0.001;2" "rapier;test10;default;0.001;0;250" "jolt;test10;default;0.001;0;300")
+    list(GET _row 0 _engine)
+    list(GET _row 1 _scene)
+    string(REPLACE ";" "_" _name "${_row}")
+    string(REPLACE "." "" _name "${_name}")
+    add_test(NAME peers_rules_parity_${_name}
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_parity.py ${ODELAB_NODE}
+                     $<TARGET_FILE:replay_lab> ${_row})
+    list(APPEND ODELAB_WEB_CHECKS peers_rules_parity_${_name})
+  endforeach()
   set_tests_properties(${ODELAB_WEB_CHECKS} PROPERTIES LABELS peers)
 endif()
