@@ -9,6 +9,22 @@
 
 namespace odelab::scene {
 
+// ---- test1: Jumping Balls ----------------------------------------------------
+namespace test1 {
+// Ball i of BALL_COUNT has restitution i / (BALL_COUNT - 1), from 0 to 1.
+constexpr int BALL_COUNT = 50;
+constexpr double BALL_RADIUS = 0.15;
+constexpr double BALL_MASS = 1.0;          // kg
+constexpr double DROP_HEIGHT = 7.0;        // centre above the ground
+constexpr double SPACING = 0.4;            // m along x (proposed)
+constexpr double BOUNCE_VELOCITY = 0.01;   // m/s: slower impacts do not bounce (thesis)
+constexpr double GRAVITY_FACTOR = 0.25;    // x SURFACE_GRAVITY (thesis)
+constexpr double MEASURED_FROM_BOUNCE = 0.1;  // balls with e below this are left out of max_rebound_error
+constexpr double REST_SPEED = 1e-3;        // m/s: a ball slower than this ...
+constexpr double REST_CLEARANCE = 1e-3;    // m: ... and this close to the ground is at rest
+constexpr double RUN_SECONDS = 15.0;       // the e = 1 ball's second apex comes at 11.8 s
+}  // namespace test1
+
 // ---- test2: Pendulum ---------------------------------------------------------
 namespace test2 {
 // The pendulum shared with test8 (tests/shared/PendulumRig.h builds it): a

@@ -16,6 +16,7 @@
 const fs = require('fs');
 const { scene, SURFACE_GRAVITY } = require('./constants');
 const { pendulumMass, kineticEnergy, stackReadout } = require('./rigs');
+const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;  // m/s and rad/s: far beyond the scan's 100 000 m/s
 const GROUND_SIZE = 200;     // m across, 10 m deep, top face at y = 0
@@ -70,10 +71,12 @@ class World {
     this.owned.push(id);
     return id;
   }
-  restitution(shape, value) {
+  // Friction as Havok's default (0.5); `combine`: how Havok joins two
+  // shapes' restitutions (its default: the geometric mean).
+  restitution(shape, value, combine = 'GEOMETRIC_MEAN') {
     const HK = this.HK;
     check(HK.HP_Shape_SetMaterial(shape, [0.5, 0.5, value, HK.MaterialCombine.GEOMETRIC_MEAN,
-      HK.MaterialCombine.GEOMETRIC_MEAN]), 'HP_Shape_SetMaterial');
+      HK.MaterialCombine[combine]]), 'HP_Shape_SetMaterial');
   }
   ground() {
     return this.body(this.box([GROUND_SIZE, 10, GROUND_SIZE]), 0, [0, -5, 0]);
@@ -143,6 +146,30 @@ function ball(HK, options) {
   return { step: () => world.step(), centre: () => world.position(body) };
 }
 
+// test1: fifty balls, ball i with restitution i/49, over the ground box. The
+// ground's restitution is 1 and both combine by minimum, so each contact has
+// the ball's own (the geometric mean would give sqrt(e)).
+function balls(HK, options) {
+  const t = scene.test1;
+  const world = new World(HK, t.GRAVITY_FACTOR * SURFACE_GRAVITY, options);
+  const groundShape = world.box([GROUND_SIZE, 10, GROUND_SIZE]);
+  world.restitution(groundShape, 1, 'MINIMUM');
+  world.body(groundShape, 0, [0, -5, 0]);
+  const bodies = [], bounces = [];
+  for (let i = 0; i < t.BALL_COUNT; ++i) {
+    const { position, bounce } = ballLayout(i);
+    const shape = world.sphere(t.BALL_RADIUS);
+    world.restitution(shape, bounce, 'MINIMUM');
+    bodies.push(world.body(shape, t.BALL_MASS, position));
+    bounces.push(bounce);
+  }
+  return {
+    count: bodies.length, bounceVelocity: NaN,  // Havok states no restitution threshold
+    bounce: (i) => bounces[i], step: () => world.step(), centre: (i) => world.position(bodies[i]),
+    speed: (i) => Math.hypot(...world.velocity(bodies[i])),
+  };
+}
+
 // test4: the big cube on the small cube on the platform.
 function stack(HK, bigMass, options) {
   const t = scene.test4;
@@ -174,8 +201,9 @@ function settingText(options) {
   let text = 'HP_World_Step(h), speed limit raised to 1e9, sleeping off, speculative contacts (always on); ';
   text += best ? 'ideal step time h, angular damping 0' : "Havok's defaults (ideal step time 1/60 s, angular damping 0.1)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both shapes (geometric mean: 1.0), ground a 200 m box';
+  if (options.scene === 'test1') text += "; each ball's restitution, the ground's 1.0, combined by minimum; ground a 200 m box";
   if (options.scene === 'test10') text += '; ground a 200 m box';
   return text;
 }
 
-module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, pendulum, ball, stack, launch };
+module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, balls, pendulum, ball, stack, launch };

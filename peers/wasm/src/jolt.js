@@ -15,6 +15,7 @@
 // continuous collision; also --ccd).
 const { scene, SURFACE_GRAVITY } = require('./constants');
 const { pendulumMass, kineticEnergy, stackReadout } = require('./rigs');
+const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;
 const DEFAULT_CONVEX_RADIUS = 0.05;
@@ -154,6 +155,25 @@ function ball(Jolt, options) {
   return { step: () => world.step(), centre: () => world.position(body) };
 }
 
+// test1: Jolt combines restitutions by maximum: the ground's is 0, so each
+// contact has the ball's own.
+function balls(Jolt, options) {
+  const t = scene.test1;
+  const world = new World(Jolt, t.GRAVITY_FACTOR * SURFACE_GRAVITY, options);
+  world.body(world.plane(), 0, [0, 0, 0], { restitution: 0 });
+  const bodies = [], bounces = [];
+  for (let i = 0; i < t.BALL_COUNT; ++i) {
+    const { position, bounce } = ballLayout(i);
+    bodies.push(world.body(world.sphere(t.BALL_RADIUS), t.BALL_MASS, position, { restitution: bounce }));
+    bounces.push(bounce);
+  }
+  return {
+    count: bodies.length, bounceVelocity: world.system.GetPhysicsSettings().mMinVelocityForRestitution,
+    bounce: (i) => bounces[i], step: () => world.step(), centre: (i) => world.position(bodies[i]),
+    speed: (i) => Math.hypot(...world.velocity(bodies[i])),
+  };
+}
+
 function stack(Jolt, bigMass, options) {
   const t = scene.test4;
   const world = new World(Jolt, SURFACE_GRAVITY, options);
@@ -187,8 +207,9 @@ function settingText(options) {
   text += best ? 'damping 0, 50 velocity / 10 position iterations, restitution at any speed'
     : "Jolt's defaults (damping 0.05 linear and angular, 10 velocity / 2 position iterations, no restitution below 1 m/s)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both bodies (maximum: 1.0), ground a plane';
+  if (options.scene === 'test1') text += "; each ball's restitution, the ground's 0 (maximum: the ball's), ground a plane";
   if (options.scene === 'test10') text += options.ccd || best ? '; cube swept (motion quality LinearCast)' : '; cube not swept (Discrete)';
   return text;
 }
 
-module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, pendulum, ball, stack, launch };
+module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, balls, pendulum, ball, stack, launch };

@@ -12,7 +12,7 @@ const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 const lround = (x) => Math.sign(x) * Math.round(Math.abs(x));
 
 function defaultSeconds(name) {
-  return { test2: scene.test2.RUN_SECONDS, test8: scene.test8.RUN_SECONDS, test9: scene.test9.RUN_SECONDS,
+  return { test1: scene.test1.RUN_SECONDS, test2: scene.test2.RUN_SECONDS, test8: scene.test8.RUN_SECONDS, test9: scene.test9.RUN_SECONDS,
     test4: scene.test4.RUN_SECONDS }[name] ?? 0;
 }
 

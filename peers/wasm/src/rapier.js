@@ -16,6 +16,7 @@
 // does not stop it at a thin static wall, the predictive contact does.
 const { scene, SURFACE_GRAVITY } = require('./constants');
 const { pendulumMass, kineticEnergy, stackReadout } = require('./rigs');
+const { ballLayout } = require('./rebound');
 
 const BEST_ITERATIONS = 50;
 const GROUND_SIZE = 200;  // m across, 10 m deep, top face at y = 0
@@ -45,7 +46,7 @@ class World {
   }
   // mass 0: fixed. `mass` {mass, inertia, centre} sets the body's mass
   // properties and makes its colliders massless; a number gives the collider that mass.
-  body(colliders, mass, position, { restitution, configure } = {}) {
+  body(colliders, mass, position, { restitution, combine, configure } = {}) {
     const R = this.R;
     let desc = (mass ? R.RigidBodyDesc.dynamic() : R.RigidBodyDesc.fixed())
       .setTranslation(...position).setCanSleep(false);
@@ -61,6 +62,7 @@ class World {
       if (typeof mass === 'number' && mass > 0) c = c.setMass(mass);
       else if (mass) c = c.setDensity(0);
       if (restitution !== undefined) c = c.setRestitution(restitution);
+      if (combine !== undefined) c = c.setRestitutionCombineRule(combine);
       this.world.createCollider(c, body);
     }
     return body;
@@ -109,6 +111,27 @@ function ball(R, options) {
   return { step: () => world.step(), centre: () => vec(body.translation()) };
 }
 
+// test1: Rapier averages restitutions unless told otherwise; the balls'
+// colliders combine by maximum against the ground's 0, so each contact has
+// the ball's own (a collider pair uses the larger of the two rules).
+function balls(R, options) {
+  const t = scene.test1;
+  const world = new World(R, t.GRAVITY_FACTOR * SURFACE_GRAVITY, options);
+  world.body([[R.ColliderDesc.cuboid(GROUND_SIZE / 2, 5, GROUND_SIZE / 2)]], 0, [0, -5, 0], { restitution: 0 });
+  const bodies = [], bounces = [];
+  for (let i = 0; i < t.BALL_COUNT; ++i) {
+    const { position, bounce } = ballLayout(i);
+    bodies.push(world.body([[R.ColliderDesc.ball(t.BALL_RADIUS)]], t.BALL_MASS, position,
+      { restitution: bounce, combine: R.CoefficientCombineRule.Max }));
+    bounces.push(bounce);
+  }
+  return {
+    count: bodies.length, bounceVelocity: 0,  // Rapier applies restitution at any speed
+    bounce: (i) => bounces[i], step: () => world.step(), centre: (i) => vec(bodies[i].translation()),
+    speed: (i) => Math.hypot(...vec(bodies[i].linvel())),
+  };
+}
+
 function stack(R, bigMass, options) {
   const t = scene.test4;
   const world = new World(R, SURFACE_GRAVITY, options);
@@ -151,6 +174,7 @@ function settingText(options) {
   text += best && options.scene !== 'test2' ? '50 solver iterations' : "Rapier's defaults (4 solver iterations)";
   if (options.scene === 'test2' || options.scene === 'test8') text += ', impulse revolute joint';
   if (options.scene === 'test9') text += '; restitution 1.0 on both colliders (average: 1.0), ground a 200 m cuboid';
+  if (options.scene === 'test1') text += "; each ball's restitution combined by maximum with the ground's 0, ground a 200 m cuboid";
   if (options.scene === 'test10') {
     text += '; lengthUnit 1000 with the length tolerances divided by 1000 (speed cap 400 km/s)';
     text += options.ccd || best ? '; cube: CCD on, soft-CCD prediction 2 v h' : '; no CCD';
@@ -158,4 +182,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, pendulum, ball, stack, launch };
+module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, balls, pendulum, ball, stack, launch };
