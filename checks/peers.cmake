@@ -87,23 +87,8 @@ set_tests_properties(peers_refuse_unknown_scene peers_refuse_mujoco_ccd PROPERTI
 # (peers/CMakeLists.txt says which at configure time).
 if(ODELAB_WEB_PEERS_READY)
   set(ODELAB_WEB_CHECKS)
-  # odelab_web_check(NAME ENGINE [STATUS n] EXPECT ... ARGS ...): as
-  # odelab_check, on the launcher build/peers/<engine>_lab.
-  function(odelab_web_check name engine)
-    cmake_parse_arguments(C "" "STATUS" "EXPECT;ARGS" ${ARGN})
-    set(status_args)
-    if(DEFINED C_STATUS)
-      set(status_args --status ${C_STATUS})
-    endif()
-    set(dir ${CMAKE_CURRENT_BINARY_DIR}/runs/${name})
-    file(MAKE_DIRECTORY ${dir})
-    add_test(NAME ${name} COMMAND expect_metrics ${status_args} ${C_EXPECT} -- ${CMAKE_BINARY_DIR}/peers/${engine}_lab
-                                  ${C_ARGS} WORKING_DIRECTORY ${dir})
-    set_tests_properties(${name} PROPERTIES LABELS peers)
-  endfunction()
-
   foreach(_engine ${ODELAB_WEB_PEERS})
-    set(_lab ${CMAKE_BINARY_DIR}/peers/${_engine}_lab)
+    set(_lab $<TARGET_FILE:${_engine}_lab>)
     # The same metrics twice in a row (every metric but the timings, exactly):
     # the bounce (contacts, 5 s) and one launch at the wall.
     add_test(NAME peers_${_engine}_repeats_test9
@@ -112,11 +97,11 @@ if(ODELAB_WEB_PEERS_READY)
              COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_repeat.py ${_lab} --scene test10
                      --velocity 300 --setting best)
     # Bad input: status 2 and no metrics file, whatever was wrong.
-    odelab_web_check(peers_${_engine}_refuses_nan_step ${_engine} STATUS 2 ARGS --step nan)
-    odelab_web_check(peers_${_engine}_refuses_zero_length_run ${_engine} STATUS 2 ARGS --seconds 0)
-    odelab_web_check(peers_${_engine}_refuses_run_shorter_than_a_step ${_engine} STATUS 2 ARGS --seconds 0.0004)
-    odelab_web_check(peers_${_engine}_refuses_unknown_scene ${_engine} STATUS 2 ARGS --scene test0)
-    odelab_web_check(peers_${_engine}_refuses_unknown_option ${_engine} STATUS 2 ARGS --erp 0.2)
+    odelab_check(peers_${_engine}_refuses_nan_step ${_engine}_lab LABEL peers STATUS 2 ARGS --step nan)
+    odelab_check(peers_${_engine}_refuses_zero_length_run ${_engine}_lab LABEL peers STATUS 2 ARGS --seconds 0)
+    odelab_check(peers_${_engine}_refuses_run_shorter_than_a_step ${_engine}_lab LABEL peers STATUS 2 ARGS --seconds 0.0004)
+    odelab_check(peers_${_engine}_refuses_unknown_scene ${_engine}_lab LABEL peers STATUS 2 ARGS --scene test0)
+    odelab_check(peers_${_engine}_refuses_unknown_option ${_engine}_lab LABEL peers STATUS 2 ARGS --erp 0.2)
     # One source of truth: the constants read from the C++ header build the
     # same scene as the ODE programs, to float32's rounding (1e-6 relative).
     foreach(_row "test2;energy_start_J;--seconds=0.01" "test8;start_length_m;--seconds=0.01"
@@ -137,39 +122,39 @@ if(ODELAB_WEB_PEERS_READY)
   # Havok damps rotation by 0.1 by default: the pendulum loses 9.9% of its
   # energy in 20 s; without the damping and with the solver tuned for the
   # step it keeps it within 2% (measured 1.2%, float32).
-  odelab_web_check(peers_havok_default_damping_drains havok EXPECT energy_drift<-0.05 ARGS --scene test2 --seconds 20)
-  odelab_web_check(peers_havok_pendulum_energy havok EXPECT energy_max_deviation<0.02
+  odelab_check(peers_havok_default_damping_drains havok_lab LABEL peers EXPECT energy_drift<-0.05 ARGS --scene test2 --seconds 20)
+  odelab_check(peers_havok_pendulum_energy havok_lab LABEL peers EXPECT energy_max_deviation<0.02
                    ARGS --scene test2 --seconds 20 --setting best)
   # Havok's speculative contacts (always on) stop a cube at 2000 m/s, eight
   # times what the wall's thickness allows a discrete step (250 m/s).
-  odelab_web_check(peers_havok_speculative_stops havok EXPECT stopped==1 ARGS --scene test10 --velocity 2000)
+  odelab_check(peers_havok_speculative_stops havok_lab LABEL peers EXPECT stopped==1 ARGS --scene test10 --velocity 2000)
   # Jolt damps 0.05 by default: 25% of the pendulum's energy gone in 20 s.
-  odelab_web_check(peers_jolt_default_damping_drains jolt EXPECT energy_drift<-0.1 ARGS --scene test2 --seconds 20)
+  odelab_check(peers_jolt_default_damping_drains jolt_lab LABEL peers EXPECT energy_drift<-0.1 ARGS --scene test2 --seconds 20)
   # Jolt with restitution at any speed and more iterations bounces 20 times
   # with the 20th apex within 1e-5 of the first (measured 1.0e-6: float32).
-  odelab_web_check(peers_jolt_exact_bounce jolt EXPECT apex_error_20<1e-5 bounces>=20
+  odelab_check(peers_jolt_exact_bounce jolt_lab LABEL peers EXPECT apex_error_20<1e-5 bounces>=20
                    ARGS --scene test9 --seconds 21 --setting best)
   # Jolt's LinearCast sweep stops a cube at 5000 m/s that passes without it.
-  odelab_web_check(peers_jolt_wall_passed jolt EXPECT passed_through==1 ARGS --scene test10 --velocity 5000)
-  odelab_web_check(peers_jolt_ccd_stops jolt EXPECT stopped==1 ARGS --scene test10 --velocity 5000 --ccd)
+  odelab_check(peers_jolt_wall_passed jolt_lab LABEL peers EXPECT passed_through==1 ARGS --scene test10 --velocity 5000)
+  odelab_check(peers_jolt_ccd_stops jolt_lab LABEL peers EXPECT stopped==1 ARGS --scene test10 --velocity 5000 --ccd)
   # Rapier (no damping, 4 iterations) keeps the pendulum's energy within 0.5%
   # over 20 s (measured 0.30%).
-  odelab_web_check(peers_rapier_pendulum_energy rapier EXPECT energy_max_deviation<5e-3 ARGS --scene test2 --seconds 20)
+  odelab_check(peers_rapier_pendulum_energy rapier_lab LABEL peers EXPECT energy_max_deviation<5e-3 ARGS --scene test2 --seconds 20)
   # Rapier without CCD lets a cube at 250 m/s through; its soft CCD stops it.
-  odelab_web_check(peers_rapier_wall_passed rapier EXPECT passed_through==1 ARGS --scene test10 --velocity 250)
-  odelab_web_check(peers_rapier_ccd_stops rapier EXPECT stopped==1 ARGS --scene test10 --velocity 250 --ccd)
+  odelab_check(peers_rapier_wall_passed rapier_lab LABEL peers EXPECT passed_through==1 ARGS --scene test10 --velocity 250)
+  odelab_check(peers_rapier_ccd_stops rapier_lab LABEL peers EXPECT stopped==1 ARGS --scene test10 --velocity 250 --ccd)
   # test1, fifty balls of restitution 0 to 1 (rebound apex ratio against e^2,
   # balls with e >= 0.1): Rapier reproduces every coefficient within 2e-3
   # (measured 8.6e-4); Havok within 2% (measured 1.1%, the e = 1 ball); Jolt
   # at its defaults misses by more than 5% (measured 13%: damping and no
   # restitution below 1 m/s), without them within 1% (measured 0.60%).
-  odelab_web_check(peers_rapier_rebound_ratio rapier EXPECT max_rebound_error<2e-3 balls_measured==45 ARGS --scene test1)
-  odelab_web_check(peers_havok_rebound_ratio havok EXPECT max_rebound_error<0.02 balls_measured==45 ARGS --scene test1)
-  odelab_web_check(peers_jolt_default_rebound_lost jolt EXPECT max_rebound_error>0.05 ARGS --scene test1)
-  odelab_web_check(peers_jolt_rebound_ratio jolt EXPECT max_rebound_error<0.01 balls_measured==45
+  odelab_check(peers_rapier_rebound_ratio rapier_lab LABEL peers EXPECT max_rebound_error<2e-3 balls_measured==45 ARGS --scene test1)
+  odelab_check(peers_havok_rebound_ratio havok_lab LABEL peers EXPECT max_rebound_error<0.02 balls_measured==45 ARGS --scene test1)
+  odelab_check(peers_jolt_default_rebound_lost jolt_lab LABEL peers EXPECT max_rebound_error>0.05 ARGS --scene test1)
+  odelab_check(peers_jolt_rebound_ratio jolt_lab LABEL peers EXPECT max_rebound_error<0.01 balls_measured==45
                    ARGS --scene test1 --setting best)
   # Havok has no CCD switch: --ccd is refused rather than ignored.
-  odelab_web_check(peers_havok_refuses_ccd havok STATUS 2 ARGS --scene test10 --ccd)
+  odelab_check(peers_havok_refuses_ccd havok_lab LABEL peers STATUS 2 ARGS --scene test10 --ccd)
 
   # The measurement rules, written in C++ for the C++ peers and in JavaScript
   # for the web peers, give the same metrics on the same recorded trajectory

@@ -9,23 +9,13 @@ Usage: check_repeat.py PROGRAM ARGS...
 Exit 0: the same metrics; 1: a difference, a missing metric or a failed run
 (each printed); 2: bad usage."""
 
-import json
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
+from check_same_scene import metrics_of
+
 TIMINGS = {"wall_seconds", "cpu_seconds"}
-
-
-def metrics_of(command, folder, name):
-    path = Path(folder) / f"{name}.json"
-    done = subprocess.run([*command, "--metrics-json", str(path)], cwd=folder, capture_output=True, text=True,
-                          timeout=600)
-    if done.returncode != 0:
-        sys.stderr.write(f"{' '.join(command)} exited with {done.returncode}:\n{done.stderr}")
-        sys.exit(1)
-    return json.loads(path.read_text())
 
 
 def main(argv):
