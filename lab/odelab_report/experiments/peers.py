@@ -99,6 +99,13 @@ SCENES = [
     Scene("test10", "max_velocity_stopped", "max_velocity", "highest velocity with every launch stopped (m/s)", False,
           [0.001], [0.01, 0.001, 0.0001], lambda q: ["--find-max-velocity"]),
 ]
+# Scenes no peer program builds yet, though every engine here has the parts.
+NOT_BUILT = {
+    "test3": "the domino spiral (boxes, friction; the cost with sleeping on)",
+    "test5": "the stack of plates (thin boxes; the tallest aligned stack in real time)",
+    "test6": "the 5000 kg cube on a ball joint (ball joints; time upright)",
+    "test7": "the hanging pair hit at 30 m/s (ball joints; joint error)",
+}
 ODE_ONLY_ARGS = {  # what only the ODE program needs: no output file rows; test10's scan stops at its first failure
     "test2": ["--sample-interval", 3600], "test8": ["--sample-interval", 3600], "test10": ["--band-factor", 1.0]}
 
@@ -219,7 +226,10 @@ The column "Havok 6.5 (thesis)" is quoted from the thesis, not measured. ODE's s
 
 {md.files_line([csv])}
 
-{self.matrix(scenes, engines, rows)}"""
+{self.matrix(scenes, engines, rows)}
+
+Not yet on any peer (the peer programs do not build these scenes; every engine
+here has the parts): {"; ".join(f"{k}, {v}" for k, v in NOT_BUILT.items())}."""
         return Outcome(intro + "\n\n" + "\n\n".join(parts), headline)
 
     # ---- the matrix: scene by engine, at COMPARE_STEP ----------------------------------
