@@ -88,7 +88,8 @@ case "$command" in
     # The web peers (peers/wasm, doc/peers.md): Havok, Jolt and Rapier from
     # the npm registry, pinned by the lockfile; offline after this.
     if command -v node >/dev/null && command -v npm >/dev/null; then
-      (cd "$root/peers/wasm" && npm ci --no-audit --no-fund --loglevel=error)
+      (cd "$root/peers/wasm" && npm ci --no-audit --no-fund --loglevel=error) ||
+        say "npm ci failed in peers/wasm: the web peers (Havok, Jolt, Rapier) and their checks are skipped"
     else
       say "no node/npm: the web peers (Havok, Jolt, Rapier) and their checks are skipped"
     fi
