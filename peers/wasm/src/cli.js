@@ -35,9 +35,11 @@ function defaults() {
 function usage(engineName) {
   const lines = [`The thesis's measurement scenes on ${engineName} (WebAssembly, float32), headless, with the ODE programs' metric names (doc/peers.md).`,
     `Usage: ${engineName}_lab [OPTIONS]`, '', 'Options:'];
+  const initial = defaults();
   for (const [name, o] of Object.entries(OPTIONS)) {
     const value = o.kind === 'flag' ? '' : o.kind === 'choice' ? ` {${o.choices.join(',')}}` : o.kind === 'number' ? ' NUMBER' : ' FILE';
-    lines.push(`  ${(name + value).padEnd(34)} ${o.help}`);
+    const shown = ['scene', 'step', 'setting', 'velocity'].includes(o.key) ? ` (default ${initial[o.key]})` : '';
+    lines.push(`  ${(name + value).padEnd(34)} ${o.help}${shown}`);
   }
   return lines.join('\n') + '\n';
 }
