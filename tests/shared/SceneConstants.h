@@ -63,6 +63,21 @@ constexpr double PLATE_THICKNESS = 0.05;  // y
 constexpr double PLATE_MASS = 1.0;        // kg (proposed)
 }  // namespace test5
 
+// ---- test6: Axis system -------------------------------------------------------
+namespace test6 {
+// A 5000 kg cube held up by a ball joint above a 1 kg cube resting on the
+// ground; the anchor is the centre of the big cube's bottom face.
+constexpr double SMALL_SIDE = 1.0;
+constexpr double SMALL_MASS = 1.0;
+constexpr double BIG_SIDE = 5.0;
+constexpr double BIG_MASS = 5000.0;
+constexpr double ANCHOR_HEIGHT = 3.0;  // also the centre of the big cube's bottom face
+// "Upright" ends at a tilt above this or the centre this far from where it was built.
+constexpr double UPRIGHT_TILT_DEGREES = 1.0;
+constexpr double UPRIGHT_SIDEWAYS_METRES = 0.05;
+constexpr double DEFAULT_SECONDS = 60.0;  // headless run (proposed): the thesis saw a fall within seconds
+}  // namespace test6
+
 // ---- test8: Hinge stability --------------------------------------------------
 namespace test8 {
 // test2's pendulum (namespace test2) with a heavy bob.

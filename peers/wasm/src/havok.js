@@ -15,7 +15,7 @@
 // (default 0.1).
 const fs = require('fs');
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout } = require('./rigs');
+const { pendulumMass, kineticEnergy, stackReadout, uprightReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;  // m/s and rad/s: far beyond the scan's 100 000 m/s
@@ -170,6 +170,27 @@ function balls(HK, options) {
   };
 }
 
+// test6: the 5000 kg cube on a ball joint (every linear axis locked, every
+// angular one free) 2 m above the 1 kg cube resting on the ground box.
+function axisSystem(HK, options) {
+  const t = scene.test6;
+  const world = new World(HK, SURFACE_GRAVITY, options);
+  world.ground();
+  const small = world.body(world.box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
+  const big = world.body(world.box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  const joint = check(HK.HP_Constraint_Create(), 'HP_Constraint_Create');
+  HK.HP_Constraint_SetParentBody(joint, small);
+  HK.HP_Constraint_SetChildBody(joint, big);
+  HK.HP_Constraint_SetAnchorInParent(joint, [0, t.ANCHOR_HEIGHT - t.SMALL_SIDE / 2, 0], [1, 0, 0], [0, 1, 0]);
+  HK.HP_Constraint_SetAnchorInChild(joint, [0, -t.BIG_SIDE / 2, 0], [1, 0, 0], [0, 1, 0]);
+  const A = HK.ConstraintAxis;
+  for (const axis of [A.LINEAR_X, A.LINEAR_Y, A.LINEAR_Z]) HK.HP_Constraint_SetAxisMode(joint, axis, HK.ConstraintAxisLimitMode.LOCKED);
+  for (const axis of [A.ANGULAR_X, A.ANGULAR_Y, A.ANGULAR_Z]) HK.HP_Constraint_SetAxisMode(joint, axis, HK.ConstraintAxisLimitMode.FREE);
+  HK.HP_Constraint_SetEnabled(joint, true);
+  return uprightReadout({ step: () => world.step(), position: (b) => world.position(b),
+    rotation: (b) => world.transform(b)[1] }, small, big);
+}
+
 // test4: the big cube on the small cube on the platform.
 function stack(HK, bigMass, options) {
   const t = scene.test4;
@@ -206,4 +227,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, balls, pendulum, ball, stack, launch };
+module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };

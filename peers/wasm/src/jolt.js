@@ -14,7 +14,7 @@
 // 1 m/s) and, on test10, sweeps the cube (motion quality LinearCast, Jolt's
 // continuous collision; also --ccd).
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout } = require('./rigs');
+const { pendulumMass, kineticEnergy, stackReadout, uprightReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;
@@ -174,6 +174,21 @@ function balls(Jolt, options) {
   };
 }
 
+// test6: the 5000 kg cube on a point constraint (a ball joint) 2 m above the
+// 1 kg cube resting on the ground plane.
+function axisSystem(Jolt, options) {
+  const t = scene.test6;
+  const world = new World(Jolt, SURFACE_GRAVITY, options);
+  world.body(world.plane(), 0, [0, 0, 0]);
+  const small = world.body(world.box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
+  const big = world.body(world.box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  const joint = new Jolt.PointConstraintSettings();
+  joint.mPoint1 = joint.mPoint2 = new Jolt.RVec3(0, t.ANCHOR_HEIGHT, 0);
+  world.system.AddConstraint(joint.Create(small, big));
+  return uprightReadout({ step: () => world.step(), position: (b) => world.position(b),
+    rotation: (b) => world.rotation(b) }, small, big);
+}
+
 function stack(Jolt, bigMass, options) {
   const t = scene.test4;
   const world = new World(Jolt, SURFACE_GRAVITY, options);
@@ -212,4 +227,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, balls, pendulum, ball, stack, launch };
+module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };

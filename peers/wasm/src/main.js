@@ -8,11 +8,14 @@ const { Metrics } = require('./metrics');
 const m = require('./measurements');
 const { scene } = require('./constants');
 const { measureRebounds } = require('./rebound');
+const { measureUpright } = require('./upright');
 
 function measure(engine, lib, options, metrics) {
   switch (options.scene) {
     case 'test1':
       return measureRebounds(engine.balls(lib, options), options, metrics);
+    case 'test6':
+      return measureUpright(engine.axisSystem(lib, options), options, metrics);
     case 'test2':
       return m.measureEnergy(engine.pendulum(lib, scene.test2.BOB_MASS, options), options, metrics);
     case 'test8':

@@ -13,7 +13,7 @@ const lround = (x) => Math.sign(x) * Math.round(Math.abs(x));
 
 function defaultSeconds(name) {
   return { test1: scene.test1.RUN_SECONDS, test2: scene.test2.RUN_SECONDS, test8: scene.test8.RUN_SECONDS, test9: scene.test9.RUN_SECONDS,
-    test4: scene.test4.RUN_SECONDS }[name] ?? 0;
+    test4: scene.test4.RUN_SECONDS, test6: scene.test6.DEFAULT_SECONDS }[name] ?? 0;
 }
 
 function stepsFor(options) {

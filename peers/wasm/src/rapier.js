@@ -15,7 +15,7 @@
 // a soft-CCD prediction of twice its travel in a step: the swept CCD alone
 // does not stop it at a thin static wall, the predictive contact does.
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout } = require('./rigs');
+const { pendulumMass, kineticEnergy, stackReadout, uprightReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const BEST_ITERATIONS = 50;
@@ -132,6 +132,24 @@ function balls(R, options) {
   };
 }
 
+// test6: the 5000 kg cube on a spherical impulse joint 2 m above the 1 kg
+// cube resting on the ground cuboid.
+function axisSystem(R, options) {
+  const t = scene.test6;
+  const world = new World(R, SURFACE_GRAVITY, options);
+  world.ground();
+  const cube = (side) => R.ColliderDesc.cuboid(side / 2, side / 2, side / 2);
+  const small = world.body([[cube(t.SMALL_SIDE)]], t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
+  const big = world.body([[cube(t.BIG_SIDE)]], t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  const joint = R.JointData.spherical({ x: 0, y: t.ANCHOR_HEIGHT - t.SMALL_SIDE / 2, z: 0 }, { x: 0, y: -t.BIG_SIDE / 2, z: 0 });
+  world.world.createImpulseJoint(joint, small, big, true);
+  const rotation = (b) => {
+    const q = b.rotation();
+    return [q.x, q.y, q.z, q.w];
+  };
+  return uprightReadout({ step: () => world.step(), position: (b) => vec(b.translation()), rotation }, small, big);
+}
+
 function stack(R, bigMass, options) {
   const t = scene.test4;
   const world = new World(R, SURFACE_GRAVITY, options);
@@ -182,4 +200,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, balls, pendulum, ball, stack, launch };
+module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };

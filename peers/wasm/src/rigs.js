@@ -60,4 +60,25 @@ function stackReadout(world, small, big) {
   };
 }
 
-module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout };
+// How far the lowest corner of a cube of side `side` is below y = 0 (0 if
+// above): each local axis reaches |its world y| x half the side.
+function depthBelowGround(position, q, side) {
+  const [x, y, z, w] = q;
+  const row = [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)];
+  const reach = (side / 2) * row.reduce((sum, r) => sum + Math.abs(r), 0);
+  return Math.max(0, reach - position[1]);
+}
+
+// test6's readout from any engine's positions and orientations.
+// `world`: {step(), position(body), rotation(body)}.
+function uprightReadout(world, small, big) {
+  const t = scene.test6;
+  return {
+    step: () => world.step(),
+    bigCentre: () => world.position(big),
+    bigTiltDegrees: () => tiltDegrees(world.rotation(big)),
+    smallSink: () => depthBelowGround(world.position(small), world.rotation(small), t.SMALL_SIDE),
+  };
+}
+
+module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout };
