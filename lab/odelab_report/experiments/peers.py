@@ -81,7 +81,7 @@ class Scene:
 STEPS = [0.01, 0.003, 0.001, 0.0003, 0.0001]
 # The web peers cost ten to a hundred times ODE's CPU per simulated second:
 # in the full report they run at fewer steps (always the thesis's 0.001).
-WEB_STEPS = {"test1": [0.001], "test2": [0.01, 0.001, 0.0001], "test8": [0.01, 0.001],
+WEB_STEPS = {"test1": [0.001], "test6": [0.001], "test2": [0.01, 0.001, 0.0001], "test8": [0.01, 0.001],
              "test9": [0.01, 0.001, 0.0001], "test4": [0.001], "test10": [0.01, 0.001]}
 SCENES = [
     Scene("test1", "max_rebound_error", "max_rebound_error",
