@@ -81,3 +81,103 @@ set_tests_properties(${ODELAB_PEER_CHECKS} PROPERTIES LABELS peers)
 odelab_check(peers_refuse_unknown_scene bullet_lab STATUS 2 ARGS --scene test7)
 odelab_check(peers_refuse_mujoco_ccd mujoco_lab STATUS 2 ARGS --scene test10 --ccd)
 set_tests_properties(peers_refuse_unknown_scene peers_refuse_mujoco_ccd PROPERTIES LABELS peers)
+
+# ---- the web peers (peers/wasm): Havok, Jolt and Rapier in Node.js ----------
+# Left out where node is missing or `npm ci` has not run in peers/wasm
+# (peers/CMakeLists.txt says which at configure time).
+if(ODELAB_WEB_PEERS_READY)
+  set(ODELAB_WEB_CHECKS)
+  foreach(_engine ${ODELAB_WEB_PEERS})
+    set(_lab $<TARGET_FILE:${_engine}_lab>)
+    # The same metrics twice in a row (every metric but the timings, exactly):
+    # the bounce (contacts, 5 s) and one launch at the wall.
+    add_test(NAME peers_${_engine}_repeats_test9
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_repeat.py ${_lab} --scene test9 --seconds 5)
+    add_test(NAME peers_${_engine}_repeats_test10
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_repeat.py ${_lab} --scene test10
+                     --velocity 300 --setting best)
+    # Bad input: status 2 and no metrics file, whatever was wrong.
+    odelab_check(peers_${_engine}_refuses_nan_step ${_engine}_lab LABEL peers STATUS 2 ARGS --step nan)
+    odelab_check(peers_${_engine}_refuses_zero_length_run ${_engine}_lab LABEL peers STATUS 2 ARGS --seconds 0)
+    odelab_check(peers_${_engine}_refuses_run_shorter_than_a_step ${_engine}_lab LABEL peers STATUS 2 ARGS --seconds 0.0004)
+    odelab_check(peers_${_engine}_refuses_unknown_scene ${_engine}_lab LABEL peers STATUS 2 ARGS --scene test0)
+    odelab_check(peers_${_engine}_refuses_unknown_option ${_engine}_lab LABEL peers STATUS 2 ARGS --erp 0.2)
+    # One source of truth: the constants read from the C++ header build the
+    # same scene as the ODE programs, to float32's rounding (1e-6 relative).
+    foreach(_row "test2;energy_start_J;--seconds=0.01" "test8;start_length_m;--seconds=0.01"
+                 "test9;start_height_m,ball_radius_m;--seconds=0.01" "test4;big_mass;--seconds=0.01"
+                 "test10;geometric_prediction,guaranteed_stop_velocity;--velocity=50")
+      list(GET _row 0 _scene)
+      list(GET _row 1 _metrics)
+      list(GET _row 2 _args)
+      add_test(NAME peers_same_scene_${_engine}_${_scene}
+               COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_same_scene.py --tolerance=1e-6 ${_metrics}
+                       $<TARGET_FILE:${_scene}> ${_lab} ${_scene} ${_args})
+      list(APPEND ODELAB_WEB_CHECKS peers_same_scene_${_engine}_${_scene})
+    endforeach()
+    list(APPEND ODELAB_WEB_CHECKS peers_${_engine}_repeats_test9 peers_${_engine}_repeats_test10)
+  endforeach()
+
+  # Physical facts, each measured first (step 0.001 unless said).
+  # Havok damps rotation by 0.1 by default: the pendulum loses 9.9% of its
+  # energy in 20 s; without the damping and with the solver tuned for the
+  # step it keeps it within 2% (measured 1.2%, float32).
+  odelab_check(peers_havok_default_damping_drains havok_lab LABEL peers EXPECT energy_drift<-0.05 ARGS --scene test2 --seconds 20)
+  odelab_check(peers_havok_pendulum_energy havok_lab LABEL peers EXPECT energy_max_deviation<0.02
+                   ARGS --scene test2 --seconds 20 --setting best)
+  # Havok's speculative contacts (always on) stop a cube at 2000 m/s, eight
+  # times what the wall's thickness allows a discrete step (250 m/s).
+  odelab_check(peers_havok_speculative_stops havok_lab LABEL peers EXPECT stopped==1 ARGS --scene test10 --velocity 2000)
+  # Jolt damps 0.05 by default: 25% of the pendulum's energy gone in 20 s.
+  odelab_check(peers_jolt_default_damping_drains jolt_lab LABEL peers EXPECT energy_drift<-0.1 ARGS --scene test2 --seconds 20)
+  # Jolt with restitution at any speed and more iterations bounces 20 times
+  # with the 20th apex within 1e-5 of the first (measured 1.0e-6: float32).
+  odelab_check(peers_jolt_exact_bounce jolt_lab LABEL peers EXPECT apex_error_20<1e-5 bounces>=20
+                   ARGS --scene test9 --seconds 21 --setting best)
+  # Jolt's LinearCast sweep stops a cube at 5000 m/s that passes without it.
+  odelab_check(peers_jolt_wall_passed jolt_lab LABEL peers EXPECT passed_through==1 ARGS --scene test10 --velocity 5000)
+  odelab_check(peers_jolt_ccd_stops jolt_lab LABEL peers EXPECT stopped==1 ARGS --scene test10 --velocity 5000 --ccd)
+  # Rapier (no damping, 4 iterations) keeps the pendulum's energy within 0.5%
+  # over 20 s (measured 0.30%).
+  odelab_check(peers_rapier_pendulum_energy rapier_lab LABEL peers EXPECT energy_max_deviation<5e-3 ARGS --scene test2 --seconds 20)
+  # Rapier without CCD lets a cube at 250 m/s through; its soft CCD stops it.
+  odelab_check(peers_rapier_wall_passed rapier_lab LABEL peers EXPECT passed_through==1 ARGS --scene test10 --velocity 250)
+  odelab_check(peers_rapier_ccd_stops rapier_lab LABEL peers EXPECT stopped==1 ARGS --scene test10 --velocity 250 --ccd)
+  # test1, fifty balls of restitution 0 to 1 (rebound apex ratio against e^2,
+  # balls with e >= 0.1): Rapier reproduces every coefficient within 2e-3
+  # (measured 8.6e-4); Havok within 2% (measured 1.1%, the e = 1 ball); Jolt
+  # at its defaults misses by more than 5% (measured 13%: damping and no
+  # restitution below 1 m/s), without them within 1% (measured 0.60%).
+  odelab_check(peers_rapier_rebound_ratio rapier_lab LABEL peers EXPECT max_rebound_error<2e-3 balls_measured==45 ARGS --scene test1)
+  odelab_check(peers_havok_rebound_ratio havok_lab LABEL peers EXPECT max_rebound_error<0.02 balls_measured==45 ARGS --scene test1)
+  odelab_check(peers_jolt_default_rebound_lost jolt_lab LABEL peers EXPECT max_rebound_error>0.05 ARGS --scene test1)
+  odelab_check(peers_jolt_rebound_ratio jolt_lab LABEL peers EXPECT max_rebound_error<0.01 balls_measured==45
+                   ARGS --scene test1 --setting best)
+  # test6, the 5000 kg cube on a ball joint above the 1 kg cube: with its
+  # solver tuned for the step Havok lets the small cube sink under the load by
+  # less than 1 cm (measured 4.4 mm; 0.26 m tuned for 1/60 s); Rapier's soft
+  # contact lets it sink more than 0.1 m (measured 0.93 m).
+  odelab_check(peers_havok_axis_system_holds_load havok_lab LABEL peers EXPECT sink_while_upright_metres<0.01
+               ARGS --scene test6 --setting best --seconds 5)
+  odelab_check(peers_rapier_axis_system_sinks rapier_lab LABEL peers EXPECT sink_while_upright_metres>0.1
+               ARGS --scene test6 --seconds 5)
+  # Havok has no CCD switch: --ccd is refused rather than ignored.
+  odelab_check(peers_havok_refuses_ccd havok_lab LABEL peers STATUS 2 ARGS --scene test10 --ccd)
+
+  # The measurement rules, written in C++ for the C++ peers and in JavaScript
+  # for the web peers, give the same metrics on the same recorded trajectory
+  # (peers/check_parity.py): each scene once, on an engine and setting where
+  # the rule has something to decide (apexes, a fall, a pass and a stop).
+  foreach(_row "havok;test2;default;0.001;5" "rapier;test8;best;0.001;5" "jolt;test9;best;0.001;21"
+               "rapier;test4;default;0.001;2" "rapier;test10;default;0.001;0;250" "jolt;test10;default;0.001;0;300")
+    list(GET _row 0 _engine)
+    list(GET _row 1 _scene)
+    string(REPLACE ";" "_" _name "${_row}")
+    string(REPLACE "." "" _name "${_name}")
+    add_test(NAME peers_rules_parity_${_name}
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/peers/check_parity.py ${ODELAB_NODE}
+                     $<TARGET_FILE:replay_lab> ${_row})
+    list(APPEND ODELAB_WEB_CHECKS peers_rules_parity_${_name})
+  endforeach()
+  set_tests_properties(${ODELAB_WEB_CHECKS} PROPERTIES LABELS peers)
+endif()

@@ -7,8 +7,10 @@ significant digits), to a relative 1e-12. Both programs take the constants
 from tests/shared/SceneConstants.h; this catches a peer (or an ODE program)
 that builds its scene from a copy instead.
 
-Usage: check_same_scene.py METRIC[,METRIC...] ODE_PROGRAM PEER_PROGRAM SCENE [ARGS...]
-ARGS go to both programs. Exit 0: every metric equal; 1: a difference or a
+Usage: check_same_scene.py [--tolerance=T] METRIC[,METRIC...] ODE_PROGRAM PEER_PROGRAM SCENE [ARGS...]
+ARGS go to both programs. --tolerance: the relative tolerance instead of
+1e-12, for a peer whose engine holds its state in float32 (the web peers:
+1e-6, a few roundings of float32's 6e-8). Exit 0: every metric equal; 1: a difference or a
 missing metric (each printed); 2: bad usage."""
 
 import json
@@ -31,6 +33,10 @@ def metrics_of(command, folder, name):
 
 
 def main(argv):
+    tolerance = TOLERANCE
+    if len(argv) > 1 and argv[1].startswith("--tolerance="):
+        tolerance = float(argv[1].split("=", 1)[1])
+        argv = argv[:1] + argv[2:]
     if len(argv) < 5:
         sys.stderr.write(__doc__)
         return 2
@@ -46,7 +52,7 @@ def main(argv):
     failed = False
     for name in names:
         a, b = reference.get(name), measured.get(name)
-        same = a is not None and b is not None and abs(a - b) <= TOLERANCE * max(abs(a), abs(b), 1e-300)
+        same = a is not None and b is not None and abs(a - b) <= tolerance * max(abs(a), abs(b), 1e-300)
         print(f"{name}: ODE {a!r}, {Path(peer).name} {b!r}: {'same' if same else 'DIFFERENT'}")
         failed = failed or not same
     return 1 if failed else 0

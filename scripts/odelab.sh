@@ -101,6 +101,16 @@ case "$command" in
   test)
     install_missing
     install_missing "${windows_packages[@]}"
+    # The web peers (peers/wasm, doc/peers.md): Havok, Jolt and Rapier from
+    # the npm registry, pinned by the lockfile; offline after this. Debian's
+    # Node.js where the machine has none of its own.
+    command -v node >/dev/null || install_missing nodejs npm
+    if command -v node >/dev/null && command -v npm >/dev/null; then
+      (cd "$root/peers/wasm" && npm ci --no-audit --no-fund --loglevel=error) ||
+        say "npm ci failed in peers/wasm: the web peers (Havok, Jolt, Rapier) and their checks are skipped"
+    else
+      say "no node/npm: the web peers (Havok, Jolt, Rapier) and their checks are skipped"
+    fi
     build
     # The programs cross-built for Windows, which the label `windows` runs
     # under Wine.

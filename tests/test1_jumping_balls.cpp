@@ -21,24 +21,16 @@
 #include "shared/ApexTracker.h"
 #include "shared/BodyMeasures.h"
 #include "shared/BounceVelocityOption.h"
+#include "shared/SceneConstants.h"
 
 namespace {
 
 using namespace odelab;
 
-constexpr int BALL_COUNT = 50;
-constexpr double BALL_RADIUS = 0.15;
-constexpr double BALL_MASS = 1.0;          // kg
-constexpr double DROP_HEIGHT = 7.0;        // centre above the ground
-constexpr double SPACING = 0.4;            // m along x (proposed)
-constexpr double BOUNCE_VELOCITY = 0.01;   // m/s: slower impacts do not bounce (thesis)
-constexpr double GRAVITY_FACTOR = 0.25;    // x SURFACE_GRAVITY (thesis)
+// The scene's constants: SceneConstants.h (shared with the peers in peers/).
+using namespace scene::test1;
 constexpr double THESIS_ERP = 0.0;         // the thesis: ERP > 0 spoils low-bounce balls
 constexpr double THESIS_CFM = 0.0;         // the thesis: CFM ~0.001 damps every ball
-constexpr double MEASURED_FROM_BOUNCE = 0.1;  // balls with e below this are left out of max_rebound_error
-constexpr double REST_SPEED = 1e-3;        // m/s: a ball slower than this ...
-constexpr double REST_CLEARANCE = 1e-3;    // m: ... and this close to the ground is at rest
-constexpr double RUN_SECONDS = 15.0;       // the e = 1 ball's second apex comes at 11.8 s
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 
 WorldSettings settingsForThisScene() {

@@ -23,23 +23,14 @@
 #include "TestMain.h"
 #include "shared/AngularSpeedLimit.h"
 #include "shared/BodyMeasures.h"
+#include "shared/SceneConstants.h"
 
 namespace {
 
 using namespace odelab;
+// Sizes, masses and the upright rule: SceneConstants.h (shared with the peers in peers/).
+using namespace scene::test6;
 
-// Sizes and masses from the thesis.
-constexpr double SMALL_SIDE = 1.0;
-constexpr double SMALL_MASS = 1.0;
-constexpr double BIG_SIDE = 5.0;
-constexpr double BIG_MASS = 5000.0;
-constexpr double ANCHOR_HEIGHT = 3.0;  // also the centre of the big cube's bottom face
-
-// "Upright": the criteria of the measurement (from the issue).
-constexpr double UPRIGHT_TILT_DEGREES = 1.0;
-constexpr double UPRIGHT_SIDEWAYS_METRES = 0.05;
-
-constexpr double DEFAULT_SECONDS = 60.0;        // headless run (proposed): the thesis saw a fall within seconds
 constexpr double MAX_START_TILT_DEGREES = 0.5;  // --tilt-degrees stays well inside "upright"
 
 // How far the lowest corner of a box of side `side` is below the ground (0 if above).

@@ -9,6 +9,22 @@
 
 namespace odelab::scene {
 
+// ---- test1: Jumping Balls ----------------------------------------------------
+namespace test1 {
+// Ball i of BALL_COUNT has restitution i / (BALL_COUNT - 1), from 0 to 1.
+constexpr int BALL_COUNT = 50;
+constexpr double BALL_RADIUS = 0.15;
+constexpr double BALL_MASS = 1.0;          // kg
+constexpr double DROP_HEIGHT = 7.0;        // centre above the ground
+constexpr double SPACING = 0.4;            // m along x (proposed)
+constexpr double BOUNCE_VELOCITY = 0.01;   // m/s: slower impacts do not bounce (thesis)
+constexpr double GRAVITY_FACTOR = 0.25;    // x SURFACE_GRAVITY (thesis)
+constexpr double MEASURED_FROM_BOUNCE = 0.1;  // balls with e below this are left out of max_rebound_error
+constexpr double REST_SPEED = 1e-3;        // m/s: a ball slower than this ...
+constexpr double REST_CLEARANCE = 1e-3;    // m: ... and this close to the ground is at rest
+constexpr double RUN_SECONDS = 15.0;       // the e = 1 ball's second apex comes at 11.8 s
+}  // namespace test1
+
 // ---- test2: Pendulum ---------------------------------------------------------
 namespace test2 {
 // The pendulum shared with test8 (tests/shared/PendulumRig.h builds it): a
@@ -46,6 +62,21 @@ constexpr double PLATE_WIDTH = 5.0;       // x and z (thesis: about [5.0, 0.05, 
 constexpr double PLATE_THICKNESS = 0.05;  // y
 constexpr double PLATE_MASS = 1.0;        // kg (proposed)
 }  // namespace test5
+
+// ---- test6: Axis system -------------------------------------------------------
+namespace test6 {
+// A 5000 kg cube held up by a ball joint above a 1 kg cube resting on the
+// ground; the anchor is the centre of the big cube's bottom face.
+constexpr double SMALL_SIDE = 1.0;
+constexpr double SMALL_MASS = 1.0;
+constexpr double BIG_SIDE = 5.0;
+constexpr double BIG_MASS = 5000.0;
+constexpr double ANCHOR_HEIGHT = 3.0;  // also the centre of the big cube's bottom face
+// "Upright" ends at a tilt above this or the centre this far from where it was built.
+constexpr double UPRIGHT_TILT_DEGREES = 1.0;
+constexpr double UPRIGHT_SIDEWAYS_METRES = 0.05;
+constexpr double DEFAULT_SECONDS = 60.0;  // headless run (proposed): the thesis saw a fall within seconds
+}  // namespace test6
 
 // ---- test8: Hinge stability --------------------------------------------------
 namespace test8 {

@@ -3,7 +3,8 @@ per engine and setting."""
 
 from .common import HAVOK_STYLE, new_figure, save, serialized
 
-ENGINE_COLOURS = {"ode": "#2ca02c", "bullet": "#d62728", "mujoco": "#1f77b4"}
+ENGINE_COLOURS = {"ode": "#2ca02c", "bullet": "#d62728", "mujoco": "#1f77b4", "havok": "#ff7f0e", "jolt": "#9467bd",
+                  "rapier": "#8c564b"}
 SETTING_STYLES = {"default": dict(linestyle="--", marker="o"), "best": dict(linestyle="-", marker="s")}
 
 
@@ -41,7 +42,8 @@ def peers_speed_accuracy(out_dir, stem, rows, label, lower_is_better, havok, zer
     ax.set_yscale("log")
     ax.set_xlabel("cost: wall seconds per simulated second (this machine)")
     ax.set_ylabel(label + (" (lower is better)" if lower_is_better else " (higher is better)"))
-    ax.set_title(f"{stem.replace('peers-', '')}: ODE, Bullet and MuJoCo at the same steps\n"
+    engines = ", ".join(dict.fromkeys(r["engine"] for r in rows))
+    ax.set_title(f"{stem.replace('peers-', '')}: {engines} at the same steps\n"
                  "dashed: the engine's defaults; solid: its best settings; labels: the step (s)", fontsize=10)
     ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
     return save(fig, out_dir, stem)

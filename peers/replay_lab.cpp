@@ -1,0 +1,147 @@
+// replay_lab: the C++ measurement rules (Measurements.cpp) on a trajectory
+// recorded from a peer (peers/wasm/parity/record.js writes one): an Engine
+// whose models give back the recorded readings step by step. The metrics go
+// to stdout as JSON. peers/check_parity.py runs this and the JavaScript
+// rules on the same file and compares them.
+//
+// Usage: replay_lab FILE. Exit 0 done, 1 an unreadable or short trajectory,
+// 2 bad usage.
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "Measurements.h"
+#include "PeerScene.h"
+
+namespace {
+
+using namespace odelab;
+using namespace odelab::peers;
+
+struct Trajectory {
+  std::map<std::string, std::string> header;
+  std::vector<std::vector<double>> rows;
+  double number(const std::string& key) const { return std::stod(header.at(key)); }
+};
+
+Trajectory readTrajectory(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  Trajectory t;
+  std::string line;
+  while (std::getline(in, line) && line != "rows") {
+    std::istringstream fields(line);
+    std::string key, value;
+    fields >> key >> value;
+    t.header[key] = value;
+  }
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::vector<double> row;
+    for (std::string field; fields >> field;) row.push_back(std::stod(field));
+    t.rows.push_back(row);
+  }
+  if (t.rows.empty() || !t.header.count("scene")) throw std::runtime_error(path + ": no header or no rows");
+  return t;
+}
+
+// The recorded readings, row 0 before any step.
+class Cursor {
+ public:
+  explicit Cursor(const Trajectory& t) : t_(t) {}
+  void step() { ++at_; }
+  double at(size_t i) const {
+    if (at_ >= t_.rows.size()) throw std::runtime_error("the trajectory ended before the measurement did");
+    return t_.rows[at_].at(i);
+  }
+  Vec3 vec() const { return {at(0), at(1), at(2)}; }
+  double mass() const { return t_.number("mass"); }
+
+ private:
+  const Trajectory& t_;
+  size_t at_ = 0;
+};
+
+struct ReplayPendulum : PendulumModel {
+  explicit ReplayPendulum(const Trajectory& t) : c(t) {}
+  void step() override { c.step(); }
+  Vec3 centreOfMass() const override { return c.vec(); }
+  double kineticEnergy() const override { return c.at(3); }
+  double mass() const override { return c.mass(); }
+  Cursor c;
+};
+struct ReplayBall : BallModel {
+  explicit ReplayBall(const Trajectory& t) : c(t) {}
+  void step() override { c.step(); }
+  Vec3 centre() const override { return c.vec(); }
+  Cursor c;
+};
+struct ReplayStack : StackModel {
+  explicit ReplayStack(const Trajectory& t) : c(t) {}
+  void step() override { c.step(); }
+  Vec3 bigCentre() const override { return c.vec(); }
+  double bigTiltDegrees() const override { return c.at(3); }
+  double deepestPenetration() const override { return c.at(4); }
+  Cursor c;
+};
+struct ReplayLaunch : LaunchModel {
+  explicit ReplayLaunch(const Trajectory& t) : c(t) {}
+  void step() override { c.step(); }
+  Vec3 cubeCentre() const override { return c.vec(); }
+  double cubeVelocityX() const override { return c.at(3); }
+  Cursor c;
+};
+
+class Replay : public Engine {
+ public:
+  explicit Replay(const Trajectory& t) : t_(t) {}
+  std::string name() const override { return "replay"; }
+  std::string settingText(const RunOptions&) const override { return "a recorded trajectory"; }
+  std::unique_ptr<PendulumModel> pendulum(double, const RunOptions&) override {
+    return std::make_unique<ReplayPendulum>(t_);
+  }
+  std::unique_ptr<BallModel> ball(const RunOptions&) override { return std::make_unique<ReplayBall>(t_); }
+  std::unique_ptr<StackModel> stack(double, const RunOptions&) override { return std::make_unique<ReplayStack>(t_); }
+  std::unique_ptr<LaunchModel> launch(double, const RunOptions&) override {
+    return std::make_unique<ReplayLaunch>(t_);
+  }
+
+ private:
+  const Trajectory& t_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::cerr << "usage: replay_lab FILE (a trajectory from peers/wasm/parity/record.js)\n";
+    return 2;
+  }
+  try {
+    const Trajectory t = readTrajectory(argv[1]);
+    Replay replay(t);
+    RunOptions options;
+    options.scene = t.header.at("scene");
+    options.step = t.number("step");
+    options.seconds = t.number("seconds");
+    options.velocity = t.number("velocity");
+    options.bigMass = options.bobMass = t.number("mass");
+    Metrics metrics;
+    if (options.scene == "test2") measureEnergy(replay, options, metrics);
+    else if (options.scene == "test8") measureElongation(replay, options, metrics);
+    else if (options.scene == "test9") measureBounces(replay, options, metrics);
+    else if (options.scene == "test4") measureHold(replay, options, metrics);
+    else if (options.scene == "test10") measureWall(replay, options, metrics);
+    else throw std::runtime_error("unknown scene " + options.scene);
+    std::cout << metrics.toJson();
+  } catch (const std::exception& error) {
+    std::cerr << "replay_lab: " << error.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

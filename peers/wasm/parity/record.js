@@ -1,0 +1,56 @@
+#!/usr/bin/env node
+'use strict';
+// Records what a web peer's scene model reads after every step, so that the
+// C++ measurement rules (peers/Measurements.cpp, through peers/replay_lab)
+// and the JavaScript ones (src/measurements.js, through replay.js) can be
+// run on the very same trajectory (peers/check_parity.py compares them).
+//
+// Usage: record.js ENGINE SCENE SETTING STEP SECONDS [VELOCITY] > FILE
+// The file: "key value" lines (scene, step, seconds, mass, velocity), a line
+// "rows", then one line per reading, the first before any step; numbers in
+// JavaScript's shortest round-trip form, so both readers get the same doubles.
+const { scene } = require('../src/constants');
+
+const ROWS = {
+  test2: (m) => [...m.centreOfMass(), m.kineticEnergy()],
+  test8: (m) => [...m.centreOfMass(), m.kineticEnergy()],
+  test9: (m) => m.centre(),
+  test4: (m) => [...m.bigCentre(), m.bigTiltDegrees(), m.deepestPenetration()],
+  test10: (m) => [...m.cubeCentre(), m.cubeVelocityX()],
+};
+
+async function main([engineName, sceneName, setting, stepText, secondsText, velocityText]) {
+  if (!ROWS[sceneName] || !['havok', 'jolt', 'rapier'].includes(engineName)) {
+    process.stderr.write('usage: record.js havok|jolt|rapier test2|test4|test8|test9|test10 SETTING STEP SECONDS [VELOCITY]\n');
+    return 2;
+  }
+  const engine = require(`../src/${engineName}`);
+  const lib = await engine.load();
+  const options = { scene: sceneName, step: Number(stepText), seconds: Number(secondsText), setting, ccd: false };
+  const velocity = Number(velocityText || 300);
+  let model, mass = 0, steps = Math.round(options.seconds / options.step);
+  if (sceneName === 'test2' || sceneName === 'test8') {
+    model = engine.pendulum(lib, sceneName === 'test2' ? scene.test2.BOB_MASS : scene.test8.HEAVY_BOB_MASS, options);
+    mass = model.mass();
+  } else if (sceneName === 'test9') {
+    model = engine.ball(lib, options);
+  } else if (sceneName === 'test4') {
+    mass = scene.test4.DEFAULT_BIG_MASS;
+    model = engine.stack(lib, mass, options);
+  } else {
+    const t = scene.test10;
+    model = engine.launch(lib, velocity, options);
+    // As many steps as test10's rule can take for one launch, and two more.
+    steps = Math.ceil(((t.WALL_FAR_FACE + t.CUBE_HALF_SIZE - t.LAUNCH_X) / velocity + t.SETTLE_SECONDS) / options.step) + 2;
+  }
+  const lines = [`scene ${sceneName}`, `step ${options.step}`, `seconds ${options.seconds}`, `mass ${mass}`,
+    `velocity ${velocity}`, 'rows', ROWS[sceneName](model).join(' ')];
+  for (let i = 0; i < steps; ++i) {
+    model.step();
+    lines.push(ROWS[sceneName](model).join(' '));
+  }
+  process.stdout.write(lines.join('\n') + '\n');
+  return 0;
+}
+
+main(process.argv.slice(2)).then((status) => { process.exitCode = status; });

@@ -1,0 +1,52 @@
+#!/usr/bin/env node
+'use strict';
+// The JavaScript measurement rules (src/measurements.js) on a trajectory
+// written by record.js: the metrics, as the web peers name them, on stdout
+// as JSON. Usage: replay.js FILE
+const fs = require('fs');
+const m = require('../src/measurements');
+const { Metrics } = require('../src/metrics');
+
+function readTrajectory(file) {
+  const lines = fs.readFileSync(file, 'utf8').trim().split('\n');
+  const header = {};
+  let i = 0;
+  for (; lines[i] !== 'rows'; ++i) {
+    const [key, value] = lines[i].split(' ');
+    header[key] = key === 'scene' ? value : Number(value);
+  }
+  return { header, rows: lines.slice(i + 1).map((line) => line.split(' ').map(Number)) };
+}
+
+// A model that gives back the recorded readings: row 0 before any step.
+function replayModel(rows, read) {
+  let at = 0;
+  const row = () => {
+    if (at >= rows.length) throw new Error('the trajectory ended before the measurement did');
+    return rows[at];
+  };
+  return { step: () => { ++at; }, ...read(row) };
+}
+
+function main([file]) {
+  const { header, rows } = readTrajectory(file);
+  const options = { scene: header.scene, step: header.step, seconds: header.seconds, ccd: false,
+    findMaxVelocity: false, velocity: header.velocity };
+  const metrics = new Metrics();
+  const pendulum = (row) => ({ centreOfMass: () => row().slice(0, 3), kineticEnergy: () => row()[3], mass: () => header.mass });
+  switch (header.scene) {
+    case 'test2': m.measureEnergy(replayModel(rows, pendulum), options, metrics); break;
+    case 'test8': m.measureElongation(replayModel(rows, pendulum), options, metrics); break;
+    case 'test9': m.measureBounces(replayModel(rows, (row) => ({ centre: () => row().slice(0, 3) })), options, metrics); break;
+    case 'test4':
+      m.measureHold(replayModel(rows, (row) => ({ bigCentre: () => row().slice(0, 3), bigTiltDegrees: () => row()[3],
+        deepestPenetration: () => row()[4] })), header.mass, options, metrics);
+      break;
+    default:
+      m.measureWall(() => replayModel(rows, (row) => ({ cubeCentre: () => row().slice(0, 3), cubeVelocityX: () => row()[3] })),
+        options, metrics);
+  }
+  process.stdout.write(metrics.json());
+}
+
+main(process.argv.slice(2));

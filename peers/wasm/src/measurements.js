@@ -1,0 +1,215 @@
+'use strict';
+// The thesis's measurements as peers/Measurements.cpp makes them, for the
+// web peers: each runs one scene on an engine's model and sets the metrics
+// the ODE program of that scene writes (same names, same definitions).
+// checks/ runs both on the same recorded trajectories (peers/wasm/parity).
+const { scene, SURFACE_GRAVITY } = require('./constants');
+const { ApexTracker } = require('./apex');
+
+const finite = (v) => v.every(Number.isFinite);
+const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+// std::lround: halves away from zero.
+const lround = (x) => Math.sign(x) * Math.round(Math.abs(x));
+
+function defaultSeconds(name) {
+  return { test1: scene.test1.RUN_SECONDS, test2: scene.test2.RUN_SECONDS, test8: scene.test8.RUN_SECONDS, test9: scene.test9.RUN_SECONDS,
+    test4: scene.test4.RUN_SECONDS, test6: scene.test6.DEFAULT_SECONDS }[name] ?? 0;
+}
+
+function stepsFor(options) {
+  return lround((options.seconds >= 0 ? options.seconds : defaultSeconds(options.scene)) / options.step);
+}
+
+// test2: total energy m g y + kinetic, its largest deviation from the start.
+// `pendulum`: {step(), centreOfMass() -> [x,y,z], kineticEnergy(), mass()}.
+function measureEnergy(pendulum, options, metrics) {
+  const weight = pendulum.mass() * SURFACE_GRAVITY;
+  const energy = () => weight * pendulum.centreOfMass()[1] + pendulum.kineticEnergy();
+  const start = energy();
+  let low = start, high = start, last = start;
+  const tally = { steps: 0, finite: true };
+  for (let i = 0, n = stepsFor(options); i < n; ++i) {
+    pendulum.step();
+    last = energy();
+    if (!Number.isFinite(last)) {
+      tally.finite = false;
+      break;
+    }
+    low = Math.min(low, last);
+    high = Math.max(high, last);
+    ++tally.steps;
+  }
+  metrics.set('energy_rel_variation', (high - low) / high);
+  metrics.set('energy_drift', (last - start) / start);
+  metrics.set('energy_max_deviation', Math.max(high - start, start - low) / start);
+  metrics.set('energy_start_J', start);
+  metrics.set('energy_min_J', low);
+  metrics.set('energy_max_J', high);
+  metrics.set('energy_last_J', last);
+  metrics.set('composite_mass_kg', pendulum.mass());
+  return tally;
+}
+
+// test8: relative elongation (l - l0) / l0 of the anchor-to-centre-of-mass distance.
+function measureElongation(pendulum, options, metrics) {
+  const anchor = [0, scene.test2.ANCHOR_HEIGHT, 0];
+  const startLength = distance(pendulum.centreOfMass(), anchor);
+  let largest = 0, sum = 0;
+  const tally = { steps: 0, finite: true };
+  for (let i = 0, n = stepsFor(options); i < n; ++i) {
+    pendulum.step();
+    const centre = pendulum.centreOfMass();
+    if (!finite(centre)) {
+      tally.finite = false;
+      break;
+    }
+    const elongation = (distance(centre, anchor) - startLength) / startLength;
+    largest = Math.max(largest, Math.abs(elongation));
+    sum += elongation;
+    ++tally.steps;
+  }
+  metrics.set('max_relative_elongation', largest);
+  metrics.set('mean_relative_elongation', tally.steps ? sum / tally.steps : 0);
+  metrics.set('start_length_m', startLength);
+  metrics.set('composite_mass_kg', pendulum.mass());
+  return tally;
+}
+
+// test9: apex error relative to the start height above the contact, after 5, 10, 20 bounces.
+// `ball`: {step(), centre()}.
+function measureBounces(ball, options, metrics) {
+  const { START_HEIGHT, BALL_RADIUS } = scene.test9;
+  const start = ball.centre();
+  const tracker = new ApexTracker();
+  tracker.restart(0, start);
+  const errors = [];
+  let drift = 0;
+  const tally = { steps: 0, finite: true };
+  for (let i = 0, n = stepsFor(options); i < n; ++i) {
+    ball.step();
+    const c = ball.centre();
+    if (!finite(c)) {
+      tally.finite = false;
+      break;
+    }
+    ++tally.steps;
+    drift = Math.max(drift, Math.hypot(c[0], c[2]));
+    const apex = tracker.update(tally.steps * options.step, c);
+    if (apex) errors.push(Math.abs(apex.position[1] - tracker.releaseApex.position[1]) / (START_HEIGHT - BALL_RADIUS));
+  }
+  for (const bounces of [5, 10, 20]) metrics.set(`apex_error_${bounces}`, bounces <= errors.length ? errors[bounces - 1] : NaN);
+  metrics.set('max_horizontal_drift', drift);
+  metrics.set('bounces', tracker.count);
+  metrics.set('last_apex_error', errors.length ? errors[errors.length - 1] : NaN);
+  metrics.set('start_height_m', start[1]);
+  metrics.set('ball_radius_m', BALL_RADIUS);
+  return tally;
+}
+
+// test4: how long the big cube stays balanced on the small one (test4's rule).
+// `stack`: {step(), bigCentre(), bigTiltDegrees(), deepestPenetration()}.
+function measureHold(stack, bigMass, options, metrics) {
+  const { SIDEWAYS_LIMIT, BIG_FALLEN_HEIGHT } = scene.test4;
+  let heldUntil = -1, maxTilt = 0, maxPenetration = 0;
+  const tally = { steps: 0, finite: true };
+  for (let i = 0, n = stepsFor(options); i < n; ++i) {
+    stack.step();
+    const p = stack.bigCentre();
+    if (!finite(p)) {
+      tally.finite = false;
+      break;
+    }
+    ++tally.steps;
+    const time = tally.steps * options.step;
+    if (heldUntil < 0 && (Math.hypot(p[0], p[2]) > SIDEWAYS_LIMIT || p[1] < BIG_FALLEN_HEIGHT)) heldUntil = time;
+    maxTilt = Math.max(maxTilt, stack.bigTiltDegrees());
+    maxPenetration = Math.max(maxPenetration, stack.deepestPenetration());
+  }
+  const held = heldUntil < 0 && tally.finite;
+  metrics.set('big_mass', bigMass);
+  metrics.set('seconds_held', held ? tally.steps * options.step : Math.max(heldUntil, 0));
+  metrics.set('held', held ? 1 : 0);
+  metrics.set('max_tilt_degrees', maxTilt);
+  metrics.set('max_penetration', maxPenetration);
+  return tally;
+}
+
+// test10: one launch, stepped until test10's rule decides it.
+// `cube`: {step(), cubeCentre(), cubeVelocityX()}.
+function launchAndResolve(makeLaunch, options, velocity, tally) {
+  const t = scene.test10;
+  const half = t.CUBE_SIDE / 2, farFace = t.WALL_X + t.WALL_THICKNESS / 2;
+  const reachSeconds = (farFace + half - t.LAUNCH_X) / velocity;
+  const cube = makeLaunch(velocity);
+  try {
+    for (let steps = 1; ; ++steps) {
+      cube.step();
+      ++tally.steps;
+      const p = cube.cubeCentre();
+      const vx = cube.cubeVelocityX();
+      if (!finite(p) || !Number.isFinite(vx)) return 'blew-up';
+      if (p[0] - half > farFace) return 'passed';
+      if (vx <= 0 && p[0] < t.WALL_X) return 'stopped';
+      if (steps * options.step > reachSeconds + t.SETTLE_SECONDS) return p[0] > farFace ? 'passed' : 'stopped';
+    }
+  } finally {
+    if (cube.dispose) cube.dispose();
+  }
+}
+
+// test10: one launch at --velocity, or the scan for the highest velocity with
+// every launch up to it stopped.
+function measureWall(makeLaunch, options, metrics) {
+  const t = scene.test10;
+  const tally = { steps: 0, finite: true };
+  let launched = 0, stopped = 0, passed = 0;
+  const run = (velocity) => {
+    const outcome = launchAndResolve(makeLaunch, options, velocity, tally);
+    ++launched;
+    if (outcome === 'stopped') ++stopped;
+    if (outcome === 'passed') ++passed;
+    if (outcome === 'blew-up') tally.finite = false;
+    return outcome;
+  };
+  const half = t.CUBE_SIDE / 2;
+  metrics.set('launch_velocity', options.findMaxVelocity ? 0 : options.velocity);
+  metrics.set('geometric_prediction', (half + t.WALL_THICKNESS) / options.step);
+  metrics.set('guaranteed_stop_velocity', (half + t.WALL_THICKNESS / 2) / options.step);
+  metrics.set('ccd', options.ccd ? 1 : 0);
+  // The scene as built, under test10's names (reportScene in the shared header).
+  metrics.set('cube_half_size_m', t.CUBE_HALF_SIZE);
+  metrics.set('cube_mass_kg', t.CUBE_MASS);
+  metrics.set('wall_thickness_m', t.WALL_THICKNESS);
+  metrics.set('wall_x_m', t.WALL_X);
+  metrics.set('wall_height_m', t.WALL_HEIGHT);
+  metrics.set('wall_width_m', t.WALL_WIDTH);
+  metrics.set('launch_x_m', t.LAUNCH_X);
+  metrics.set('launch_y_m', t.LAUNCH_Y);
+  metrics.set('ground_y_m', t.GROUND_Y);
+  if (!options.findMaxVelocity) {
+    run(options.velocity);
+  } else {
+    let maxVelocity = 0, firstFailure = 0, tested = 0;
+    for (let v = t.SCAN_FINE_STEP; v <= t.SCAN_LIMIT * (1 + 1e-12);
+      v = v < t.SCAN_FINE_LIMIT ? v + t.SCAN_FINE_STEP : v * (1 + t.SCAN_COARSE_RATIO)) {
+      const outcome = run(v);
+      if (outcome === 'blew-up') break;
+      ++tested;
+      if (outcome !== 'stopped') {
+        firstFailure = v;
+        break;
+      }
+      maxVelocity = v;
+    }
+    metrics.set('max_velocity', maxVelocity);
+    metrics.set('max_velocity_resolution', maxVelocity < t.SCAN_FINE_LIMIT ? t.SCAN_FINE_STEP : maxVelocity * t.SCAN_COARSE_RATIO);
+    metrics.set('first_failure_velocity', firstFailure);
+    metrics.set('tested_velocities', tested);
+  }
+  metrics.set('launches', launched);
+  metrics.set('stopped', stopped);
+  metrics.set('passed_through', passed);
+  return tally;
+}
+
+module.exports = { measureEnergy, measureElongation, measureBounces, measureHold, measureWall, defaultSeconds, stepsFor };

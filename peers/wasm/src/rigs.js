@@ -1,0 +1,84 @@
+'use strict';
+// What every web peer builds the same way: the composite pendulum's mass
+// properties (as peers/bullet_lab.cpp works them out), and the kinetic energy
+// and tilt of a body from its velocity, spin and orientation.
+const { scene } = require('./constants');
+
+// The rod and the bob as one body: its mass, the anchor-to-centre distance
+// along +x and the principal moments about the centre (x along the rod).
+function pendulumMass(bobMass) {
+  const { ROD_MASS, ROD_LENGTH, ROD_THICKNESS, BOB_RADIUS, BOB_DISTANCE } = scene.test2;
+  const mass = ROD_MASS + bobMass;
+  const centre = (ROD_MASS * ROD_LENGTH / 2 + bobMass * BOB_DISTANCE) / mass;
+  const bobOwn = 0.4 * bobMass * BOB_RADIUS * BOB_RADIUS;
+  const rodAlong = (ROD_MASS * 2 * ROD_THICKNESS * ROD_THICKNESS) / 12;
+  const rodAcross = (ROD_MASS * (ROD_LENGTH * ROD_LENGTH + ROD_THICKNESS * ROD_THICKNESS)) / 12 +
+    ROD_MASS * (ROD_LENGTH / 2 - centre) ** 2;
+  const across = rodAcross + bobOwn + bobMass * (BOB_DISTANCE - centre) ** 2;
+  return { mass, centre, inertia: [rodAlong + bobOwn, across, across],
+    rodOffset: ROD_LENGTH / 2 - centre, bobOffset: BOB_DISTANCE - centre };
+}
+
+// q^-1 v q for a unit quaternion [x, y, z, w]: a world vector in body axes.
+function toBody(q, v) {
+  const [x, y, z, w] = q;
+  // v' = v + 2 r x (r x v + w' v) with r = -q.xyz, w' = w
+  const rx = -x, ry = -y, rz = -z;
+  const cx = ry * v[2] - rz * v[1] + w * v[0];
+  const cy = rz * v[0] - rx * v[2] + w * v[1];
+  const cz = rx * v[1] - ry * v[0] + w * v[2];
+  return [v[0] + 2 * (ry * cz - rz * cy), v[1] + 2 * (rz * cx - rx * cz), v[2] + 2 * (rx * cy - ry * cx)];
+}
+
+// 0.5 m v^2 + 0.5 w^T I w, I the principal moments in body axes.
+function kineticEnergy(mass, inertia, velocity, spin, orientation) {
+  const w = toBody(orientation, spin);
+  const v2 = velocity[0] ** 2 + velocity[1] ** 2 + velocity[2] ** 2;
+  return 0.5 * mass * v2 + 0.5 * (inertia[0] * w[0] ** 2 + inertia[1] * w[1] ** 2 + inertia[2] * w[2] ** 2);
+}
+
+// The angle between a body's local y axis and world y, in degrees.
+function tiltDegrees(q) {
+  const [x, , z] = q;
+  const up = 1 - 2 * (x * x + z * z);  // world y of the local y axis
+  return (Math.acos(Math.max(-1, Math.min(1, up))) * 180) / Math.PI;
+}
+
+// The stack's readout, for every engine whose contacts cannot be read back
+// cheaply: overlap from the centres' heights (exact while the cubes stand upright).
+// `world`: {step(), position(body), transform(body) -> [position, quaternion]}.
+function stackReadout(world, small, big) {
+  const t = scene.test4;
+  return {
+    step: () => world.step(),
+    bigCentre: () => world.position(big),
+    bigTiltDegrees: () => tiltDegrees(world.transform(big)[1]),
+    deepestPenetration: () => {
+      const s = world.position(small)[1], b = world.position(big)[1];
+      return Math.max(0, s + t.SMALL_SIDE / 2 - (b - t.BIG_SIDE / 2), -(s - t.SMALL_SIDE / 2));
+    },
+  };
+}
+
+// How far the lowest corner of a cube of side `side` is below y = 0 (0 if
+// above): each local axis reaches |its world y| x half the side.
+function depthBelowGround(position, q, side) {
+  const [x, y, z, w] = q;
+  const row = [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)];
+  const reach = (side / 2) * row.reduce((sum, r) => sum + Math.abs(r), 0);
+  return Math.max(0, reach - position[1]);
+}
+
+// test6's readout from any engine's positions and orientations.
+// `world`: {step(), position(body), rotation(body)}.
+function uprightReadout(world, small, big) {
+  const t = scene.test6;
+  return {
+    step: () => world.step(),
+    bigCentre: () => world.position(big),
+    bigTiltDegrees: () => tiltDegrees(world.rotation(big)),
+    smallSink: () => depthBelowGround(world.position(small), world.rotation(small), t.SMALL_SIDE),
+  };
+}
+
+module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout };
