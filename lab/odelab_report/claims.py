@@ -151,7 +151,7 @@ class _Formatter(string.Formatter):
             if spec[0] == "p":
                 return md.pct(value, digits)
             low, high = md.num(min(value), digits), md.num(max(value), digits)
-            return f"{low} to {high}" if low != high else f"{low} every time"
+            return f"{low} to {high}" if low != high else f"all {low}"
         return super().format_field(value, spec)
 
 
