@@ -26,12 +26,15 @@ figures.
 - Speed-accuracy points are timed on runs of at least 30 000 steps (a run of
   a few milliseconds is timed by the scheduler more than by ODE), three times
   where a run is under 100 000 steps, and the median is used. The remedies'
-  costs and test3's real-time factors: the median of three (five for test10's
-  `--ccd`, whose runs are short).
-- test5's cost is the scene's own `ms_per_step` (the mean wall time of
-  collide + step over the last simulated second) multiplied by the run's CPU
-  share: those runs last many seconds and cannot be repeated cheaply, and a
-  busy machine would otherwise shrink the "real-time" stack by the share."""
+  costs and test3's real-time factors: the median of three. test10's
+  `--ccd` cost: eleven pairs (five in `--quick`), plain and `--ccd` run at
+  the same time, the median of the pairs' ratios and their range.
+- test5's cost is the scene's own CPU time per step over the last simulated
+  second (what a step costs with a core to itself); the tallest stack at the
+  thesis's default and at 10 iterations is searched five times (three in
+  `--quick`), interleaved, and given as median and range.
+- Where two timing-limited figures are compared, ranges that overlap are
+  said to overlap: no winner is named."""
 
 
 def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partial_names):
