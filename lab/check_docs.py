@@ -28,7 +28,8 @@ and it is not
 
 A figure is held by a CSV when some number in a cell of a committed CSV
 (any `git ls-files '*.csv'`, numbers inside text cells included) rounds to
-it at the precision the doc writes. A number written as a literal in the
+it at the precision the doc writes (a whole number's trailing zeros are
+not significant: 11900 is held by 11892). A number written as a literal in the
 programs' committed C++ sources (`*.cpp`, `*.h`: gravity 9.823, a wall
 0.05 m thick) is a setting the code states, not a measurement, and passes
 the same way. Rounding: 0.064 is held by 0.06403 (|v - d| is at
@@ -98,9 +99,13 @@ TOKEN = re.compile(r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?")
 
 
 def committed(root, *patterns):
-    listed = subprocess.run(["git", "-C", str(root), "ls-files", *patterns], capture_output=True, text=True,
-                            check=True)
-    return [root / name for name in listed.stdout.split() if (root / name).exists()]
+    """The files git tracks under `root` matching `patterns`; outside a git
+    checkout (an unpacked source archive), every such file but build output."""
+    listed = subprocess.run(["git", "-C", str(root), "ls-files", *patterns], capture_output=True, text=True)
+    if listed.returncode == 0:
+        return [root / name for name in listed.stdout.split() if (root / name).exists()]
+    return [p for pattern in patterns for p in root.rglob(pattern)
+            if not any(part.startswith("build") or part.startswith(".") for part in p.relative_to(root).parts)]
 
 
 def numbers_in(text, values):
@@ -125,9 +130,13 @@ def held_numbers(root):
 
 
 def half_unit(written):
-    """Half a unit of the last digit written (0.064 -> 0.0005; 1.97e6 -> 5e3)."""
+    """Half a unit of the last significant digit written (0.064 -> 0.0005;
+    1.97e6 -> 5e3; 11900 -> 50)."""
     mantissa, _, exponent = written.replace(",", "").lstrip("-").lower().partition("e")
-    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    # A whole number's trailing zeros are not significant (11900 for 11892).
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else -(len(mantissa) - len(mantissa.rstrip("0")))
+    if mantissa.strip("0") == "":
+        decimals = 0
     return 0.5 * 10.0 ** max(-320, min(300, -decimals + (int(exponent) if exponent else 0)))
 
 
