@@ -7,6 +7,7 @@ import csv
 from pathlib import Path
 
 from .. import markdown as md
+from ..header import ode_version
 from ..runner import RunSpec, median
 from .base import Experiment, Outcome
 from .limit_test5 import SETTLE, SPAWN_INTERVAL, stack_spec, step_cost
@@ -149,6 +150,7 @@ class Thesis(Experiment):
         results.update({k: v for k, v in zip(timed, timed_results)})
         ctx.advance(len(timed))
 
+        second = self.second_build(ctx, specs, timed, keys)
         rows = []
         rebuilt = choices.rebuild_rows()
         derived = self.derived_sensitivity(results, n_large)
@@ -168,21 +170,30 @@ class Thesis(Experiment):
                              havok_6_5_quoted=reference["havok_6_5_quoted_by_thesis"],
                              thesis_note=reference["note"], this_build=measured, verdict=verdict, how=how,
                              sensitivity=sensitivity, rule=rule, command=command))
+            if second:
+                rows[-1][second["column"]] = second["rows"][len(rows) - 1]
         values_name = ctx.write_csv("thesis-values", ["key", "name", "definition", "value", "value_min", "value_max",
                                                       "repeats"], self.values(results),
                                     notes=["the figures of thesis.csv's rows by name; value_min / value_max: the "
                                            "least and largest over the repeats (one run: the value)"])
+        second_note = [f"{second['column']}: {second['note']}"] if second else []
         csv_name = ctx.write_csv("thesis", list(rows[0].keys()), rows,
                                  notes=[f"reference: lab/reference/thesis-figures.csv (a copy of the project's "
                                         f"thesis figures); 'about X' is reproduced within a factor {CLOSE}",
-                                        "ode_0_11_1_rebuild: lab/reference/ode-0.11.1-rebuild.csv (these programs "
-                                        "built against ODE 0.11.1 rebuilt from its tag)",
+                                        f"ode_0_11_1_rebuild: lab/reference/ode-0.11.1-rebuild.csv (the programs of commit "
+                                        f"{choices.rebuild_commit()}, not this one, built against ODE 0.11.1 rebuilt "
+                                        "from its tag)",
                                         "sensitivity: the thesis's unstated choices varied for the rows not "
-                                        "reproduced (experiments/thesis_choices.py)"])
-        table = md.table(["test", "quantity", "conditions", "thesis ODE 0.11.1", "ODE 0.11.1 rebuilt",
-                          "Havok 6.5 (quoted)", "this build", "verdict", "how", "unstated choices varied"],
-                         [[r["test"], r["quantity"], r["conditions"], r["thesis_ode_0_11_1"], r["ode_0_11_1_rebuild"],
-                           r["havok_6_5_quoted"] or "-", r["this_build"], f"**{r['verdict']}**", r["how"],
+                                        "reproduced (experiments/thesis_choices.py)"] + second_note)
+        rebuild_commit = choices.rebuild_commit()
+        extra = [second["column"]] if second else []
+        table = md.table(["test", "quantity", "conditions", "thesis ODE 0.11.1",
+                          f"ODE 0.11.1 rebuilt (programs of commit {rebuild_commit})"] +
+                         [f"{c} (--second-build)" for c in extra] +
+                         ["Havok 6.5 (quoted)", "this build", "verdict", "how", "unstated choices varied"],
+                         [[r["test"], r["quantity"], r["conditions"], r["thesis_ode_0_11_1"], r["ode_0_11_1_rebuild"]] +
+                          [r[c] for c in extra] +
+                          [r["havok_6_5_quoted"] or "-", r["this_build"], f"**{r['verdict']}**", r["how"],
                            r["sensitivity"] or "-"]
                           for r in rows])
         commands = md.table(["test", "conditions", "rule for the verdict", "command (build/tests/...)"],
@@ -196,7 +207,7 @@ A verdict is computed from the measurement by the rule in the second table: a fi
 {counts['not tested']} not tested (no metric shows them);
 {with_choice} of those not reproduced are reproduced with another value of a choice the thesis does not state
 (the last column: what was varied, over which values, and what it gave). The "ODE 0.11.1 rebuilt" column is
-these programs built against the thesis's ODE version (lab/reference/ode-0.11.1-rebuild.csv).
+the programs of commit {rebuild_commit} built against the thesis's ODE version (lab/reference/ode-0.11.1-rebuild.csv){', and the "--second-build" column these programs built against another ODE' if second else ''}.
 
 {table}
 
@@ -209,6 +220,29 @@ Rules and commands (every command adds `--headless`):
                     f"{counts['differs']} differ at the scenes' defaults, {counts['not tested']} not tested; {with_choice} of the others reproduced with another value of a "
                     f"choice the thesis does not state (details in section 1)."]
         return Outcome(text, headline)
+
+    def second_build(self, ctx, specs, timed, keys):
+        """The rows measured again with the programs of --second-build: the
+        same runs (not the sweeps), judged by the same rules. None without."""
+        runner = getattr(ctx.runner, "second", None)
+        if runner is None:
+            return None
+        base = [k for k in keys if not k.startswith("sweep:")]
+        results = dict(zip(base, runner.map([specs[k] for k in base])))
+        repeats = 1 if ctx.quick else 3
+        results.update(zip(timed, runner.parallel([lambda a=a: runner.run_timed(*a, repeats) for a in timed.values()])))
+        q = ctx.quick
+        n_small, n_large = (15, 30) if q else (40, 90)
+        judged = [judge(reference)[:2] for reference, judge in
+                  zip(reference_rows(), self.judges(results, q, 5 if q else 20, 10 if q else 60, n_small, n_large))]
+        version = ode_version(runner.build_dir).split(",")[0]
+        this = ode_version(ctx.runner.build_dir).split(",")[0]
+        commit = dict(ctx.header).get("commit", "unknown")[:7]
+        column = f"ode_{version.replace('.', '_')}_beside_{this.replace('.', '_')}_programs_{commit}"
+        return dict(column=column, rows=[f"{measured} ({verdict})" for measured, verdict in judged],
+                    note=(f"these programs (project commit {commit}) built against ODE {version} (as its test2 "
+                          f"reports) at {runner.build_dir}, beside this build's ODE {this}; the same runs as "
+                          "this_build (not the sweeps), judged by the same rules"))
 
     @staticmethod
     def values(results):

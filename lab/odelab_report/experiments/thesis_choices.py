@@ -6,6 +6,7 @@ reproduce the thesis's figure and how far the figure moves. Also the ODE
 0.11.1 rebuild's figure for each row, read from lab/reference/."""
 
 import csv
+import re
 from pathlib import Path
 
 from .. import markdown as md
@@ -37,6 +38,13 @@ REBUILD_ROWS = {
 
 def rebuild_rows():
     return read_csv(REBUILD)
+
+
+def rebuild_commit():
+    """The project commit whose programs made the rebuild's figures, as its
+    file's header says ("as of commit X")."""
+    found = re.search(r"as of commit (\w+)", REBUILD.read_text())
+    return found.group(1) if found else "unknown"
 
 
 def rebuild_figure(row_key, rows):
