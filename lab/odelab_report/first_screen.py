@@ -181,7 +181,7 @@ def rows():
              figure_from_thesis("test10", "test10_a", "max_velocity", "{v:n} m/s")],
             [thesis_cell("test10_a")],
             [Claim("first.test10.decides", "the step ({a:n} / {b:n} / {c:n} m/s at step 0.01 / 0.001 / 0.0001) "
-                   "unless `--ccd`: {d:n4} m/s at 0.001 (the scan's limit) for {e:p2} wall time per launch "
+                   "unless `--ccd`: {d:n4} m/s at 0.001 (the scan's limit), its wall time per launch {e:p2} against plain "
                    "(pairs {lo:p2} to {hi:p2}, 200 m/s launches)",
                    {"a": q("limit-test10.csv", "max_velocity", step_s=0.01),
                     "b": q("limit-test10.csv", "max_velocity", step_s=0.001),
