@@ -36,6 +36,11 @@ the same way. Rounding: 0.064 is held by 0.06403 (|v - d| is at
 most half a unit of the last digit shown), and a percentage also by the
 fraction (17% by 0.1704). Signs are ignored.
 
+Documents named in lab/reference/docs-pending.txt (one path a line, each
+with its reason after a #) are still checked and their figures listed, but
+do not fail the check: a page whose owner has not yet moved its figures into
+a CSV. The list is meant to shrink to nothing.
+
 Usage: check_docs.py [REPO_ROOT]   (exit 0: every figure held; 1: the
 figures held by no CSV, each with its file and line; 2: bad usage)"""
 
@@ -145,8 +150,16 @@ def held(values, target, tolerance):
     return i < len(values) and values[i] <= target + tolerance
 
 
+def pending(root):
+    path = root / "lab" / "reference" / "docs-pending.txt"
+    if not path.exists():
+        return set()
+    return {line.split("#")[0].strip() for line in path.read_text().splitlines() if line.split("#")[0].strip()}
+
+
 def check(root):
     values = held_numbers(root)
+    waiting = pending(root)
     docs = [root / "README.md"] + sorted(p for p in (root / "doc").rglob("*.md") if "results" not in p.parts)
     problems, counted = [], 0
     for doc in docs:
@@ -159,8 +172,9 @@ def check(root):
             if not ok and unit == "%":
                 ok = held(values, abs(value) / 100, tolerance / 100)
             if not ok:
-                problems.append(f"{doc.relative_to(root)}:{line}: {written}{'' if unit in ('', '%') else ' ' + unit} "
-                                f"is held by no committed CSV")
+                name = str(doc.relative_to(root))
+                problems.append((name in waiting, f"{name}:{line}: {written}{'' if unit in ('', '%') else ' ' + unit} "
+                                                  f"is held by no committed CSV"))
     return problems, counted, len(docs)
 
 
@@ -173,10 +187,12 @@ def main(argv):
         sys.stderr.write(f"check_docs: {root} is not the project's root (no doc/ folder)\n")
         return 2
     problems, counted, files = check(root)
-    for problem in problems:
-        print("check_docs: " + problem)
-    print(f"check_docs: {counted} measured figures in {files} documents, {len(problems)} held by no committed CSV")
-    return 1 if problems else 0
+    for waiting, problem in problems:
+        print("check_docs: " + ("(pending, lab/reference/docs-pending.txt) " if waiting else "") + problem)
+    failing = sum(not waiting for waiting, _ in problems)
+    print(f"check_docs: {counted} measured figures in {files} documents, {len(problems)} held by no committed CSV "
+          f"({len(problems) - failing} in pending documents)")
+    return 1 if failing else 0
 
 
 if __name__ == "__main__":
