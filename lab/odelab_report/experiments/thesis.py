@@ -352,6 +352,9 @@ Rules and commands (every command adds `--headless`):
 
         @expect("test4", "step 0.0001")
         def test4_small(reference):
+            if figures(reference) != [15000, 75000]:
+                raise RuntimeError("thesis-figures.csv: test4's step-0.0001 runs are made at 15 t, 75 t and twice "
+                                   f"that; the row says {reference['figure']}")
             held = {m: bool(r[f"t4_4_{m}"].m("held")) for m in (15000, 75000, 150000)}
             measured = ", ".join(f"{m / 1000:g} t {'holds' if h else 'falls'}" for m, h in held.items())
             if held[15000] and held[75000] and held[150000]:
