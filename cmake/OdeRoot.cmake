@@ -12,7 +12,8 @@ if(NOT EXISTS "${ODELAB_ODE_ROOT}/include/ode/ode.h")
                       "prefix or a source tree built with configure && make")
 endif()
 # An ODE before 0.12 (no threading API in ode.h): the programs are built
-# with cmake/ode-before-0.12.h force-included (its first comment says why).
+# with cmake/ode-before-0.12/ode_before_0_12.h force-included (its first comment
+# says why), and that folder ahead on the include path for ode/threading_impl.h.
 macro(odelab_ode_compatibility)
   include(CheckCXXSourceCompiles)
   get_target_property(ODELAB_ODE_INCLUDES PkgConfig::ODE INTERFACE_INCLUDE_DIRECTORIES)
@@ -24,9 +25,10 @@ int main() { dThreadingImplementationID id = 0; return id != 0; }" ODELAB_ODE_HA
   unset(CMAKE_REQUIRED_DEFINITIONS)
   if(NOT ODELAB_ODE_HAS_THREADING)
     target_compile_options(PkgConfig::ODE INTERFACE
-                           "SHELL:-include ${CMAKE_CURRENT_LIST_DIR}/ode-before-0.12.h")
+                           "SHELL:-include ${CMAKE_CURRENT_LIST_DIR}/ode-before-0.12/ode_before_0_12.h")
+    target_include_directories(PkgConfig::ODE BEFORE INTERFACE "${CMAKE_CURRENT_LIST_DIR}/ode-before-0.12")
     target_compile_definitions(PkgConfig::ODE INTERFACE "ODELAB_ODE_VERSION=\"${ODELAB_ODE_VERSION_TEXT}\"")
-    message(STATUS "ODE has no threading API (before 0.12): building with cmake/ode-before-0.12.h")
+    message(STATUS "ODE has no threading API (before 0.12): building with cmake/ode-before-0.12/")
   endif()
 endmacro()
 
