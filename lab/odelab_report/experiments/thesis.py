@@ -8,7 +8,7 @@ from pathlib import Path
 
 from .. import markdown as md
 from ..header import ode_version
-from ..runner import RunSpec, median
+from ..runner import LabError, RunSpec, median
 from .base import Experiment, Outcome
 from .limit_test5 import SETTLE, SPAWN_INTERVAL, stack_spec, step_cost
 from .limit_test8 import estimate, run_spec as test8_spec
@@ -228,13 +228,31 @@ Rules and commands (every command adds `--headless`):
         if runner is None:
             return None
         base = [k for k in keys if not k.startswith("sweep:")]
-        results = dict(zip(base, runner.map([specs[k] for k in base])))
+
+        def kept(call):
+            # A run the other build cannot make (an older ODE may lack what a
+            # program asks of it) leaves its rows "not measured", not the report.
+            try:
+                return call()
+            except LabError as error:
+                if str(error) == "interrupted":
+                    raise
+                return None
+
+        results = dict(zip(base, runner.parallel([lambda k=k: kept(lambda: runner.run(specs[k])) for k in base])))
         repeats = 1 if ctx.quick else 3
-        results.update(zip(timed, runner.parallel([lambda a=a: runner.run_timed(*a, repeats) for a in timed.values()])))
+        results.update(zip(timed, runner.parallel([lambda a=a: kept(lambda: runner.run_timed(*a, repeats))
+                                                   for a in timed.values()])))
         q = ctx.quick
         n_small, n_large = (15, 30) if q else (40, 90)
-        judged = [judge(reference)[:2] for reference, judge in
-                  zip(reference_rows(), self.judges(results, q, 5 if q else 20, 10 if q else 60, n_small, n_large))]
+        judged = []
+        for reference, judge in zip(reference_rows(), self.judges(results, q, 5 if q else 20, 10 if q else 60,
+                                                                  n_small, n_large)):
+            try:
+                judged.append(judge(reference)[:2])
+            except (TypeError, ValueError, KeyError, AttributeError, ZeroDivisionError) as error:
+                # A run that failed or a metric the other build did not report: said, not fatal.
+                judged.append((f"not measured ({type(error).__name__})", "-"))
         version = ode_version(runner.build_dir).split(",")[0]
         this = ode_version(ctx.runner.build_dir).split(",")[0]
         commit = dict(ctx.header).get("commit", "unknown")[:7]
