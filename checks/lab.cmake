@@ -14,3 +14,16 @@ set_tests_properties(lab_report_quick PROPERTIES
 add_test(NAME lab_report_files_valid
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_report.py ${ODELAB_LAB_QUICK_DIR})
 set_tests_properties(lab_report_files_valid PROPERTIES FIXTURES_REQUIRED lab_report LABELS lab)
+
+# ---- the committed report and the docs ----
+# Every sentence of the committed doc/results/RESULTS.md's first table,
+# recomputed from the committed CSVs by its rule (claims.csv); every measured
+# figure in README.md and doc/ held by a committed CSV (lab/check_docs.py
+# says which numbers count).
+add_test(NAME lab_committed_report_claims
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_report.py ${CMAKE_SOURCE_DIR}/doc/results)
+set_tests_properties(lab_committed_report_claims PROPERTIES LABELS lab)
+add_test(NAME lab_docs_figures_in_csvs
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_docs.py ${CMAKE_SOURCE_DIR})
+set_tests_properties(lab_docs_figures_in_csvs PROPERTIES LABELS lab)
+# (lab/tests/test_claims.py runs under lab_executor_units, which discovers lab/tests.)

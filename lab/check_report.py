@@ -10,17 +10,30 @@
   root and a size;
 - every CSV and plot RESULTS.md names exists;
 - thesis.csv, when there, has the ODE 0.11.1 rebuild's column and a
-  sensitivity for every row not reproduced.
+  sensitivity for every row with a thesis figure not reproduced;
+- the table at the top ("At a glance") has its seven columns and a row per
+  scene, test0 to test10; every sentence in claims.csv, recomputed from the
+  folder's CSVs by its lookups, gives the same text and its rule holds; each
+  row's figure cell is its claim's text (or says the data are absent).
 
 Usage: check_report.py REPORT_DIR   (exit 0: all good; 1: problems, listed)"""
 
+import csv
 import re
 import struct
 import sys
 import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from odelab_report.claims import read_rows, recheck  # noqa: E402 (standard library only)
+
 HEADER_KEYS = ("ODE", "compiler", "CPU", "date", "commit")
+FIRST_COLUMNS = ["scene", "measured quantity (definition)", "ODE at the thesis's settings",
+                 "thesis (ODE 0.11.1) and verdict", "what decides it (measured)", "cheapest within 1% / 0.1%",
+                 "best other engine at step 0.001"]
+SCENES = [f"test{n}" for n in range(11)]
+ABSENT = "not in this report"
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
@@ -66,13 +79,54 @@ def check_csv(path):
 def check_thesis(path):
     """thesis.csv (issue 12): the ODE 0.11.1 rebuild's column, and a
     sensitivity for every row the lab does not reproduce."""
-    import csv
     rows = list(csv.DictReader(line for line in path.read_text().splitlines() if not line.startswith("#")))
     if rows and "ode_0_11_1_rebuild" not in rows[0]:
         return ["no ode_0_11_1_rebuild column"]
     return [f"row {i + 1} ({row['test']}, {row['conditions']}) is '{row['verdict']}' with an empty sensitivity"
             for i, row in enumerate(rows)
-            if not row["verdict"].startswith("reproduced") and not row.get("sensitivity", "").strip()]
+            if row["verdict"].split(";")[0] in ("partly", "differs") and row.get("thesis_figure")
+            and not row.get("sensitivity", "").strip()]
+
+
+def cells(line):
+    """The cells of a markdown table row ('\\|' inside a cell is a '|')."""
+    parts = re.split(r"(?<!\\)\|", line.strip())[1:-1]
+    return [part.strip().replace("\\|", "|") for part in parts]
+
+
+def check_first_screen(folder, text):
+    """The table under "## At a glance": columns, a row per scene, and every
+    sentence recomputed from the CSVs (claims.csv)."""
+    lines = text.splitlines()
+    try:
+        start = lines.index("## At a glance")
+    except ValueError:
+        return ["RESULTS.md has no '## At a glance' table at the top"]
+    table = []
+    for line in lines[start + 1:]:
+        if line.startswith("|"):
+            table.append(line)
+        elif table:
+            break
+    problems = []
+    if not table or cells(table[0]) != FIRST_COLUMNS:
+        return [f"the first table's columns are {cells(table[0]) if table else 'missing'}, expected {FIRST_COLUMNS}"]
+    body = [cells(line) for line in table[2:]]
+    if [row[0] for row in body] != SCENES:
+        problems.append(f"the first table's rows are {[row[0] for row in body]}, expected {SCENES}")
+    claims_path = folder / "claims.csv"
+    claims = read_rows(claims_path) if claims_path.exists() else []
+    problems += recheck(folder, claims)
+    shown = {row["key"]: row["text"] for row in claims}
+    every_cell = {cell for row in body for cell in row}
+    for row in claims:
+        if row["text"] not in every_cell:
+            problems.append(f"claim {row['key']} ('{row['text']}') is in no cell of the first table")
+    for row in body:
+        figure = [v for k, v in shown.items() if k.startswith(f"first.{row[0]}.figure")]
+        if len(row) > 2 and row[2] != ABSENT and row[2] not in figure:
+            problems.append(f"{row[0]}: the figure '{row[2]}' is no claim recomputed from the CSVs")
+    return problems
 
 
 def main(argv):
@@ -89,6 +143,8 @@ def main(argv):
         text = results.read_text()
         if not all(f"| {key} |" in text for key in HEADER_KEYS):
             problems.append("RESULTS.md: the run header is incomplete")
+    if text:
+        problems += [f"first table: {problem}" for problem in check_first_screen(folder, text)]
     named = set(re.findall(r"\]\(([^)#]+\.(?:png|svg|csv))\)", text))
     for name in sorted(named):
         if not (folder / name).exists():

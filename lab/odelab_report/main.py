@@ -45,6 +45,9 @@ def parse_args(argv):
                         help="run only these experiments or groups (repeatable, or a comma list)")
     parser.add_argument("--build-dir", type=Path, default=REPO_ROOT / "build" / "tests", metavar="DIR",
                         help="folder holding the test programs (default: build/tests of this checkout)")
+    parser.add_argument("--second-build", type=Path, default=None, metavar="DIR",
+                        help="the test programs built against another ODE (cmake -DODELAB_ODE_ROOT=...): the "
+                             "thesis table gains a column measured with them")
     parser.add_argument("--executor", default="local", metavar="local|dask:ADDRESS|srun",
                         help="where the programs run: child processes here (default), tasks on the Dask "
                              "scheduler at ADDRESS, or srun steps of the Slurm allocation (doc/cluster.md)")
@@ -138,6 +141,8 @@ def _main(argv, stop):
         return 3
     build_dir = args.build_dir.resolve()
     programs = check_build(build_dir, args.experiments)
+    if args.second_build:
+        check_build(args.second_build.resolve(), [e for e in args.experiments if e.name == "thesis"])
     out = args.out.resolve()
 
     try:
@@ -194,6 +199,9 @@ def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, execu
 
     progress = Progress(args.experiments, args.quick)
     runner = Runner(args.build_dir.resolve(), jobs, runs_dir, executor, retry=not args.quick)
+    runner.second = None
+    if args.second_build:  # the thesis experiment runs its rows on these programs too
+        runner.second = Runner(args.second_build.resolve(), jobs, runs_dir, executor, retry=False)
     outcomes, failures = {}, {}
     sys.stderr.write(f"odelab-report: {len(args.experiments)} experiments{' (quick)' if args.quick else ''}, "
                      f"{jobs} at a time, programs from {args.build_dir.resolve()}, "

@@ -1,7 +1,9 @@
 """Writes RESULTS.md: the run header, the headline findings, how timing was
 taken, then each section's experiments (their tables and embedded plots)."""
 
+from . import csvout, first_screen
 from . import markdown as md
+from .claims import Data, Sentences
 from .experiments import SECTIONS
 
 TIMING = """Cost is wall time, because that is what a user waits for, and it is this
@@ -24,12 +26,15 @@ figures.
 - Speed-accuracy points are timed on runs of at least 30 000 steps (a run of
   a few milliseconds is timed by the scheduler more than by ODE), three times
   where a run is under 100 000 steps, and the median is used. The remedies'
-  costs and test3's real-time factors: the median of three (five for test10's
-  `--ccd`, whose runs are short).
-- test5's cost is the scene's own `ms_per_step` (the mean wall time of
-  collide + step over the last simulated second) multiplied by the run's CPU
-  share: those runs last many seconds and cannot be repeated cheaply, and a
-  busy machine would otherwise shrink the "real-time" stack by the share."""
+  costs and test3's real-time factors: the median of three. test10's
+  `--ccd` cost: eleven pairs (five in `--quick`), plain and `--ccd` run at
+  the same time, the median of the pairs' ratios and their range.
+- test5's cost is the scene's own CPU time per step over the last simulated
+  second (what a step costs with a core to itself); the tallest stack at the
+  thesis's default and at 10 iterations is searched five times (three in
+  `--quick`), interleaved, and given as median and range.
+- Where two timing-limited figures are compared, ranges that overlap are
+  said to overlap: no winner is named."""
 
 
 def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partial_names):
@@ -42,6 +47,8 @@ def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partia
                       "figures are coarse."]
     if partial_names:
         lines += ["", "**Partial report**: only " + ", ".join(partial_names) + "."]
+    sentences = Sentences(Data(path.parent))
+    lines += ["", "## At a glance", "", FIRST_SCREEN_INTRO, "", first_screen.table(sentences)]
     lines += ["", "## Run", "", md.table(["", ""], [[k, v] for k, v in header] +
                                           [["report time", elapsed_text], ["every run", f"[{runs_csv}]({runs_csv})"]])]
     headline = [h for _, outcome in outcomes for h in outcome.headline]
@@ -69,6 +76,18 @@ def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partia
             lines += ["", f'<a id="{_anchor(experiment)}"></a>', "",
                       f"### {experiment.title} (`--only {experiment.name}`)", "", outcome.markdown.strip()]
     path.write_text("\n".join(lines) + "\n")
+    if sentences.shown:
+        csvout.write_csv(path.parent / "claims.csv", header, Sentences.COLUMNS, sentences.shown,
+                         notes=["every sentence of the table at the top of RESULTS.md: its text, the rule that let it "
+                                "appear, and the lookups into this folder's CSVs it was made from (lab/check_report.py "
+                                "recomputes each)"])
+
+
+FIRST_SCREEN_INTRO = """One row per scene, every cell read from this report's CSVs by a stated rule (claims.csv holds each
+cell's lookups and rule; lab/check_report.py recomputes them). ODE at the thesis's settings: one run unless a
+range is given. Cost is wall seconds per simulated second on this machine; "a tie within the timing's
+scatter" lists every setting whose fastest run is not slower than the cheapest's slowest, the default
+(QuickStep 20 at step 0.001) first."""
 
 
 def _anchor(experiment):

@@ -1,5 +1,6 @@
 """Every experiment of the report, in report order."""
 
+from .doc_samples import DocSamples
 from .energy_test2 import EnergyTest2
 from .limit_test4 import LimitTest4
 from .limit_test5 import LimitTest5
@@ -20,6 +21,7 @@ ALL = [
     SpeedTest2(), SpeedTest8(), SpeedTest9(),
     RemedyTest10(), RemedyTest4(), RemedyTest6(), RemedyTest5(),
     Peers(),
+    DocSamples(),
 ]
 
 SECTIONS = {
@@ -28,6 +30,7 @@ SECTIONS = {
     3: "Speed against accuracy",
     4: "Remedies",
     5: "Other engines, live",
+    6: "The sample runs the docs quote",
 }
 
 # Names --only accepts besides the experiments' own.

@@ -5,6 +5,7 @@ from .. import markdown as md
 from ..plots import limits as plots
 from ..runner import RunSpec
 from .base import Experiment, Outcome, log_space
+from .thesis_choices import figure_of
 
 BAND_FACTOR = 1.6
 
@@ -67,6 +68,7 @@ class LimitTest10(Experiment):
             table_rows.append([md.num(row["step_s"]), md.num(row["max_velocity"], 5),
                                md.num(row["geometric_prediction"], 4), md.num(row["guaranteed_stop_velocity"], 4),
                                md.num(row["max_velocity"] / row["geometric_prediction"], 3), band])
+        ratios = [row["max_velocity"] / row["geometric_prediction"] for row in rows]
         text = f"""**Failure rule** (test10's own): a launch fails when the whole cube ends beyond
 the wall's far face. The limit is the highest tested velocity with every
 launch up to it stopped, found by test10's scan (1 m/s steps to 1000 m/s, 0.1%
@@ -82,9 +84,8 @@ surface layer 0, one launch per velocity from the fixed launch point.
 
 {md.files_line([csv])}
 
-How to read it: the measured limit follows the straight line of slope -1,
-v = (h + t) / step within a few per cent: halve the step and the wall stops
-cubes twice as fast. Every arrival phase is stopped only below (h + t/2) / step;
+How to read it: the measured limit is {md.num(min(ratios), 3)} to {md.num(max(ratios), 3)} times
+v = (h + t) / step across the steps (the column limit / (h+t)/step). Every arrival phase is stopped only below (h + t/2) / step;
 between that and the measured limit it depends on where the cube happens to be
 at the steps around the wall, which is why bands of stopped velocities appear
 above the first failure."""
@@ -94,5 +95,6 @@ above the first failure."""
             headline.append(f"test10: the wall stops every cube up to {md.num(by[0.001]['max_velocity'], 4)} m/s at step "
                             f"0.001 and {md.num(by[0.0001]['max_velocity'], 4)} m/s at 0.0001 (prediction (h + t)/step: "
                             f"{md.num(by[0.001]['geometric_prediction'], 4)} / "
-                            f"{md.num(by[0.0001]['geometric_prediction'], 4)} m/s; thesis: 250 / about 3630).")
+                            f"{md.num(by[0.0001]['geometric_prediction'], 4)} m/s; thesis: {md.num(figure_of('test10', 'step 0.001')[0])} / "
+                            f"about {md.num(figure_of('test10', 'step 0.0001')[0])}).")
         return Outcome(text, headline)

@@ -6,6 +6,7 @@ from ..plots import limits as plots
 from ..runner import RunSpec
 from ..search import highest_passing
 from .base import Experiment, Outcome
+from .thesis_choices import FIGURES, read_csv
 
 MAX_PENETRATION = 0.05  # m: a tenth of the small cube's side
 SOLVERS = [("QuickStep 20", ["--solver", "quick", "--iterations", 20]), ("dWorldStep", ["--solver", "step"])]
@@ -107,8 +108,9 @@ carry; dWorldStep (the exact LCP solver) carries far more at the same step."""
         by = {(x["step_s"], x["solver"]): x for x in limits}
         headline = []
         q3, s3 = by.get((1e-3, "QuickStep 20")), by.get((1e-3, "dWorldStep"))
+        thesis = next(r for r in read_csv(FIGURES) if r["test"] == "test4" and r["conditions"].startswith("step 0.001"))
         if q3 and s3:
             headline.append(f"test4: at step 0.001 QuickStep holds up to {md.num(q3['heaviest_held_kg'], 3)} kg on the "
                             f"5 kg cube for {seconds:g} s, dWorldStep {md.num(s3['heaviest_held_kg'], 3)} kg (thesis: "
-                            f"fails at 5000 kg; Havok 4000 kg).")
+                            f"{thesis['ode_0_11_1_thesis']}; Havok {thesis['havok_6_5_quoted_by_thesis']}).")
         return Outcome(text, headline)

@@ -22,6 +22,26 @@ def drop_height(r):
     return r.m("start_height_m") - r.m("ball_radius_m")
 
 
+def reading(summary):
+    """What the table shows, each figure computed: how the error grows from
+    10 to 20 bounces (2x when the loss per bounce is constant), and how much
+    each decade of CFM multiplies the error after 20 bounces."""
+    twenty = [(c, e10, e20) for c, _, _, _, e10, e20, _ in summary if e10 and e20]
+    growth = [e20 / e10 for _, e10, e20 in twenty if e20 < FAILURE_FRACTION * 100]
+    parts = []
+    if growth:
+        parts.append(f"from 10 to 20 bounces the error grows {md.num(min(growth), 3)}x to {md.num(max(growth), 3)}x "
+                     f"across the CFMs (2x is a constant loss per bounce)")
+    decades = [(a, b, eb / ea) for (a, _, ea), (b, _, eb) in zip(twenty, twenty[1:]) if a > 0 and b == 10 * a]
+    if decades:
+        parts.append("each decade of CFM multiplies the error after 20 bounces by " +
+                     ", ".join(f"{md.num(ratio, 2)}x ({md.num(a)} to {md.num(b)})" for a, b, ratio in decades))
+    zero = [e20 for c, _, e20 in twenty if c == 0]
+    if zero:
+        parts.append(f"CFM 0 loses {md.num(zero[0] / 20, 2)} of the drop per bounce")
+    return "; ".join(parts) + "." if parts else "no CFM gave 20 bounces."
+
+
 class LimitTest9(Experiment):
     name = "limit-test9"
     title = "test9: apex error against bounce count"
@@ -68,9 +88,7 @@ iterations, {seconds} s per run.
 
 {md.files_line([csv])}
 
-How to read it: the loss per bounce is roughly constant for a given CFM, so
-the error grows linearly with the bounce count, and tenfold per decade of
-CFM. CFM 0 keeps the bounce exact (about 1e-10 per bounce)."""
+How to read it: {reading(summary)}"""
         lost = {c: e20 for c, _, _, _, _, e20, _ in summary}
         headline = []
         if lost.get(1e-6) is not None and lost.get(0.0) is not None:

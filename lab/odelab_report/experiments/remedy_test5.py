@@ -143,8 +143,7 @@ and the height missing from N x plate thickness / 5%; infinite for a blow-up or 
 plate frozen in the air. Its real-time part is stricter than the rows
 above: the larger of the last second's and the whole run's cost per step
 (CPU time), so a stack auto-disable puts to rest for the timed
-second must also have been built in real time. ODE 0.16.2's QuickStep has
-no warm start to switch on. The descent ended at
+second must also have been built in real time. The descent ended at
 {stack_tuning.describe(tuned_setting)} (margin {md.num(tuned_margin[0], 3)},
 bound by {tuned_margin[1]}); limit-test5's height search from there (x1.2
 steps, bisection to 8%, the stricter rule) gives

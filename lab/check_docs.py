@@ -1,0 +1,199 @@
+#!/usr/bin/python3
+"""Fails when a measured figure in the docs is held by no committed CSV, so
+that a figure copied from an older run cannot outlive the data.
+
+Which numbers count as measured figures. In README.md and every doc/**/*.md
+(not doc/results/, which lab/check_report.py checks against its own CSVs),
+after removing code blocks, `code spans` (option values, commands, exit
+statuses, file names), link targets, URLs and HTML comments, a number is a
+measured figure when it is
+
+- a decimal (a point, or an exponent: 0.064, 1.97e6, 2.8e-9) or a
+  percentage (17%), or
+- a whole number of at least two digits directly followed by a unit of
+  measure: s, ms, us, min, kg, t, m, cm, mm, m/s, J, N, x (a ratio),
+  plates, fps, deg, degrees, Hz;
+
+and it is not
+
+- part of a word or a name (test10, x86_64, H100, libode8, 0x1f),
+- a version (two points or more: 0.16.2; or a decimal after ODE, version,
+  v, Havok, Bullet, MuJoCo, Python, CMake, C++, GCC, g++, Debian, Ubuntu,
+  Windows, gtest, matplotlib, Jolt, Rapier),
+- a section of the thesis or a document (after chapter, section, thesis,
+  figure, table, issue, §, or at the start of a heading),
+- a date or a clock time (2026-11-24, 6:16),
+- one side of a size or a count pair with an x between whole numbers
+  (1280 x 720, 10 x 0.2 x 10 is a size: the x between numbers marks it).
+
+A figure is held by a CSV when some number in a cell of a committed CSV
+(any `git ls-files '*.csv'`, numbers inside text cells included) rounds to
+it at the precision the doc writes (a whole number's trailing zeros are
+not significant: 11900 is held by 11892). A number written as a literal in the
+programs' committed C++ sources (`*.cpp`, `*.h`: gravity 9.823, a wall
+0.05 m thick) is a setting the code states, not a measurement, and passes
+the same way. Rounding: 0.064 is held by 0.06403 (|v - d| is at
+most half a unit of the last digit shown), and a percentage also by the
+fraction (17% by 0.1704). Signs are ignored.
+
+Documents named in lab/reference/docs-pending.txt (one path a line, each
+with its reason after a #) are still checked and their figures listed, but
+do not fail the check: a page whose owner has not yet moved its figures into
+a CSV. The list is meant to shrink to nothing.
+
+Usage: check_docs.py [REPO_ROOT]   (exit 0: every figure held; 1: the
+figures held by no CSV, each with its file and line; 2: bad usage)"""
+
+import bisect
+import csv
+import math
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+UNITS = r"(?:m/s|ms|us|µs|min|kg|cm|mm|s|t|m|J|N|x|plates|fps|degrees|deg|Hz)"
+NAMES_BEFORE_VERSION = ("ode", "version", "v", "havok", "bullet", "mujoco", "python", "cmake", "c++", "gcc", "g++",
+                        "debian", "ubuntu", "windows", "gtest", "matplotlib", "jolt", "rapier", "libode", "release")
+SECTION_WORDS = ("chapter", "section", "thesis", "thesis's", "figure", "table", "issue", "§", "chapters", "sections")
+NUMBER = re.compile(r"(?<![\w.\-/])(-?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:[eE][-+]?\d+)?)(?![\w.]*\d)"
+                    r"(\s?%|\s?" + UNITS + r"(?![\w]))?")
+
+
+def prose(text):
+    """The text with what is not prose blanked (so line numbers stay)."""
+    text = re.sub(r"```.*?```", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    text = re.sub(r"<!--.*?-->", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    text = re.sub(r"`[^`\n]*`", " ", text)
+    text = re.sub(r"\]\([^)]*\)", "]", text)
+    text = re.sub(r"https?://\S+", " ", text)
+    text = re.sub(r"\b\d{4}-\d{2}-\d{2}\b", " ", text)
+    text = re.sub(r"\b\d+:\d{2}(?::\d{2})?\b", " ", text)
+    text = re.sub(r"\b\d+(?:\.\d+){2,}\b", " ", text)  # versions
+    text = re.sub(r"\d+(?:\.\d+)?(?:\s?x\s?\d+(?:\.\d+)?)+", lambda m: " " if re.search(r"x\s?\d", m.group(0))
+                  and not re.fullmatch(r"\d+(?:\.\d+)?\s?x", m.group(0)) else m.group(0), text)
+    return text
+
+
+def figures(text):
+    """(line number, the number as written, its value, its unit or '%') for
+    every measured figure in a document's text."""
+    found = []
+    for number, line in enumerate(prose(text).splitlines(), 1):
+        heading = line.lstrip().startswith("#")
+        for match in NUMBER.finditer(line):
+            written, unit = match.group(1), (match.group(2) or "").strip()
+            before = line[:match.start()].rstrip().split()
+            previous = before[-1].lower().strip("(,;:*") if before else ""
+            if heading and not line[:match.start()].strip("# "):
+                continue
+            if previous in SECTION_WORDS or previous.endswith("§"):
+                continue
+            decimal = "." in written or "e" in written.lower()
+            if decimal and previous in NAMES_BEFORE_VERSION:
+                continue
+            if not (decimal or unit == "%" or (unit and len(written.replace(",", "").lstrip("-")) >= 2)):
+                continue
+            value = float(written.replace(",", ""))
+            if math.isfinite(value) and (value == 0 or 1e-300 < abs(value) < 1e300):
+                found.append((number, written + (unit if unit == "%" else ""), value, unit))
+    return found
+
+
+TOKEN = re.compile(r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?")
+
+
+def committed(root, *patterns):
+    """The files git tracks under `root` matching `patterns`; outside a git
+    checkout (an unpacked source archive), every such file but build output."""
+    listed = subprocess.run(["git", "-C", str(root), "ls-files", *patterns], capture_output=True, text=True)
+    if listed.returncode == 0:
+        return [root / name for name in listed.stdout.split() if (root / name).exists()]
+    return [p for pattern in patterns for p in root.rglob(pattern)
+            if not any(part.startswith("build") or part.startswith(".") for part in p.relative_to(root).parts)]
+
+
+def numbers_in(text, values):
+    for t in TOKEN.findall(text):
+        value = abs(float(t))
+        if math.isfinite(value):
+            values.add(value)
+
+
+def held_numbers(root):
+    """Every number in a cell of a committed CSV, and every literal of the
+    committed C++ sources, as sorted absolute values."""
+    values = set()
+    for path in committed(root, "*.csv"):
+        with open(path, newline="", errors="replace") as stream:
+            for row in csv.reader(line for line in stream if not line.startswith("#")):
+                for cell in row:
+                    numbers_in(cell.replace(",", ""), values)
+    for path in committed(root, "*.cpp", "*.h", "*.hpp"):
+        numbers_in(re.sub(r"(?<=\d)[fF]\b", "", path.read_text(errors="replace")), values)
+    return sorted(values)
+
+
+def half_unit(written):
+    """Half a unit of the last significant digit written (0.064 -> 0.0005;
+    1.97e6 -> 5e3; 11900 -> 50)."""
+    mantissa, _, exponent = written.replace(",", "").lstrip("-").lower().partition("e")
+    # A whole number's trailing zeros are not significant (11900 for 11892).
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else -(len(mantissa) - len(mantissa.rstrip("0")))
+    if mantissa.strip("0") == "":
+        decimals = 0
+    return 0.5 * 10.0 ** max(-320, min(300, -decimals + (int(exponent) if exponent else 0)))
+
+
+def held(values, target, tolerance):
+    i = bisect.bisect_left(values, target - tolerance)
+    return i < len(values) and values[i] <= target + tolerance
+
+
+def pending(root):
+    path = root / "lab" / "reference" / "docs-pending.txt"
+    if not path.exists():
+        return set()
+    return {line.split("#")[0].strip() for line in path.read_text().splitlines() if line.split("#")[0].strip()}
+
+
+def check(root):
+    values = held_numbers(root)
+    waiting = pending(root)
+    docs = [root / "README.md"] + sorted(p for p in (root / "doc").rglob("*.md") if "results" not in p.parts)
+    problems, counted = [], 0
+    for doc in docs:
+        if not doc.exists():
+            continue
+        for line, written, value, unit in figures(doc.read_text(errors="replace")):
+            counted += 1
+            tolerance = half_unit(written.rstrip("%").strip())
+            ok = held(values, abs(value), tolerance)
+            if not ok and unit == "%":
+                ok = held(values, abs(value) / 100, tolerance / 100)
+            if not ok:
+                name = str(doc.relative_to(root))
+                problems.append((name in waiting, f"{name}:{line}: {written}{'' if unit in ('', '%') else ' ' + unit} "
+                                                  f"is held by no committed CSV"))
+    return problems, counted, len(docs)
+
+
+def main(argv):
+    if len(argv) > 2 or (len(argv) == 2 and argv[1] in ("-h", "--help")):
+        sys.stderr.write(__doc__)
+        return 2
+    root = Path(argv[1] if len(argv) == 2 else Path(__file__).resolve().parents[1])
+    if not (root / ".git").exists() and not (root / "doc").is_dir():
+        sys.stderr.write(f"check_docs: {root} is not the project's root (no doc/ folder)\n")
+        return 2
+    problems, counted, files = check(root)
+    for waiting, problem in problems:
+        print("check_docs: " + ("(pending, lab/reference/docs-pending.txt) " if waiting else "") + problem)
+    failing = sum(not waiting for waiting, _ in problems)
+    print(f"check_docs: {counted} measured figures in {files} documents, {len(problems)} held by no committed CSV "
+          f"({len(problems) - failing} in pending documents)")
+    return 1 if failing else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

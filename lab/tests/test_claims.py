@@ -1,0 +1,81 @@
+"""Unit checks of the report's sentences from data (claims.py) and of the
+docs check's rule for measured figures (check_docs.py).
+Run: /usr/bin/python3 -m unittest discover -s lab/tests (CTest: lab_executor_units)."""
+
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+import check_docs  # noqa: E402
+from odelab_report.claims import Claim, Data, Sentences, q, read_rows, recheck  # noqa: E402
+
+CSV = "# ODE: test\nsolver,step_s,error\nQuickStep 20,0.001,0.25\nQuickStep 20,0.01,0.5\ndWorldStep,0.001,1e-9\n"
+
+
+class Claims(unittest.TestCase):
+    def setUp(self):
+        self.folder = Path(tempfile.mkdtemp())
+        (self.folder / "speed.csv").write_text(CSV)
+
+    def claim(self, rule="True"):
+        return Claim("k", "QuickStep {a:p2} against {b:n2}",
+                     {"a": q("speed.csv", "error", solver="QuickStep 20", step_s=0.001),
+                      "b": q("speed.csv", "error", solver="dWorldStep", step_s=0.001)}, rule)
+
+    def test_text_from_the_csv(self):
+        self.assertEqual(self.claim().evaluate(Data(self.folder)), ("QuickStep 25% against 1e-09", True))
+
+    def test_a_sentence_shows_only_when_its_rule_holds(self):
+        sentences = Sentences(Data(self.folder))
+        self.assertIsNone(sentences.say(self.claim("a < b")))
+        self.assertEqual(sentences.say(self.claim("a < b"), self.claim("a > b")), "QuickStep 25% against 1e-09")
+        self.assertEqual(len(sentences.shown), 1)
+
+    def test_recheck_finds_a_changed_figure_and_a_broken_rule(self):
+        sentences = Sentences(Data(self.folder))
+        sentences.say(self.claim("a > b"))
+        self.assertEqual(recheck(self.folder, sentences.shown), [])
+        (self.folder / "speed.csv").write_text(CSV.replace("0.25", "1e-12"))
+        problems = recheck(self.folder, sentences.shown)
+        self.assertEqual(len(problems), 2, problems)  # the text differs and a > b fails
+
+    def test_absent_data_is_no_sentence(self):
+        sentences = Sentences(Data(self.folder))
+        missing = Claim("m", "{a:n}", {"a": q("absent.csv", "x")})
+        self.assertIsNone(sentences.say(missing))
+
+    def test_lists_and_medians(self):
+        data = Data(self.folder)
+        self.assertEqual(data.lookup(q("speed.csv", "error", "median", solver="QuickStep 20")), 0.375)
+        self.assertEqual(data.lookup(q("speed.csv", "solver", "texts", step_s=0.001)), ["QuickStep 20", "dWorldStep"])
+        self.assertEqual(len(read_rows(self.folder / "speed.csv")), 3)
+
+
+class DocsFigures(unittest.TestCase):
+    def written(self, text):
+        return [w for _, w, _, _ in check_docs.figures(text)]
+
+    def test_what_counts(self):
+        self.assertEqual(self.written("energy varies by 0.064% and 2.5x faster, 20 s long"),
+                         ["0.064%", "2.5", "20"])
+
+    def test_what_does_not(self):
+        text = ("ODE 0.16.2 and ODE 0.11 on 2 cores, `--step 0.001`, exit status 2, chapter 5.10, test10, "
+                "a 1280 x 720 window, 2026-11-24 at 6:16, [a](doc/x1.5.md)\n## 5.4 The scene")
+        self.assertEqual(self.written(text), [])
+
+    def test_held_at_the_written_precision(self):
+        values = sorted([0.06403, 11892.07, 0.1704])
+        self.assertTrue(check_docs.held(values, 0.064, check_docs.half_unit("0.064")))
+        self.assertFalse(check_docs.held(values, 0.065, check_docs.half_unit("0.065")))
+        self.assertTrue(check_docs.held(values, 11900, check_docs.half_unit("1.19e4")))
+        self.assertTrue(check_docs.held(values, 11892, check_docs.half_unit("11892")))
+        self.assertTrue(check_docs.held(values, 11900, check_docs.half_unit("11900")))
+        self.assertFalse(check_docs.held(values, 11880, check_docs.half_unit("11880")))
+
+
+if __name__ == "__main__":
+    unittest.main()
