@@ -5,6 +5,8 @@
 #                                             in a window; with no display, say so and run it headless
 #   scripts/odelab.sh test                    install what is missing, build, run the sanitizer check
 #                                             (checks/sanitize.sh) and the whole CTest suite
+#   scripts/odelab.sh web [--serve [PORT]]    build the scenes for the browser into build-web/site
+#                                             (doc/web.md); --serve serves it on 127.0.0.1 (default 8080)
 #
 # Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
 set -euo pipefail
@@ -31,11 +33,15 @@ packages=(
   python3-distributed munge slurmctld slurmd slurm-client
 )
 
+# The browser build (doc/web.md): Emscripten, the tools that unpack and
+# build Debian's source packages, and Chromium with Node for its checks.
+web_packages=(emscripten ninja-build dpkg-dev nodejs npm chromium)
+
 say() { printf 'odelab: %s\n' "$*" >&2; }
 
 install_missing() {
   local missing=()
-  for p in "${packages[@]}"; do
+  for p in "${packages[@]}" "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
@@ -50,6 +56,12 @@ install_missing() {
   fi
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# The site in build-web/site, and the driver its checks use (web/node_modules).
+build_web() {
+  bash "$root/scripts/web/build.sh" "${WEB_BUILD_DIR:-$root/build-web}"
+  (cd "$root/web" && npm ci --no-audit --no-fund --loglevel=error >&2)
 }
 
 build() {
@@ -90,11 +102,31 @@ case "$command" in
     # and UndefinedBehaviorSanitizer, in build-sanitize/ (about 6 minutes
     # from scratch on 2 cores).
     JOBS=$jobs sh "$root/checks/sanitize.sh"
+    # The scenes in the browser, for the checks labelled web (checks/web.cmake).
+    install_missing "${web_packages[@]}"
+    ODELAB_JOBS=$jobs build_web
     cd "$build_dir"
     exec ctest --output-on-failure -j "$jobs"
     ;;
+  web)
+    serve=0 port=8080
+    if [ "${1:-}" = --serve ]; then
+      serve=1
+      shift
+      if [ $# -gt 0 ]; then port=$1; shift; fi
+      [[ "$port" =~ ^[0-9]+$ ]] && [ "$port" -ge 1 ] && [ "$port" -le 65535 ] ||
+        { say "error: --serve takes a port number from 1 to 65535, not '$port'"; exit 2; }
+    fi
+    [ $# -eq 0 ] || { say "error: web takes only --serve [PORT], not '$*'"; exit 2; }
+    install_missing "${web_packages[@]}"
+    ODELAB_JOBS=$jobs build_web
+    if [ "$serve" -eq 1 ]; then
+      say "serving http://127.0.0.1:$port/ (Ctrl+C stops)"
+      exec python3 -m http.server --bind 127.0.0.1 --directory "${WEB_BUILD_DIR:-$root/build-web}/site" "$port"
+    fi
+    ;;
   *)
-    sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+    sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
     case "$command" in -h | --help) exit 0 ;; esac
     [ -n "$command" ] && say "error: unknown command '$command'"
     exit 2

@@ -24,6 +24,16 @@ class OdeLibrary {
   ~OdeLibrary() { dCloseODE(); }
 };
 
+// What follows a window run: the output files' end lines and the metrics.
+int afterWindow(AbstractWindow& scene, const RunOptions& options, int status) {
+  if (stopSignal() != 0) return scene.stoppedBySignal();
+  if (status != exit_code::OK) return status;
+  scene.endOutputs("");
+  // A window run reports too, so scripted sessions can be checked.
+  if (!options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);
+  return status;
+}
+
 int run(AbstractWindow& scene, const RunOptions& options) {
   if (options.headless) {
     scene.initialize(options);
@@ -31,13 +41,8 @@ int run(AbstractWindow& scene, const RunOptions& options) {
   }
   // The window builds the scene itself once the window, shaders, font and
   // --events script are ready, so a missing resource leaves no output file.
-  const int status = runWindow(scene, options);
-  if (stopSignal() != 0) return scene.stoppedBySignal();
-  if (status != exit_code::OK) return status;
-  scene.endOutputs("");
-  // A window run reports too, so scripted sessions can be checked.
-  if (!options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);
-  return status;
+  // The options by value: in a browser the callback runs after this call.
+  return runWindow(scene, options, [&scene, options](int status) { return afterWindow(scene, options, status); });
 }
 
 }  // namespace
