@@ -35,7 +35,10 @@ packages=(
 
 # The browser build (doc/web.md): Emscripten, the tools that unpack and
 # build Debian's source packages, and Chromium with Node for its checks.
-web_packages=(emscripten ninja-build dpkg-dev nodejs npm chromium)
+# npm only where no npm is on PATH: a Node from elsewhere brings its own,
+# which Debian's npm package conflicts with.
+web_packages=(emscripten ninja-build dpkg-dev nodejs chromium)
+command -v npm >/dev/null || web_packages+=(npm)
 
 say() { printf 'odelab: %s\n' "$*" >&2; }
 
