@@ -1,7 +1,8 @@
 # ---- the scenes in the browser (doc/web.md; label web) -------------------------
 # Each scene runs in headless Chromium from build-web/site (scripts/odelab.sh
 # web builds it; scripts/odelab.sh test does before these run): in a window
-# it must draw a picture, and headless its metric must match the desktop
+# it must draw a picture with a shadow cast on a lit surface (as the desktop's
+# screenshot check asks), and headless its metric must match the desktop
 # build's headless run with the same options. Without the site the checks
 # are skipped, saying why (scripts/web/check-scene.sh).
 #
@@ -28,7 +29,8 @@ function(odelab_web_check scene metric tolerance)
   add_test(NAME web_${scene}
     COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/web/check-scene.sh --site ${ODELAB_WEB_SITE}
             --native $<TARGET_FILE:${scene}> --out ${CMAKE_CURRENT_BINARY_DIR}/web_${scene}
-            --metric ${metric} --tolerance ${tolerance} ${extra} -- ${W_ARGS})
+            --metric ${metric} --tolerance ${tolerance} --shadow-check $<TARGET_FILE:screenshot_check>
+            ${extra} -- ${W_ARGS})
   set_tests_properties(web_${scene} PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 600 PROCESSORS 2)
 endfunction()
 

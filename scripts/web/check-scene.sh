@@ -4,6 +4,9 @@
 #      the run ends with status 0 and its canvas shows a picture, i.e. at
 #      least 5% of the pixels differ from the commonest colour (the sky) and
 #      there are at least 16 colours (a blank or one-colour canvas has 1);
+#      with --shadow-check SCREENSHOT_CHECK, that program (checks/
+#      screenshot_check.cpp) must also find a shadow cast on a lit surface
+#      in the scene's part of the canvas (left of the panel, below the HUD);
 #   2. headless in Chromium and natively, --seconds S (or the scene's own
 #      length) with the same ARGS: METRIC from both runs' --metrics-json
 #      differs by at most TOLERANCE (absolute);
@@ -12,7 +15,8 @@
 #      "# complete".
 #
 #   check-scene.sh --site DIR --native PROGRAM --out DIR --metric NAME
-#                  --tolerance X [--seconds S] [--window-seconds S] [--download NAME] -- ARGS...
+#                  --tolerance X [--seconds S] [--window-seconds S] [--download NAME]
+#                  [--shadow-check SCREENSHOT_CHECK] -- ARGS...
 #
 # Exits 77 (CTest's skip) when DIR holds no browser build.
 set -euo pipefail
@@ -22,10 +26,10 @@ root=$(cd "$here/../.." && pwd)
 say() { printf 'web check: %s\n' "$*" >&2; }
 usage() { say "error: $*"; exit 2; }
 
-site='' native='' out='' metric='' tolerance='' seconds='' window_seconds=2 download=''
+site='' native='' out='' metric='' tolerance='' seconds='' window_seconds=2 download='' shadow_check=''
 while [ $# -gt 0 ]; do
   case $1 in
-    --site | --native | --out | --metric | --tolerance | --seconds | --window-seconds | --download)
+    --site | --native | --out | --metric | --tolerance | --seconds | --window-seconds | --download | --shadow-check)
       [ $# -ge 2 ] || usage "$1 needs a value"
       name=${1#--}
       printf -v "${name//-/_}" '%s' "$2"
@@ -65,6 +69,11 @@ print(f"web check: {r['scene']} window: status {r.get('status')}, {r.get('second
 ok = r.get("status") == 0 and p.get("colours", 0) >= 16 and p.get("other_than_commonest", 0) >= 0.05
 sys.exit(0 if ok else 1)
 PY
+# The panel takes the right quarter of an 800-pixel canvas, the HUD the top.
+if [ -n "$shadow_check" ] && [ -f "$out/window/canvas.png" ]; then
+  "$shadow_check" "$out/window/canvas.png" --size 800x450 --region 0,0.25,0.75,1 >"$out/window/shadow-check.txt" 2>&1 ||
+    fail "no shadow cast on a lit surface in the canvas (see $out/window/shadow-check.txt)"
+fi
 if [ -n "$download" ]; then
   got=$out/window/downloads/$download
   written=$out/window/files/$download
