@@ -94,9 +94,9 @@ fi
 mkdir -p "$out/native"
 (cd "$out/native" && "$native" --headless --metrics-json metrics.json "${length[@]}" "${args[@]}" >log.txt 2>&1) ||
   fail "the native run failed (see $out/native/log.txt)"
-python3 - "$out/headless/files/metrics.json" "$out/native/metrics.json" "$metric" "$tolerance" "$scene" <<'PY' || failed=1
+python3 - "$out/headless/files/metrics.json" "$out/native/metrics.json" "$metric" "$tolerance" "$scene" "$out/comparison.json" <<'PY' || failed=1
 import json, sys
-web_path, native_path, metric, tolerance, scene = sys.argv[1:]
+web_path, native_path, metric, tolerance, scene, comparison_path = sys.argv[1:]
 try:
     web, native = json.load(open(web_path)), json.load(open(native_path))
 except OSError as error:
@@ -104,6 +104,9 @@ except OSError as error:
 if metric not in web or metric not in native:
     sys.exit(f"web check: FAIL {scene}: metric {metric} missing (web: {metric in web}, native: {metric in native})")
 difference = abs(float(web[metric]) - float(native[metric]))
+# Kept for scripts/web/comparison-table.py.
+json.dump({"scene": scene, "metric": metric, "web": web[metric], "native": native[metric],
+           "difference": difference, "tolerance": float(tolerance)}, open(comparison_path, "w"))
 print(f"web check: {scene} {metric}: web {web[metric]!r}, native {native[metric]!r}, "
       f"difference {difference:.3g} (tolerance {tolerance})", file=sys.stderr)
 sys.exit(0 if difference <= float(tolerance) else 1)
