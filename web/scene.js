@@ -136,6 +136,6 @@ if (!/^test[0-9]+$/.test(sceneName)) {
   const script = document.createElement("script");
   script.src = sceneName + ".js";
   script.onload = () => start(window["create_" + sceneName]);
-  script.onerror = () => (statusLine.textContent = "cannot load " + script.src);
+  script.onerror = () => (statusLine.textContent = "no scene '" + sceneName + "' in this site (" + script.src + " did not load)");
   document.body.appendChild(script);
 }
