@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Measures what the browser build adds to CI, from nothing: the libraries
-# (fetched and built in an empty cache), the site, and the checks labelled
-# web (run from BUILD_DIR, default build/, against that site). Appends one
+# (fetched and built in an empty cache), the site (in a scratch folder), and
+# the checks labelled web (run from BUILD_DIR, default build/, against the
+# site its configuration names, build-web/site). Appends one
 # row per stage to CSV (doc/results/web-ci-times.csv), after a header
 # naming the machine, with the load average at the start, since the machine
 # may be shared.
