@@ -7,6 +7,8 @@
 #                                             (checks/sanitize.sh) and the whole CTest suite
 #   scripts/odelab.sh windows                 install MinGW-w64 and Wine, cross-build the programs for
 #                                             Windows into build-windows/ (doc/building-on-windows.md)
+#   scripts/odelab.sh web [--serve [PORT]]    build the scenes for the browser into build-web/site
+#                                             (doc/web.md); --serve serves it on 127.0.0.1 (default 8080)
 #
 # Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
 set -euo pipefail
@@ -41,6 +43,13 @@ windows_packages=(
   wine wine64
 )
 
+# The browser build (doc/web.md): Emscripten, the tools that unpack and
+# build Debian's source packages, and Chromium with Node for its checks.
+# npm only where no npm is on PATH: a Node from elsewhere brings its own,
+# which Debian's npm package conflicts with.
+web_packages=(emscripten ninja-build dpkg-dev nodejs chromium)
+command -v npm >/dev/null || web_packages+=(npm)
+
 say() { printf 'odelab: %s\n' "$*" >&2; }
 
 install_missing() {  # install_missing [PACKAGE...] (default: the packages above)
@@ -61,6 +70,12 @@ install_missing() {  # install_missing [PACKAGE...] (default: the packages above
   fi
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# The site in build-web/site, and the driver its checks use (web/node_modules).
+build_web() {
+  bash "$root/scripts/web/build.sh" "${WEB_BUILD_DIR:-$root/build-web}"
+  (cd "$root/web" && npm ci --no-audit --no-fund --loglevel=error >&2)
 }
 
 build() {
@@ -99,12 +114,11 @@ case "$command" in
     exec "$root/scripts/windows/build.sh"
     ;;
   test)
-    install_missing
-    install_missing "${windows_packages[@]}"
+    # Everything the checks need, in one apt run: the programs' packages,
+    # the Windows cross-build's, the browser build's.
+    install_missing "${packages[@]}" "${windows_packages[@]}" "${web_packages[@]}"
     # The web peers (peers/wasm, doc/peers.md): Havok, Jolt and Rapier from
-    # the npm registry, pinned by the lockfile; offline after this. Debian's
-    # Node.js where the machine has none of its own.
-    command -v node >/dev/null || install_missing nodejs npm
+    # the npm registry, pinned by the lockfile; offline after this.
     if command -v node >/dev/null && command -v npm >/dev/null; then
       (cd "$root/peers/wasm" && npm ci --no-audit --no-fund --loglevel=error) ||
         say "npm ci failed in peers/wasm: the web peers (Havok, Jolt, Rapier) and their checks are skipped"
@@ -119,11 +133,30 @@ case "$command" in
     # and UndefinedBehaviorSanitizer, in build-sanitize/ (about 6 minutes
     # from scratch on 2 cores).
     JOBS=$jobs sh "$root/checks/sanitize.sh"
+    # The scenes in the browser, for the checks labelled web (checks/web.cmake).
+    ODELAB_JOBS=$jobs build_web
     cd "$build_dir"
     exec ctest --output-on-failure -j "$jobs"
     ;;
+  web)
+    serve=0 port=8080
+    if [ "${1:-}" = --serve ]; then
+      serve=1
+      shift
+      if [ $# -gt 0 ]; then port=$1; shift; fi
+      [[ "$port" =~ ^[0-9]+$ ]] && [ "$port" -ge 1 ] && [ "$port" -le 65535 ] ||
+        { say "error: --serve takes a port number from 1 to 65535, not '$port'"; exit 2; }
+    fi
+    [ $# -eq 0 ] || { say "error: web takes only --serve [PORT], not '$*'"; exit 2; }
+    install_missing "${web_packages[@]}"
+    ODELAB_JOBS=$jobs build_web
+    if [ "$serve" -eq 1 ]; then
+      say "serving http://127.0.0.1:$port/ (Ctrl+C stops)"
+      exec python3 -m http.server --bind 127.0.0.1 --directory "${WEB_BUILD_DIR:-$root/build-web}/site" "$port"
+    fi
+    ;;
   *)
-    sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+    sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
     case "$command" in -h | --help) exit 0 ;; esac
     [ -n "$command" ] && say "error: unknown command '$command'"
     exit 2

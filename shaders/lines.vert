@@ -13,4 +13,9 @@ out vec4 vColor;
 void main() {
   vColor = aColor;
   gl_Position = uMatrix * vec4(aPosition, 1.0);
+#ifdef GL_ES
+  // ES has no glPointSize: the debug drawing's points (POINT_PIXELS in
+  // utils/render/DebugDraw.cpp) get their size here; lines ignore it.
+  gl_PointSize = 6.0;
+#endif
 }

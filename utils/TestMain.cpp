@@ -63,14 +63,8 @@ class RunEnding {
   RunEnding& operator=(const RunEnding&) = delete;
 };
 
-int run(AbstractWindow& scene, const RunOptions& options) {
-  if (options.headless) {
-    scene.initialize(options);
-    return scene.runHeadless();
-  }
-  // The window builds the scene itself once the window, shaders, font and
-  // --events script are ready, so a missing resource leaves no output file.
-  const int status = runWindow(scene, options);
+// What follows a window run: the output files' end lines and the metrics.
+int afterWindow(AbstractWindow& scene, const RunOptions& options, int status) {
   if (stopSignal() != 0) return scene.stoppedBySignal();
   if (status != exit_code::OK) {
     markCutShort(scene, "the window run failed with status " + std::to_string(status) + " (see standard error)");
@@ -80,6 +74,17 @@ int run(AbstractWindow& scene, const RunOptions& options) {
   // A window run reports too, so scripted sessions can be checked.
   if (!options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);
   return status;
+}
+
+int run(AbstractWindow& scene, const RunOptions& options) {
+  if (options.headless) {
+    scene.initialize(options);
+    return scene.runHeadless();
+  }
+  // The window builds the scene itself once the window, shaders, font and
+  // --events script are ready, so a missing resource leaves no output file.
+  // The options by value: in a browser the callback runs after this call.
+  return runWindow(scene, options, [&scene, options](int status) { return afterWindow(scene, options, status); });
 }
 
 }  // namespace

@@ -27,7 +27,11 @@ ControlPanel::ControlPanel(SDL_Window* window, void* glContext, const std::strin
   ImGui::StyleColorsDark();
   ImGui::GetStyle().Alpha = 0.92f;
   ImGui_ImplSDL2_InitForOpenGL(window, glContext);
+#ifdef __EMSCRIPTEN__
+  ImGui_ImplOpenGL3_Init("#version 300 es");
+#else
   ImGui_ImplOpenGL3_Init("#version 330");
+#endif
   width_ = WIDTH_IN_LINES * static_cast<float>(textPixels);
 }
 

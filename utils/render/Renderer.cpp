@@ -169,7 +169,13 @@ void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& unif
     glUniform1i(uniforms.checker, object->isFixed() ? 1 : 0);
     // Wireframe shows the bodies' triangles; the ground stays filled so the
     // scene keeps its floor (its two huge triangles would say nothing).
+#ifdef __EMSCRIPTEN__
+    // WebGL2 has no polygon mode: wireframe draws filled there.
+    const bool lines = false;
+    (void)wireframe;
+#else
     const bool lines = wireframe && object->shape() != Shape::Plane;
+#endif
     if (lines) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     mesh->draw();
     if (lines) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);

@@ -21,13 +21,24 @@
 
 namespace odelab {
 
+namespace {
+#ifdef __EMSCRIPTEN__
+// WebGL2 reads the default framebuffer as RGBA only.
+const int CHANNELS = 4;
+const GLenum PIXEL_FORMAT = GL_RGBA;
+#else
+const int CHANNELS = 3;
+const GLenum PIXEL_FORMAT = GL_RGB;
+#endif
+}  // namespace
+
 void saveScreenshot(const std::string& path, int width, int height) {
   if (width <= 0 || height <= 0) throw RenderError("cannot save screenshot " + path + ": empty window");
-  const std::size_t rowBytes = static_cast<std::size_t>(width) * 3;
+  const std::size_t rowBytes = static_cast<std::size_t>(width) * CHANNELS;
   std::vector<unsigned char> pixels(rowBytes * static_cast<std::size_t>(height));
   glPixelStorei(GL_PACK_ALIGNMENT, 1);  // rows of 3-byte pixels are not 4-aligned
   glReadBuffer(GL_BACK);
-  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  glReadPixels(0, 0, width, height, PIXEL_FORMAT, GL_UNSIGNED_BYTE, pixels.data());
 
   // GL's first row is the bottom one; PNG's is the top.
   std::vector<unsigned char> flipped(pixels.size());
@@ -45,7 +56,7 @@ void saveScreenshot(const std::string& path, int width, int height) {
   // and status 0; this way every write and the close are checked and the
   // file appears whole or not at all.
   int length = 0;
-  unsigned char* png = stbi_write_png_to_mem(flipped.data(), static_cast<int>(rowBytes), width, height, 3, &length);
+  unsigned char* png = stbi_write_png_to_mem(flipped.data(), static_cast<int>(rowBytes), width, height, CHANNELS, &length);
   if (!png) throw RenderError("cannot write screenshot " + path + ": PNG encoding failed");
   const std::string bytes(reinterpret_cast<const char*>(png), static_cast<std::size_t>(length));
   STBIW_FREE(png);

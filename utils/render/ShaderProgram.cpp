@@ -32,8 +32,21 @@ std::string infoLog(GLuint object, PFNGLGETSHADERIVPROC getInteger, PFNGLGETSHAD
 std::string shaderLog(GLuint shader) { return infoLog(shader, glGetShaderiv, glGetShaderInfoLog); }
 std::string programLog(GLuint program) { return infoLog(program, glGetProgramiv, glGetProgramInfoLog); }
 
+#ifdef __EMSCRIPTEN__
+// WebGL2 compiles GLSL ES 3.00: the desktop shaders' version line gives way
+// to ES's, with the precisions ES wants declared.
+std::string forWebGl(const std::string& source) {
+  const std::string header = "#version 300 es\nprecision highp float;\nprecision highp sampler2D;\n";
+  const std::size_t lineEnd = source.find('\n');
+  if (source.rfind("#version", 0) != 0 || lineEnd == std::string::npos) return header + source;
+  return header + source.substr(lineEnd + 1);
+}
+#else
+const std::string& forWebGl(const std::string& source) { return source; }
+#endif
+
 GLuint compile(GLenum type, const std::string& path) {
-  const std::string source = readFile(path);
+  const std::string source = forWebGl(readFile(path));
   const char* text = source.c_str();
   const GLuint shader = glCreateShader(type);
   glShaderSource(shader, 1, &text, nullptr);

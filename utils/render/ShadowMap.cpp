@@ -15,17 +15,25 @@ ShadowMap::ShadowMap() {
   // Nearest: the shader does its own 3x3 filtering of the depth comparisons.
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+#ifdef __EMSCRIPTEN__
+  // WebGL2 has no border colour: the edge texels repeat, and the shader's
+  // bounds test treats what lies outside the map as unshadowed.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+#else
   // Beyond the map's edge the depth reads as farthest, i.e. unshadowed.
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
   const float farthest[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, farthest);
+#endif
 
   glGenFramebuffers(1, &framebuffer_);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture_, 0);
   // Depth only: no colour buffer to draw into or read from.
-  glDrawBuffer(GL_NONE);
+  const GLenum none = GL_NONE;
+  glDrawBuffers(1, &none);  // glDrawBuffer(GL_NONE), which ES lacks
   glReadBuffer(GL_NONE);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

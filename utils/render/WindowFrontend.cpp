@@ -5,6 +5,7 @@
 #include <ctime>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -22,6 +23,9 @@
 #include "Renderer.h"
 #include "Screenshot.h"
 #include "WindowInput.h"
+#ifdef __EMSCRIPTEN__
+#include "../web/WebMainLoop.h"
+#endif
 
 namespace odelab {
 
@@ -94,6 +98,9 @@ class FrameLoop {
       : scene_(scene), options_(options), window_(window), views_(views), player_(player) {}
 
   int run();
+  double runFrame();
+  bool over() const;
+  void end() const;
 
  private:
   void pollEvents(long long frame);
@@ -116,6 +123,10 @@ class FrameLoop {
   double ticksPerSecond_ = static_cast<double>(SDL_GetPerformanceFrequency());
   std::string notice_;
   double noticeUntil_ = 0.0;
+  long long frame_ = 0;
+  Uint64 previous_ = SDL_GetPerformanceCounter();
+  // The frame cap, unless vsync already waits for the display.
+  double period_ = options_.maxFps > 0 && !window_.vsync() ? 1.0 / options_.maxFps : 0.0;
 };
 
 void FrameLoop::pollEvents(long long frame) {
@@ -208,56 +219,67 @@ bool FrameLoop::idle() const {
          options_.recordDir.empty() && options_.screenshot.empty();
 }
 
-int FrameLoop::run() {
+// One pass of the loop: events, steps, drawing and the swap. Returns the
+// seconds it was busy, or a negative number when it was a screenshot run's
+// last frame. The desktop loop below and the browser's per-frame callback
+// both call it, so a frame is the same on both.
+double FrameLoop::runFrame() {
   const bool screenshotRun = !options_.screenshot.empty();
   const bool recording = !options_.recordDir.empty();
   const int screenshotFrame = options_.frames > 0 ? options_.frames : 1;
-  // The frame cap, unless vsync already waits for the display.
-  const double period = options_.maxFps > 0 && !window_.vsync() ? 1.0 / options_.maxFps : 0.0;
-  Uint64 previous = SDL_GetPerformanceCounter();
+  const long long frame = ++frame_;
+  const Uint64 start = SDL_GetPerformanceCounter();
+  pollEvents(frame);
 
-  for (long long frame = 1; !finished(scene_, options_); ++frame) {
-    if (idle()) SDL_WaitEventTimeout(nullptr, IDLE_WAIT_MS);
-    const Uint64 start = SDL_GetPerformanceCounter();
-    pollEvents(frame);
+  const Uint64 now = SDL_GetPerformanceCounter();
+  const double elapsed = seconds(previous_, now);
+  previous_ = now;
+  moveCamera(scene_, elapsed);
+  const double simulatedBefore = scene_.simulatedTime();
+  const long long stepsBefore = scene_.steps();
+  // An OdeError leaves through here; RAII cleans up.
+  scene_.advanceFrame(recording ? RECORD_FRAME_SECONDS : elapsed,
+                      recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET);
+  const double stepping = seconds(now, SDL_GetPerformanceCounter());
+  // A reset or a rewind moves time back: only forward steps count.
+  const double advanced =
+      scene_.steps() > stepsBefore ? std::max(0.0, scene_.simulatedTime() - simulatedBefore) : 0.0;
 
-    const Uint64 now = SDL_GetPerformanceCounter();
-    const double elapsed = seconds(previous, now);
-    previous = now;
-    moveCamera(scene_, elapsed);
-    const double simulatedBefore = scene_.simulatedTime();
-    const long long stepsBefore = scene_.steps();
-    // An OdeError leaves through here; RAII cleans up.
-    scene_.advanceFrame(recording ? RECORD_FRAME_SECONDS : elapsed,
-                        recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET);
-    const double stepping = seconds(now, SDL_GetPerformanceCounter());
-    // A reset or a rewind moves time back: only forward steps count.
-    const double advanced =
-        scene_.steps() > stepsBefore ? std::max(0.0, scene_.simulatedTime() - simulatedBefore) : 0.0;
+  draw();
+  // Read the back buffer before the swap leaves its contents undefined.
+  const bool screenshotNow = screenshotRun && frame == screenshotFrame;
+  if (scene_.takeScreenshotRequest()) saveRequestedScreenshot();
+  if (recording) recordFrame(frame);
+  if (screenshotNow) saveScreenshot(options_.screenshot, window_.width(), window_.height());
 
-    draw();
-    // Read the back buffer before the swap leaves its contents undefined.
-    const bool screenshotNow = screenshotRun && frame == screenshotFrame;
-    if (scene_.takeScreenshotRequest()) saveRequestedScreenshot();
-    if (recording) recordFrame(frame);
-    if (screenshotNow) saveScreenshot(options_.screenshot, window_.width(), window_.height());
-
-    ++totals_.frames;
-    totals_.seconds += elapsed;
-    totals_.longestFrame = std::max(totals_.longestFrame, elapsed);
-    if (!screenshotNow) window_.swap();  // a software renderer does much of its work here
-    const double busy = seconds(start, SDL_GetPerformanceCounter());
-    totals_.busySeconds += busy;
-    scene_.time().endFrame(elapsed, advanced, stepping, busy, period);
-    if (screenshotNow) {
-      std::printf("screenshot: %s (%dx%d, frame %lld)\n", options_.screenshot.c_str(), window_.width(),
-                  window_.height(), frame);
-      printTotals("window", totals_);
-      return exit_code::OK;
-    }
-    if (busy < period) SDL_Delay(static_cast<Uint32>((period - busy) * 1000.0));
+  ++totals_.frames;
+  totals_.seconds += elapsed;
+  totals_.longestFrame = std::max(totals_.longestFrame, elapsed);
+  if (!screenshotNow) window_.swap();  // a software renderer does much of its work here
+  const double busy = seconds(start, SDL_GetPerformanceCounter());
+  totals_.busySeconds += busy;
+  scene_.time().endFrame(elapsed, advanced, stepping, busy, period_);
+  if (screenshotNow) {
+    std::printf("screenshot: %s (%dx%d, frame %lld)\n", options_.screenshot.c_str(), window_.width(),
+                window_.height(), frame);
+    printTotals("window", totals_);
+    return -1.0;
   }
-  printTotals("window", totals_);
+  return busy;
+}
+
+bool FrameLoop::over() const { return finished(scene_, options_); }
+
+void FrameLoop::end() const { printTotals("window", totals_); }
+
+int FrameLoop::run() {
+  while (!over()) {
+    if (idle()) SDL_WaitEventTimeout(nullptr, IDLE_WAIT_MS);
+    const double busy = runFrame();
+    if (busy < 0.0) return exit_code::OK;
+    if (busy < period_) SDL_Delay(static_cast<Uint32>((period_ - busy) * 1000.0));
+  }
+  end();
   return exit_code::OK;
 }
 
@@ -272,44 +294,63 @@ std::vector<ScriptEvent> loadScript(const RunOptions& options) {
 
 void checkWindowOptions(const RunOptions& options) { loadScript(options); }
 
-int runWindow(AbstractWindow& scene, const RunOptions& options) {
+int runWindow(AbstractWindow& scene, const RunOptions& options, const std::function<int(int)>& finish) {
   const ResourceLookup shaders = findShaderDir(options.shaderDir);
   if (!shaders.ok()) {
     std::fprintf(stderr, "error: shaders not found; tried: %s\n", shaders.triedList().c_str());
-    return exit_code::MISSING_RESOURCE;
+    return finish(exit_code::MISSING_RESOURCE);
   }
   const ResourceLookup font = findFont(options.fontPath);
   if (!font.ok()) {
     std::fprintf(stderr, "error: font not found; tried: %s\n", font.triedList().c_str());
-    return exit_code::MISSING_RESOURCE;
+    return finish(exit_code::MISSING_RESOURCE);
   }
   // A script with a mistake stops the run before a window opens (UsageError,
   // exit status 2).
   std::vector<ScriptEvent> script = loadScript(options);
 
   try {
-    // Declared in this order so GL objects go before the context they live in.
-    GlWindow window(scene.title(), options.width, options.height, options.vsync);
-    Views views(shaders.found, font.found, window, options);
+    // Made in this order so GL objects go before the context they live in.
+    auto window = std::make_unique<GlWindow>(scene.title(), options.width, options.height, options.vsync);
+    auto views = std::make_unique<Views>(shaders.found, font.found, *window, options);
     // Built only now that the window can run, so that a refused window run
     // (no display, unusable shaders or font) leaves no output file behind;
     // a runner that built it already is fine too.
     if (!scene.world()) scene.initialize(options);
-    EventPlayer player(std::move(script), window.sdlWindow());
-    FrameLoop loop(scene, options, window, views, player);
-    return loop.run();
+    auto player = std::make_unique<EventPlayer>(std::move(script), window->sdlWindow());
+#ifdef __EMSCRIPTEN__
+    // The frames outlive this call and the caller's options: they keep a
+    // copy for the page's life.
+    const RunOptions& frameOptions = *new RunOptions(options);
+#else
+    const RunOptions& frameOptions = options;
+#endif
+    auto loop = std::make_unique<FrameLoop>(scene, frameOptions, *window, *views, *player);
+#ifdef __EMSCRIPTEN__
+    // The browser calls the frame back; this function never returns, and
+    // what the frames use lives as long as the page.
+    FrameLoop* frames = loop.get();
+    window.release(), views.release(), player.release(), loop.release();
+    web::runEveryFrame([frames] { return !frames->over() && frames->runFrame() >= 0.0; },
+                       [frames, finish] {
+                         frames->end();
+                         return finish(exit_code::OK);
+                       });
+#else
+    return finish(loop->run());
+#endif
   } catch (const NoDisplayError& error) {
     std::fprintf(stderr, "error: cannot open a window (%s); set DISPLAY or run with --headless\n", error.what());
-    return exit_code::NO_DISPLAY;
+    return finish(exit_code::NO_DISPLAY);
   } catch (const ResourceError& error) {
     std::fprintf(stderr, "error: %s\n", error.what());
-    return exit_code::MISSING_RESOURCE;
+    return finish(exit_code::MISSING_RESOURCE);
   } catch (const RenderError& error) {
     // A frame that cannot be recorded (a full disk), a GL failure: the
     // output files name it as the reason the run was cut short.
     std::fprintf(stderr, "error: %s\n", error.what());
     scene.endOutputs(error.what());
-    return exit_code::RUNTIME_ERROR;
+    return finish(exit_code::RUNTIME_ERROR);
   }
 }
 

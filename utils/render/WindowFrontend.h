@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+
 #include "../AbstractWindow.h"
 
 namespace odelab {
@@ -13,7 +15,11 @@ namespace odelab {
 // a mistake throws UsageError naming the file and line (exit status 2).
 // Unless the caller did, it builds the scene (scene.initialize) once the
 // window, shaders, font and script are ready, so a refused run writes nothing.
-int runWindow(AbstractWindow& scene, const RunOptions& options);
+// What the run's status goes through once the window is done (`finish`):
+// in a browser the frames are called back after this function has left, so
+// the caller's closing steps come as this callback, and runWindow returns
+// what it returns.
+int runWindow(AbstractWindow& scene, const RunOptions& options, const std::function<int(int)>& finish);
 
 // Reads and checks the --events script only, throwing UsageError like
 // runWindow. For the runner to call before the scene is built, so that a bad

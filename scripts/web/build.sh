@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Builds ODE Lab for the browser into BUILD (default build-web/ in the
+# checkout): the libraries first (scripts/web/build-deps.sh, cached outside
+# the tree), then every scene as BUILD/site/<scene>.js/.wasm/.data, and the
+# page from web/ beside them with scenes.json, the list it shows.
+#
+#   scripts/web/build.sh [BUILD]
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+build=${1:-$root/build-web}
+say() { printf 'web: %s\n' "$*" >&2; }
+
+export NODE_PATH=${NODE_PATH:-/usr/share/nodejs}
+deps=$("$here/build-deps.sh" | tail -n 1)
+
+# glm, CLI11 and stb are header-only: Debian's headers are used as they are,
+# through a folder holding just them (all of /usr/include would bring
+# glibc's headers in front of Emscripten's).
+headers=$build/system-headers
+mkdir -p "$headers"
+for dir in /usr/include/glm /usr/include/CLI /usr/include/stb; do
+  [ -d "$dir" ] || { say "error: $dir is missing (apt-get install libglm-dev libcli11-dev libstb-dev)"; exit 1; }
+  ln -sfn "$dir" "$headers/$(basename "$dir")"
+done
+font=/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf
+[ -f "$font" ] || { say "error: $font is missing (apt-get install fonts-dejavu-core)"; exit 1; }
+
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+emcmake cmake -S "$here" -B "$build" -G Ninja -Wno-dev -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" \
+  -DODELAB_WEB_DEPS="$deps" -DODELAB_WEB_SYSTEM_HEADERS="$headers" -DODELAB_WEB_FONT="$font" >"$build/configure.log" 2>&1 ||
+  { say "error: configuring failed, see $build/configure.log"; exit 1; }
+nice cmake --build "$build" -j "${ODELAB_JOBS:-2}" ||
+  { say "error: the build failed"; exit 1; }
+
+site=$build/site
+cp "$root"/web/*.html "$root"/web/*.js "$root"/web/*.css "$site/"
+# The scenes' titles, as each program names itself.
+{
+  printf '['
+  first=1
+  for source in "$root"/tests/test*.cpp; do
+    name=$(basename "$source" | grep -o '^test[0-9]*')
+    title=$(grep -o '"test[0-9]* - [^"]*"' "$source" | head -n 1)
+    [ -n "$title" ] || title="\"$name\""
+    [ $first -eq 1 ] || printf ','
+    first=0
+    printf '\n  {"name": "%s", "title": %s}' "$name" "$title"
+  done
+  printf '\n]\n'
+} | python3 -c 'import json, sys; scenes = json.load(sys.stdin); scenes.sort(key=lambda s: int(s["name"][4:])); print(json.dumps(scenes, indent=1))' >"$site/scenes.json"
+say "site ready: $site"
