@@ -86,3 +86,11 @@ add_test(NAME test2_window_panel_sets_cfm
                  $<TARGET_FILE:expect_metrics> ${CMAKE_CURRENT_SOURCE_DIR}/scripts/panel_cfm.events
                  ${CMAKE_CURRENT_BINARY_DIR}/window_runs/panel_cfm)
 set_tests_properties(test2_window_panel_sets_cfm PROPERTIES LABELS window)
+
+# Home brings back the scene's start view after the wheel and W moved the
+# camera: a paused scene with the HUD off, compared pixel by pixel.
+add_test(NAME test0_window_home_restores_start_view
+         COMMAND sh ${ODELAB_CHECK_SCRIPTS}/check_home_view.sh ${XVFB_RUN} $<TARGET_FILE:test0>
+                 $<TARGET_FILE:png_compare> ${ODELAB_CHECK_SCRIPTS}/home_view.events
+                 ${CMAKE_CURRENT_BINARY_DIR}/window_runs/home_view)
+set_tests_properties(test0_window_home_restores_start_view PROPERTIES TIMEOUT 180 LABELS window)

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "../FormatValue.h"
+#include "CameraControl.h"
 
 namespace odelab {
 
@@ -120,6 +121,9 @@ void ControlPanel::timeButtons(AbstractWindow& scene) {
   if (ImGui::Button("Rewind (,)")) press(SDLK_COMMA);
   ImGui::SameLine();
   if (ImGui::Button("Forward (.)")) press(SDLK_PERIOD);
+  if (ImGui::Button("Start view (Home)")) scene.camera().goHome();
+  ImGui::SameLine();
+  if (ImGui::Button("Frame all")) frameScene(scene);
 }
 
 void ControlPanel::settings(AbstractWindow& scene) {

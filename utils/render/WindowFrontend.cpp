@@ -159,6 +159,7 @@ void FrameLoop::draw() {
   // overlays share the rest, so the panel never covers the subject.
   const int windowWidth = window_.width(), height = window_.height();
   const int width = std::max(1, windowWidth - views_.panel.coveredWidth());
+  scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(std::max(1, height)));
   views_.renderer.render(scene_, width, height);
   glm::vec3 grabbed, target;
   const bool dragging = input_.dragLine(scene_, grabbed, target);
