@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "RenderError.h"
+#include "TextColumns.h"
 
 namespace odelab {
 
@@ -34,34 +35,13 @@ std::string elide(TTF_Font* font, std::string word, int maxWidth) {
   return word + "...";
 }
 
-// Greedy word wrap of every line to `maxWidth` pixels; continuation lines
-// are indented so they read as part of the line above.
+// Every line broken between items to `maxWidth` pixels (TextColumns); a
+// word wider than that still is cut and ends in "...".
 std::vector<std::string> wrapLines(TTF_Font* font, const std::vector<std::string>& lines, int maxWidth) {
   if (maxWidth <= 0) return lines;
-  std::vector<std::string> out;
-  for (const std::string& line : lines) {
-    if (textWidth(font, line) <= maxWidth) {
-      out.push_back(line);
-      continue;
-    }
-    std::string current;
-    size_t start = 0;
-    while (start <= line.size()) {
-      size_t end = line.find(' ', start);
-      if (end == std::string::npos) end = line.size();
-      const std::string word = line.substr(start, end - start);
-      const std::string joined = current.empty() ? word : current + ' ' + word;
-      if (textWidth(font, joined) <= maxWidth) {
-        current = joined;
-      } else {
-        if (!current.empty()) out.push_back(current);
-        current = "   " + word;
-        if (textWidth(font, current) > maxWidth) current = elide(font, current, maxWidth);
-      }
-      start = end + 1;
-    }
-    if (!current.empty()) out.push_back(current);
-  }
+  std::vector<std::string> out = wrapItems(lines, maxWidth, [font](const std::string& text) { return textWidth(font, text); });
+  for (std::string& line : out)
+    if (textWidth(font, line) > maxWidth) line = elide(font, line, maxWidth);
   return out;
 }
 
@@ -175,10 +155,44 @@ void HudText::drawAt(const TextBlock& block, int x, int y, int viewportWidth, in
   glBindVertexArray(0);
 }
 
-void HudText::draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight, int reservedRight) {
-  if (lines.empty()) return;
-  prepare(hud_, lines, std::max(80, viewportWidth - reservedRight - 2 * MARGIN));
-  drawAt(hud_, MARGIN, MARGIN, viewportWidth, viewportHeight);
+void HudText::prepareInColumns(TextBlock& block, const std::vector<std::string>& lines, int maxWidth,
+                               int maxHeight, int maxColumns) {
+  const int gapCharacters = 4;
+  const TextWidth width = [this](const std::string& text) { return textWidth(font_.get(), text); };
+  const int maxRows = std::max(1, (maxHeight - 2 * PADDING) / std::max(1, lineSkip()));
+  const auto columns = spreadOverColumns(lines, maxWidth - 2 * PADDING, gapCharacters * width(" "), maxRows,
+                                         maxColumns, width);
+  prepare(block, joinColumns(columns, gapCharacters), maxWidth);
+}
+
+int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight) {
+  if (lines.empty()) {
+    columnCount_ = 0;
+    return 0;
+  }
+  const int skip = lineSkip();
+  const int maxRows = std::max(1, (maxHeight - 2 * PADDING) / std::max(1, skip));
+  const int totalWidth = std::max(80, viewportWidth - 2 * MARGIN);
+  std::vector<std::vector<std::string>> columns =
+      spreadOverColumns(lines, totalWidth - 2 * PADDING, 2 * PADDING + MARGIN, maxRows, MAX_HUD_COLUMNS,
+                        [this](const std::string& text) { return textWidth(font_.get(), text); });
+  size_t rows = 0;
+  for (const auto& column : columns) rows = std::max(rows, column.size());
+  const int count = static_cast<int>(columns.size());
+  const int columnWidth = (totalWidth - (count - 1) * MARGIN) / count;
+  for (int i = 0; i < count; ++i) {
+    // Equal heights, so the columns read as one strip.
+    columns[i].resize(rows);
+    prepare(hudColumns_[i], columns[i], count > 1 ? columnWidth : totalWidth);
+  }
+  columnCount_ = count;
+  columnStep_ = count > 1 ? columnWidth + MARGIN : 0;
+  return hudColumns_[0].height() + 2 * MARGIN;
+}
+
+void HudText::drawHud(int viewportWidth, int viewportHeight) {
+  for (int i = 0; i < columnCount_; ++i)
+    drawAt(hudColumns_[i], MARGIN + i * columnStep_, MARGIN, viewportWidth, viewportHeight);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }

@@ -36,6 +36,10 @@ const int IDLE_WAIT_MS = 1000;
 const double RECORD_FRAME_SECONDS = 1.0 / 60.0;
 const double NOTICE_SECONDS = 4.0;
 const int MARGIN = 10;
+// The HUD's strip takes at most this share of the window's height (its
+// columns spread wider first); the help spreads over up to this many columns.
+const int HUD_MAX_PERCENT = 22;
+const int HELP_COLUMNS = 3;
 
 // Totals of the run, printed at exit and at each scripted mark (the
 // benchmark reads them): frames, real seconds, and the part of them spent
@@ -78,7 +82,7 @@ struct Views {
   DebugDraw debug;
   LivePlot plot;
   ControlPanel panel;
-  TextBlock help{240};
+  TextBlock help{250};  // all but opaque: the HUD and scene do not show through
   TextBlock notice{200};
 };
 
@@ -116,6 +120,7 @@ class FrameLoop {
   double ticksPerSecond_ = static_cast<double>(SDL_GetPerformanceFrequency());
   std::string notice_;
   double noticeUntil_ = 0.0;
+  int hudStrip_ = 0;  // pixels at the top the HUD took in the last frame
 };
 
 void FrameLoop::pollEvents(long long frame) {
@@ -131,10 +136,12 @@ void FrameLoop::pollEvents(long long frame) {
       views_.panel.toggle();
       continue;
     }
-    // The scene's view is the window less the panel's column (in window
-    // coordinates, which differ from pixels on a high-DPI display).
+    // The scene's view is the window less the panel's column and the HUD's
+    // strip (in window coordinates, which differ from pixels on a high-DPI display).
     const int covered = window_.width() > 0 ? views_.panel.coveredWidth() * windowWidth / window_.width() : 0;
-    if (input_.handleEvent(event, scene_, windowWidth - covered, windowHeight)) window_.updateDrawableSize();
+    const int strip = window_.height() > 0 ? hudStrip_ * windowHeight / window_.height() : 0;
+    if (input_.handleEvent(event, scene_, {0, strip, windowWidth - covered, windowHeight - strip}))
+      window_.updateDrawableSize();
   }
   syncMouseLook(scene_);
 }
@@ -142,7 +149,7 @@ void FrameLoop::pollEvents(long long frame) {
 void FrameLoop::drawHelp(int width, int height) {
   std::vector<std::string> lines{scene_.title() + ": keys and mouse   (H closes this)", ""};
   for (const std::string& line : scene_.helpLines()) lines.push_back(line);
-  views_.text.prepare(views_.help, lines, width - 2 * MARGIN);
+  views_.text.prepareInColumns(views_.help, lines, width - 2 * MARGIN, height - 2 * MARGIN, HELP_COLUMNS);
   const int x = std::max(MARGIN, (width - views_.help.width()) / 2);
   const int y = std::max(MARGIN, (height - views_.help.height()) / 2);
   views_.text.drawAt(views_.help, x, y, width, height);
@@ -155,17 +162,21 @@ void FrameLoop::drawNotice(int width, int height) {
 }
 
 void FrameLoop::draw() {
-  // The panel is a column at the right edge; the scene, the HUD and the
-  // overlays share the rest, so the panel never covers the subject.
+  // The panel is a column at the right edge and the HUD a strip across the
+  // top; the scene takes the rest, so neither covers the subject. The
+  // overlays (help, plot, notice) share the whole view.
   const int windowWidth = window_.width(), height = window_.height();
   const int width = std::max(1, windowWidth - views_.panel.coveredWidth());
-  scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(std::max(1, height)));
-  views_.renderer.render(scene_, width, height);
+  views_.text.setSizeFor(options_.textSize, height);
+  hudStrip_ = views_.text.layoutHud(scene_.hudLines(), width, height * HUD_MAX_PERCENT / 100);
+  const int sceneHeight = std::max(1, height - hudStrip_);
+  scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(sceneHeight));
+  views_.renderer.render(scene_, width, sceneHeight);
   glm::vec3 grabbed, target;
   const bool dragging = input_.dragLine(scene_, grabbed, target);
   views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
-  views_.text.setSizeFor(options_.textSize, height);
-  views_.text.draw(scene_.hudLines(), width, height);
+  glViewport(0, 0, width, height);
+  views_.text.drawHud(width, height);
   const ViewFlags& flags = scene_.viewFlags();
   if (flags.plot) views_.plot.draw(scene_.chart(), views_.text, width, height);
   if (flags.help) drawHelp(width, height);

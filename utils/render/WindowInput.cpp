@@ -8,20 +8,19 @@ const float METRES_PER_SECOND = 8.0f;
 
 }  // namespace
 
-void WindowInput::ray(const AbstractWindow& scene, int x, int y, int windowWidth, int windowHeight,
-                      glm::vec3& origin, glm::vec3& direction) const {
-  const float w = static_cast<float>(windowWidth > 0 ? windowWidth : 1);
-  const float h = static_cast<float>(windowHeight > 0 ? windowHeight : 1);
+void WindowInput::ray(const AbstractWindow& scene, int x, int y, const ViewRect& view, glm::vec3& origin,
+                      glm::vec3& direction) const {
+  const float w = static_cast<float>(view.width > 0 ? view.width : 1);
+  const float h = static_cast<float>(view.height > 0 ? view.height : 1);
   // The centre of the pixel, in normalised device coordinates (y up).
-  const float ndcX = (static_cast<float>(x) + 0.5f) / w * 2.0f - 1.0f;
-  const float ndcY = 1.0f - (static_cast<float>(y) + 0.5f) / h * 2.0f;
+  const float ndcX = (static_cast<float>(x - view.x) + 0.5f) / w * 2.0f - 1.0f;
+  const float ndcY = 1.0f - (static_cast<float>(y - view.y) + 0.5f) / h * 2.0f;
   scene.camera().rayThrough(ndcX, ndcY, w / h, origin, direction);
 }
 
-bool WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, int windowWidth,
-                            int windowHeight) {
+bool WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, const ViewRect& view) {
   glm::vec3 origin, direction;
-  ray(scene, button.x, button.y, windowWidth, windowHeight, origin, direction);
+  ray(scene, button.x, button.y, view, origin, direction);
   const double o[3] = {origin.x, origin.y, origin.z};
   const double d[3] = {direction.x, direction.y, direction.z};
   const PickHit hit = scene.pickAt(o, d);
@@ -35,7 +34,7 @@ bool WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& 
   return true;
 }
 
-bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, int windowWidth, int windowHeight) {
+bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, const ViewRect& view) {
   switch (event.type) {
     case SDL_QUIT:
       scene.requestQuit();
@@ -52,7 +51,7 @@ bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, int
       // The left button on a body drags it; any other press is the camera's.
       if (held_ || camera_.active()) break;
       if (event.button.button == SDL_BUTTON_LEFT && !(SDL_GetModState() & KMOD_SHIFT) &&
-          pressLeft(event.button, scene, windowWidth, windowHeight))
+          pressLeft(event.button, scene, view))
         break;
       camera_.pressButton(event.button);
       break;
@@ -69,12 +68,12 @@ bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, int
         // Keep the grab distance along the new ray: the target follows the
         // cursor across the screen at the depth where the body was grabbed.
         glm::vec3 origin, direction;
-        ray(scene, event.motion.x, event.motion.y, windowWidth, windowHeight, origin, direction);
+        ray(scene, event.motion.x, event.motion.y, view, origin, direction);
         const glm::vec3 target = origin + direction * static_cast<float>(grabDistance_);
         const double t[3] = {target.x, target.y, target.z};
         scene.moveDrag(t);
       } else {
-        camera_.moveMouse(event.motion, scene.camera(), windowHeight);
+        camera_.moveMouse(event.motion, scene.camera(), view.height);
       }
       break;
     case SDL_MOUSEWHEEL:

@@ -15,12 +15,16 @@ namespace odelab {
 // buttons, the left one on empty space, the wheel, Home and W/S/A/D move
 // the camera (CameraControl); every other key press goes to the scene's key
 // table. Real and scripted (SDL_PushEvent) input take this path.
+// Where the scene is drawn in the window, in SDL's window coordinates (those
+// of mouse events): left, top, width, height.
+struct ViewRect {
+  int x, y, width, height;
+};
+
 class WindowInput {
  public:
-  // windowWidth / windowHeight: the window's size in SDL's window
-  // coordinates, those of mouse events. Returns true when the window's
-  // drawable size may have changed.
-  bool handleEvent(const SDL_Event& event, AbstractWindow& scene, int windowWidth, int windowHeight);
+  // Returns true when the window's drawable size may have changed.
+  bool handleEvent(const SDL_Event& event, AbstractWindow& scene, const ViewRect& view);
 
   // The drag to draw: the grabbed point on the body and the spring's
   // target. False when nothing is being dragged.
@@ -28,8 +32,8 @@ class WindowInput {
 
  private:
   // Starts a body drag where the cursor hits one; false over empty space.
-  bool pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, int windowWidth, int windowHeight);
-  void ray(const AbstractWindow& scene, int x, int y, int windowWidth, int windowHeight, glm::vec3& origin,
+  bool pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, const ViewRect& view);
+  void ray(const AbstractWindow& scene, int x, int y, const ViewRect& view, glm::vec3& origin,
            glm::vec3& direction) const;
 
   CameraControl camera_;
