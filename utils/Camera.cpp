@@ -101,9 +101,9 @@ glm::mat4 Camera::viewMatrix() const { return glm::lookAt(position_, position_ +
 
 std::vector<std::string> cameraHelpLines() {
   return {
-      "left mouse   on a body: drag it with a spring; elsewhere: orbit the view",
-      "right mouse  orbit the view about its target",
-      "middle mouse (or Shift + left / right) pan the view",
+      "left mouse   drag a body with a spring; drag elsewhere to orbit the view",
+      "right mouse  drag to orbit the view about its target",
+      "Shift+drag   pan the view (a middle-button drag too)",
       "mouse wheel  zoom toward the target",
       "W/S/A/D      fly the camera forward / back / left / right",
       "Home         back to the start view (Shift+Home: frame every body)",

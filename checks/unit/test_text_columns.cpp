@@ -42,3 +42,15 @@ TEST(TextColumns, JoinsColumnsPaddedToTheirWidestLine) {
 
 }  // namespace
 }  // namespace odelab
+
+namespace odelab {
+namespace {
+
+TEST(TextColumns, HelpLinesContinueUnderTheirTextColumn) {
+  const std::vector<std::string> lines =
+      wrapHanging({"F6           QuickStep iterations up (Shift: down)"}, 32, characters);
+  EXPECT_EQ(lines, (std::vector<std::string>{"F6           QuickStep", "             iterations up", "             (Shift: down)"}));
+}
+
+}  // namespace
+}  // namespace odelab

@@ -215,8 +215,10 @@ void ControlPanel::sceneKeys(AbstractWindow& scene) {
     if (binding->description.find("Shift") != std::string::npos &&
         flowButton(("Shift+" + binding->keyName).c_str()))
       scene.handleKey(binding->key, true);
-    ImGui::SameLine();
+    // Below its buttons, so it has the panel's width to wrap in.
+    ImGui::Indent();
     ImGui::TextWrapped("%s", binding->description.c_str());
+    ImGui::Unindent();
     ImGui::PopID();
   }
 }
@@ -300,12 +302,14 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
                              ImGuiCond_Always);
     ImGui::Begin("Controls (Tab hides)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                                       ImGuiWindowFlags_NoCollapse);
+    // The world settings come first, where every scene has them at the
+    // same place; then the scene's own keys, the drawing and its values.
     timeButtons(scene);
+    ImGui::Separator();
+    settings(scene);
     ImGui::Separator();
     sceneKeys(scene);
     viewToggles(scene);
-    ImGui::Separator();
-    settings(scene);
     if (!scene.parameters().all().empty()) {
       ImGui::Separator();
       parameters(scene);

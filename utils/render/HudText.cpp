@@ -155,14 +155,16 @@ void HudText::drawAt(const TextBlock& block, int x, int y, int viewportWidth, in
   glBindVertexArray(0);
 }
 
-void HudText::prepareInColumns(TextBlock& block, const std::vector<std::string>& lines, int maxWidth,
-                               int maxHeight, int maxColumns) {
+std::vector<std::string> HudText::inColumns(const std::vector<std::string>& lines, int maxWidth, int maxHeight,
+                                            int maxColumns, bool& fits) {
   const int gapCharacters = 4;
   const TextWidth width = [this](const std::string& text) { return textWidth(font_.get(), text); };
   const int maxRows = std::max(1, (maxHeight - 2 * PADDING) / std::max(1, lineSkip()));
   const auto columns = spreadOverColumns(lines, maxWidth - 2 * PADDING, gapCharacters * width(" "), maxRows,
-                                         maxColumns, width);
-  prepare(block, joinColumns(columns, gapCharacters), maxWidth);
+                                         maxColumns, width, Wrap::Hanging);
+  std::vector<std::string> joined = joinColumns(columns, gapCharacters);
+  fits = static_cast<int>(joined.size()) <= maxRows;
+  return joined;
 }
 
 int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight) {

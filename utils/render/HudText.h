@@ -65,11 +65,12 @@ class HudText {
   // `maxWidth` pixels (0: no limit) wraps at spaces; a word wider still is
   // cut and ends in "...".
   void prepare(TextBlock& block, const std::vector<std::string>& lines, int maxWidth = 0);
-  // Like prepare(), for a monospaced font: the lines broken to fit and
-  // spread over as few side-by-side columns (at most maxColumns) as keep
-  // the block within maxWidth x maxHeight pixels.
-  void prepareInColumns(TextBlock& block, const std::vector<std::string>& lines, int maxWidth, int maxHeight,
-                        int maxColumns);
+  // For a monospaced font: the lines broken to fit and spread over as few
+  // side-by-side columns (at most maxColumns) as keep them within
+  // maxWidth x maxHeight pixels, joined into the lines of one block (for
+  // prepare()). `fits` says whether they stay within maxHeight.
+  std::vector<std::string> inColumns(const std::vector<std::string>& lines, int maxWidth, int maxHeight,
+                                     int maxColumns, bool& fits);
   // Draws a prepared block with its top-left corner at pixel (x, y) from
   // the window's top-left corner. Leaves depth testing off and blending on.
   void drawAt(const TextBlock& block, int x, int y, int viewportWidth, int viewportHeight);

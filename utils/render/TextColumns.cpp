@@ -77,9 +77,41 @@ std::vector<std::string> wrapItems(const std::vector<std::string>& lines, int ma
   return out;
 }
 
+std::vector<std::string> wrapHanging(const std::vector<std::string>& lines, int maxWidth, const TextWidth& width) {
+  // How far in the text column of an aligned line starts.
+  const size_t NEAR_START = 20;
+  if (maxWidth <= 0) return lines;
+  std::vector<std::string> out;
+  for (const std::string& line : lines) {
+    if (line.empty() || width(line) <= maxWidth) {
+      out.push_back(line);
+      continue;
+    }
+    const size_t gap = line.find("  ");
+    size_t column = gap != std::string::npos && gap < NEAR_START ? line.find_first_not_of(' ', gap) : 0;
+    if (column == std::string::npos) column = 0;
+    const std::string hang(column > 0 ? column : INDENT.size(), ' ');
+    const std::vector<std::string> words = split(line.substr(column), " ");
+    std::string current = line.substr(0, column);
+    bool empty = true;  // no word on `current` yet
+    for (const std::string& word : words) {
+      const std::string joined = empty ? current + word : current + ' ' + word;
+      if (empty || width(joined) <= maxWidth) {
+        current = joined;
+        empty = false;
+      } else {
+        out.push_back(current);
+        current = hang + word;
+      }
+    }
+    out.push_back(current);
+  }
+  return out;
+}
+
 std::vector<std::vector<std::string>> spreadOverColumns(const std::vector<std::string>& lines, int totalWidth,
                                                         int gap, int maxRows, int maxColumns,
-                                                        const TextWidth& width) {
+                                                        const TextWidth& width, Wrap wrap) {
   std::vector<std::vector<std::string>> best;
   size_t bestRows = 0;
   for (int count = 1; count <= std::max(1, maxColumns); ++count) {
@@ -88,7 +120,8 @@ std::vector<std::vector<std::string>> spreadOverColumns(const std::vector<std::s
     std::vector<std::vector<std::string>> groups;
     size_t rows = 0;
     for (const std::string& line : lines) {
-      groups.push_back(wrapItems({line}, columnWidth, width));
+      groups.push_back(wrap == Wrap::Items ? wrapItems({line}, columnWidth, width)
+                                           : wrapHanging({line}, columnWidth, width));
       rows += groups.back().size();
     }
     const size_t perColumn = (rows + static_cast<size_t>(count) - 1) / static_cast<size_t>(count);

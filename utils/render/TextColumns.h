@@ -17,13 +17,22 @@ using TextWidth = std::function<int(const std::string&)>;
 // spaces so they read as part of the line above. maxWidth <= 0: no limit.
 std::vector<std::string> wrapItems(const std::vector<std::string>& lines, int maxWidth, const TextWidth& width);
 
+// Breaks every line wider than maxWidth pixels between words, continuing
+// under its text column: a help line "F6           QuickStep iterations ..."
+// goes on under "QuickStep" (the text after the first run of two or more
+// spaces near the line's start; three spaces in when there is none).
+std::vector<std::string> wrapHanging(const std::vector<std::string>& lines, int maxWidth, const TextWidth& width);
+
+// How spreadOverColumns breaks a line too wide for its column.
+enum class Wrap { Items, Hanging };
+
 // The lines in the fewest columns (at most maxColumns) of width
 // (totalWidth - gaps) / columns whose tallest holds at most maxRows lines;
 // when none does, the count that gives the shortest. A line and its continuation
 // lines stay in one column, and columns are filled in reading order.
 std::vector<std::vector<std::string>> spreadOverColumns(const std::vector<std::string>& lines, int totalWidth,
                                                         int gap, int maxRows, int maxColumns,
-                                                        const TextWidth& width);
+                                                        const TextWidth& width, Wrap wrap = Wrap::Items);
 
 // Columns side by side as one block of lines, for a monospaced font: each
 // column padded with spaces to its longest line (counted in characters, not

@@ -17,6 +17,7 @@
 #include "DebugDraw.h"
 #include "EventPlayer.h"
 #include "GlWindow.h"
+#include "HelpOverlay.h"
 #include "HudText.h"
 #include "LivePlot.h"
 #include "Renderer.h"
@@ -37,9 +38,8 @@ const double RECORD_FRAME_SECONDS = 1.0 / 60.0;
 const double NOTICE_SECONDS = 4.0;
 const int MARGIN = 10;
 // The HUD's strip takes at most this share of the window's height (its
-// columns spread wider first); the help spreads over up to this many columns.
+// columns spread wider first).
 const int HUD_MAX_PERCENT = 22;
-const int HELP_COLUMNS = 3;
 
 // Totals of the run, printed at exit and at each scripted mark (the
 // benchmark reads them): frames, real seconds, and the part of them spent
@@ -82,7 +82,7 @@ struct Views {
   DebugDraw debug;
   LivePlot plot;
   ControlPanel panel;
-  TextBlock help{250};  // all but opaque: the HUD and scene do not show through
+  HelpOverlay help;
   TextBlock notice{200};
 };
 
@@ -103,6 +103,7 @@ class FrameLoop {
   void pollEvents(long long frame);
   void draw();
   void drawHelp(int width, int height);
+  bool turnHelpPage(const SDL_Event& event);
   void drawNotice(int width, int height);
   void saveRequestedScreenshot();
   void recordFrame(long long frame);
@@ -132,6 +133,7 @@ void FrameLoop::pollEvents(long long frame) {
     if (player_.handle(event, scene_, [this](const std::string& label) { printTotals(("mark " + label).c_str(), totals_); }))
       continue;
     if (views_.panel.handleEvent(event)) continue;
+    if (turnHelpPage(event)) continue;
     if (event.type == SDL_KEYDOWN && event.key.keysym.sym == SDLK_TAB && !event.key.repeat) {
       views_.panel.toggle();
       continue;
@@ -146,13 +148,24 @@ void FrameLoop::pollEvents(long long frame) {
   syncMouseLook(scene_);
 }
 
+// Page Down / Space and Page Up turn the help's pages while it is open.
+bool FrameLoop::turnHelpPage(const SDL_Event& event) {
+  if (!scene_.viewFlags().help) {
+    views_.help.close();
+    return false;
+  }
+  if (event.type != SDL_KEYDOWN) return false;
+  const SDL_Keycode key = event.key.keysym.sym;
+  if (key == SDLK_PAGEDOWN || key == SDLK_SPACE) views_.help.turn(+1);
+  else if (key == SDLK_PAGEUP) views_.help.turn(-1);
+  else return false;
+  return true;
+}
+
 void FrameLoop::drawHelp(int width, int height) {
   std::vector<std::string> lines{scene_.title() + ": keys and mouse   (H closes this)", ""};
   for (const std::string& line : scene_.helpLines()) lines.push_back(line);
-  views_.text.prepareInColumns(views_.help, lines, width - 2 * MARGIN, height - 2 * MARGIN, HELP_COLUMNS);
-  const int x = std::max(MARGIN, (width - views_.help.width()) / 2);
-  const int y = std::max(MARGIN, (height - views_.help.height()) / 2);
-  views_.text.drawAt(views_.help, x, y, width, height);
+  views_.help.draw(views_.text, lines, width, height);
 }
 
 void FrameLoop::drawNotice(int width, int height) {
@@ -163,8 +176,8 @@ void FrameLoop::drawNotice(int width, int height) {
 
 void FrameLoop::draw() {
   // The panel is a column at the right edge and the HUD a strip across the
-  // top; the scene takes the rest, so neither covers the subject. The
-  // overlays (help, plot, notice) share the whole view.
+  // top; the scene takes the rest, so neither covers the subject. The plot
+  // and the notice sit in the view's bottom corners.
   const int windowWidth = window_.width(), height = window_.height();
   const int width = std::max(1, windowWidth - views_.panel.coveredWidth());
   views_.text.setSizeFor(options_.textSize, height);
@@ -179,9 +192,14 @@ void FrameLoop::draw() {
   views_.text.drawHud(width, height);
   const ViewFlags& flags = scene_.viewFlags();
   if (flags.plot) views_.plot.draw(scene_.chart(), views_.text, width, height);
-  if (flags.help) drawHelp(width, height);
   drawNotice(width, height);
   views_.panel.draw(scene_, windowWidth, height);
+  // The help is read, not worked beside: it takes the whole window, over
+  // the panel too, for room to stay in columns rather than run off.
+  if (flags.help) {
+    glViewport(0, 0, windowWidth, height);
+    drawHelp(windowWidth, height);
+  }
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }
