@@ -188,6 +188,7 @@ void FrameLoop::draw() {
   glm::vec3 grabbed, target;
   const bool dragging = input_.dragLine(scene_, grabbed, target);
   views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
+  views_.renderer.present();
   glViewport(0, 0, width, height);
   views_.text.drawHud(width, height);
   const ViewFlags& flags = scene_.viewFlags();
@@ -321,6 +322,9 @@ int runWindow(AbstractWindow& scene, const RunOptions& options) {
     // Declared in this order so GL objects go before the context they live in.
     GlWindow window(scene.title(), options.width, options.height, options.vsync);
     Views views(shaders.found, font.found, window, options);
+    views.renderer.setSoftware(window.software());
+    std::printf("renderer: %s%s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+                window.software() ? " (software: no multisampling, shadows filtered over one texel)" : "");
     // Built only now that the window can run, so that a refused window run
     // (no display, unusable shaders or font) leaves no output file behind;
     // a runner that built it already is fine too.
