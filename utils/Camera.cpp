@@ -101,7 +101,8 @@ glm::mat4 Camera::viewMatrix() const { return glm::lookAt(position_, position_ +
 
 std::vector<std::string> cameraHelpLines() {
   return {
-      "left mouse   drag a body with a spring; drag elsewhere to orbit the view",
+      "left mouse   drag a body with a spring; drag elsewhere to orbit the view;",
+      "             double-click a body to follow it (elsewhere: stop)",
       "right mouse  drag to orbit the view about its target",
       "Shift+drag   pan the view (a middle-button drag too)",
       "mouse wheel  zoom toward the target",

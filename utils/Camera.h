@@ -35,6 +35,11 @@ class Camera {
   void orbit(float yawDegrees, float pitchDegrees);
   // Moves eye and target across the view: right and up, in metres.
   void pan(float right, float up);
+  // Moves eye and target by `offset` (following a body).
+  void shift(const glm::vec3& offset) {
+    position_ += offset;
+    atHome_ = false;
+  }
   // Scales the eye's distance to the target (below 1: closer).
   void zoom(float factor);
 

@@ -20,6 +20,7 @@ bool CameraControl::handleKey(const SDL_KeyboardEvent& key, AbstractWindow& scen
   const bool shift = (key.keysym.mod & KMOD_SHIFT) != 0;
   switch (key.keysym.sym) {
     case SDLK_HOME:
+      followed_ = -1;
       if (shift)
         frameScene(scene);
       else
@@ -85,6 +86,35 @@ void CameraControl::wheel(const SDL_MouseWheelEvent& wheel, Camera& camera) {
   // Away from the user zooms in; a flipped ("natural") wheel reports the opposite.
   const int notches = wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -wheel.y : wheel.y;
   if (notches != 0) camera.zoom(std::pow(ZOOM_PER_NOTCH, static_cast<float>(notches)));
+}
+
+namespace {
+glm::vec3 positionOf(const AbstractObject& object) {
+  const dReal* p = object.getPosition();
+  return {p[0], p[1], p[2]};
+}
+}  // namespace
+
+void CameraControl::follow(int index, const AbstractWindow& scene) {
+  const auto& objects = scene.objects();
+  followed_ = index >= 0 && index < static_cast<int>(objects.size()) ? index : -1;
+  if (followed_ < 0) return;
+  followedObject_ = objects[static_cast<size_t>(index)].get();
+  followedAt_ = positionOf(*followedObject_);
+}
+
+void CameraControl::keepFollowing(AbstractWindow& scene) {
+  if (followed_ < 0) return;
+  const auto& objects = scene.objects();
+  // A reset or a rewind builds new objects: the one followed is gone.
+  if (followed_ >= static_cast<int>(objects.size()) || objects[static_cast<size_t>(followed_)].get() != followedObject_) {
+    followed_ = -1;
+    return;
+  }
+  const glm::vec3 now = positionOf(*followedObject_);
+  if (!std::isfinite(now.x) || !std::isfinite(now.y) || !std::isfinite(now.z)) return;
+  scene.camera().shift(now - followedAt_);
+  followedAt_ = now;
 }
 
 void frameScene(AbstractWindow& scene) {

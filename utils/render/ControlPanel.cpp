@@ -117,6 +117,15 @@ bool flowButton(const char* label) {
   return ImGui::Button(label);
 }
 
+// The world settings in force as the command line that starts the program
+// with them ("test2 --erp 0.4 --cfm 0 ... --solver quick").
+std::string commandLineOf(const AbstractWindow& scene) {
+  std::string line = scene.programName();
+  for (const SettingSpec& spec : settingsTable())
+    line += std::string(" ") + spec.option + " " + settingText(spec.id, settingValue(scene.settings(), spec.id));
+  return line;
+}
+
 // A drag moves the mouse this far before it counts: a click is not a drag.
 constexpr float LEAST_DRAG_PIXELS = 4.0f;
 
@@ -206,6 +215,38 @@ void ControlPanel::timeButtons(AbstractWindow& scene) {
   if (flowButton("Forward (.)")) press(SDLK_PERIOD);
   if (ImGui::Button("Start view (Home)")) scene.camera().goHome();
   if (flowButton("Frame all")) frameScene(scene);
+}
+
+void ControlPanel::copyCommandLine(const AbstractWindow& scene) {
+  // The settings as typed options, onto the clipboard and standard output,
+  // so a run tuned here can be started again from a shell.
+  if (ImGui::Button("Copy as command line")) {
+    copied_ = commandLineOf(scene);
+    SDL_SetClipboardText(copied_.c_str());
+    std::printf("command line: %s\n", copied_.c_str());
+    std::fflush(stdout);
+  }
+  if (!copied_.empty()) ImGui::TextWrapped("copied: %s", copied_.c_str());
+}
+
+void ControlPanel::timelineSlider(AbstractWindow& scene) {
+  // Always there, so that the panel's rows keep their places.
+  long long last = std::max(1LL, scene.timeline().horizon());
+  long long first = 0;
+  long long target = scrubbing_ ? scrubStep_ : std::min(scene.steps(), last);
+  ImGui::SetNextItemWidth(-1);
+  ImGui::SliderScalar("##timeline", ImGuiDataType_S64, &target, &first, &last, "timeline: step %lld",
+                      ImGuiSliderFlags_AlwaysClamp);
+  if (ImGui::IsItemActive()) {
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, LEAST_DRAG_PIXELS)) scrubbing_ = true;
+    if (scrubbing_) scrubStep_ = target;
+  }
+  // Released after a drag: the run as it was at that step, rebuilt by
+  // replaying its recorded inputs (as , and . do), and paused there.
+  if (ImGui::IsItemDeactivated()) {
+    if (scrubbing_ && scrubStep_ != scene.steps()) scene.replayTo(scrubStep_);
+    scrubbing_ = false;
+  }
 }
 
 void ControlPanel::sceneKeys(AbstractWindow& scene) {
@@ -307,7 +348,9 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
     timeButtons(scene);
     ImGui::Separator();
     settings(scene);
+    copyCommandLine(scene);
     ImGui::Separator();
+    timelineSlider(scene);
     sceneKeys(scene);
     viewToggles(scene);
     if (!scene.parameters().all().empty()) {

@@ -38,6 +38,10 @@ class ControlPanel {
   static constexpr int MARGIN = 10;
   bool contains(int x, int y) const;
   void timeButtons(AbstractWindow& scene);
+  // A slider over the steps this run has reached: a drag goes back (or
+  // forth again) to any of them.
+  void timelineSlider(AbstractWindow& scene);
+  void copyCommandLine(const AbstractWindow& scene);
   void sceneKeys(AbstractWindow& scene);    // the scene's own keys as buttons
   void viewToggles(AbstractWindow& scene);  // C, J, X, V, L, H and the F2 increment
   void settings(AbstractWindow& scene);
@@ -57,6 +61,9 @@ class ControlPanel {
   std::map<std::string, double> editing_;        // a slider's value during its drag
   std::map<std::string, std::string> typing_;    // a field's text while it is typed in
   std::map<std::string, std::string> refusals_;  // why a typed value was refused, shown under it
+  std::string copied_;                           // the last "copy as command line"
+  bool scrubbing_ = false;                       // the timeline slider is being dragged
+  long long scrubStep_ = 0;
   bool dragged_ = false;                         // the active slider has been dragged
 };
 

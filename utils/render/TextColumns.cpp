@@ -26,17 +26,18 @@ std::vector<std::string> split(const std::string& line, const std::string& separ
 // a part that does not fit alone is left on a line of its own (the caller
 // breaks it further).
 std::vector<std::string> pack(const std::vector<std::string>& parts, const std::string& joiner,
-                              const std::string& firstPrefix, int maxWidth, const TextWidth& width) {
+                              const std::string& firstPrefix, int maxWidth, const TextWidth& width,
+                              const std::string& continuation = INDENT) {
   std::vector<std::string> out;
   std::string current;
   for (const std::string& part : parts) {
-    const std::string prefix = out.empty() && current.empty() ? firstPrefix : INDENT;
+    const std::string prefix = out.empty() && current.empty() ? firstPrefix : continuation;
     const std::string joined = current.empty() ? prefix + part : current + joiner + part;
     if (current.empty() || width(joined) <= maxWidth) {
       current = joined;
     } else {
       out.push_back(current);
-      current = INDENT + part;
+      current = continuation + part;
     }
   }
   if (!current.empty()) out.push_back(current);
@@ -49,19 +50,26 @@ size_t characters(const std::string& text) {
       std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
 }
 
-}  // namespace
-
-std::vector<std::string> wrapItems(const std::vector<std::string>& lines, int maxWidth, const TextWidth& width) {
+// Every line that does not fit in maxWidth replaced by what `wrap` makes of it.
+std::vector<std::string> wrapEach(const std::vector<std::string>& lines, int maxWidth, const TextWidth& width,
+                                  const std::function<void(const std::string&, std::vector<std::string>&)>& wrap) {
   if (maxWidth <= 0) return lines;
   std::vector<std::string> out;
   for (const std::string& line : lines) {
-    if (line.empty() || width(line) <= maxWidth) {
+    if (line.empty() || width(line) <= maxWidth)
       out.push_back(line);
-      continue;
-    }
-    // Keep a line's own leading spaces (an aligned help column) on its first piece.
-    const size_t lead = line.find_first_not_of(' ');
-    const std::string leading = line.substr(0, lead == std::string::npos ? 0 : lead);
+    else
+      wrap(line, out);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> wrapItems(const std::vector<std::string>& lines, int maxWidth, const TextWidth& width) {
+  return wrapEach(lines, maxWidth, width, [&](const std::string& line, std::vector<std::string>& out) {
+    // Keep a line's own leading spaces on its first piece.
+    const std::string leading = line.substr(0, std::min(line.find_first_not_of(' '), line.size()));
     for (const std::string& piece : pack(split(line.substr(leading.size()), ITEM_SEPARATOR), ITEM_SEPARATOR,
                                          leading, maxWidth, width)) {
       if (width(piece) <= maxWidth) {
@@ -73,40 +81,21 @@ std::vector<std::string> wrapItems(const std::vector<std::string>& lines, int ma
       for (const std::string& part : pack(split(piece.substr(start), " "), " ", piece.substr(0, start), maxWidth, width))
         out.push_back(part);
     }
-  }
-  return out;
+  });
 }
 
 std::vector<std::string> wrapHanging(const std::vector<std::string>& lines, int maxWidth, const TextWidth& width) {
-  // How far in the text column of an aligned line starts.
+  // How far in the text column of an aligned line may start.
   const size_t NEAR_START = 20;
-  if (maxWidth <= 0) return lines;
-  std::vector<std::string> out;
-  for (const std::string& line : lines) {
-    if (line.empty() || width(line) <= maxWidth) {
-      out.push_back(line);
-      continue;
-    }
+  return wrapEach(lines, maxWidth, width, [&](const std::string& line, std::vector<std::string>& out) {
     const size_t gap = line.find("  ");
     size_t column = gap != std::string::npos && gap < NEAR_START ? line.find_first_not_of(' ', gap) : 0;
     if (column == std::string::npos) column = 0;
     const std::string hang(column > 0 ? column : INDENT.size(), ' ');
-    const std::vector<std::string> words = split(line.substr(column), " ");
-    std::string current = line.substr(0, column);
-    bool empty = true;  // no word on `current` yet
-    for (const std::string& word : words) {
-      const std::string joined = empty ? current + word : current + ' ' + word;
-      if (empty || width(joined) <= maxWidth) {
-        current = joined;
-        empty = false;
-      } else {
-        out.push_back(current);
-        current = hang + word;
-      }
-    }
-    out.push_back(current);
-  }
-  return out;
+    for (const std::string& part :
+         pack(split(line.substr(column), " "), " ", line.substr(0, column), maxWidth, width, hang))
+      out.push_back(part);
+  });
 }
 
 std::vector<std::vector<std::string>> spreadOverColumns(const std::vector<std::string>& lines, int totalWidth,

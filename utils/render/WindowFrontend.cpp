@@ -16,6 +16,7 @@
 #include "ControlPanel.h"
 #include "DebugDraw.h"
 #include "EventPlayer.h"
+#include "FrameProfile.h"
 #include "GlWindow.h"
 #include "HelpOverlay.h"
 #include "HudText.h"
@@ -122,6 +123,7 @@ class FrameLoop {
   std::string notice_;
   double noticeUntil_ = 0.0;
   int hudStrip_ = 0;  // pixels at the top the HUD took in the last frame
+  FrameProfile profile_;
 };
 
 void FrameLoop::pollEvents(long long frame) {
@@ -181,7 +183,10 @@ void FrameLoop::draw() {
   const int windowWidth = window_.width(), height = window_.height();
   const int width = std::max(1, windowWidth - views_.panel.coveredWidth());
   views_.text.setSizeFor(options_.textSize, height);
-  hudStrip_ = views_.text.layoutHud(scene_.hudLines(), width, height * HUD_MAX_PERCENT / 100);
+  std::vector<std::string> hud = scene_.hudLines();
+  // The full HUD also says where the frame's time goes.
+  if (scene_.hudMode() == HudMode::Full && !profile_.text().empty()) hud.insert(hud.begin() + std::min<long>(3, static_cast<long>(hud.size())), profile_.text());
+  hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100);
   const int sceneHeight = std::max(1, height - hudStrip_);
   scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(sceneHeight));
   views_.renderer.render(scene_, width, sceneHeight);
@@ -258,15 +263,19 @@ int FrameLoop::run() {
     moveCamera(scene_, elapsed);
     const double simulatedBefore = scene_.simulatedTime();
     const long long stepsBefore = scene_.steps();
+    const double collideBefore = scene_.collideWallSeconds();
     // An OdeError leaves through here; RAII cleans up.
     scene_.advanceFrame(recording ? RECORD_FRAME_SECONDS : elapsed,
                         recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET);
     const double stepping = seconds(now, SDL_GetPerformanceCounter());
+    input_.followBody(scene_);
     // A reset or a rewind moves time back: only forward steps count.
     const double advanced =
         scene_.steps() > stepsBefore ? std::max(0.0, scene_.simulatedTime() - simulatedBefore) : 0.0;
 
+    const Uint64 drawStart = SDL_GetPerformanceCounter();
     draw();
+    const Uint64 drawEnd = SDL_GetPerformanceCounter();
     // Read the back buffer before the swap leaves its contents undefined.
     const bool screenshotNow = screenshotRun && frame == screenshotFrame;
     if (scene_.takeScreenshotRequest()) saveRequestedScreenshot();
@@ -277,7 +286,10 @@ int FrameLoop::run() {
     totals_.seconds += elapsed;
     totals_.longestFrame = std::max(totals_.longestFrame, elapsed);
     if (!screenshotNow) window_.swap();  // a software renderer does much of its work here
-    const double busy = seconds(start, SDL_GetPerformanceCounter());
+    const Uint64 swapped = SDL_GetPerformanceCounter();
+    const double busy = seconds(start, swapped);
+    profile_.add(scene_.collideWallSeconds() - collideBefore, stepping, seconds(drawStart, drawEnd),
+                 seconds(drawEnd, swapped), elapsed);
     totals_.busySeconds += busy;
     scene_.time().endFrame(elapsed, advanced, stepping, busy, period);
     if (screenshotNow) {

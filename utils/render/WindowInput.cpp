@@ -24,7 +24,11 @@ bool WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& 
   const double o[3] = {origin.x, origin.y, origin.z};
   const double d[3] = {direction.x, direction.y, direction.z};
   const PickHit hit = scene.pickAt(o, d);
-  if (hit.objectIndex < 0) return false;  // nothing there: the camera's
+  if (hit.objectIndex < 0) {  // nothing there: the camera's (a double click stops following)
+    if (button.clicks >= 2) camera_.follow(-1, scene);
+    return false;
+  }
+  if (button.clicks >= 2) camera_.follow(hit.objectIndex, scene);
   scene.beginDrag(hit, hit.point);
   if (!scene.dragging()) return false;  // a static object: nothing to pull
   held_ = true;

@@ -26,6 +26,9 @@ class WindowInput {
   // Returns true when the window's drawable size may have changed.
   bool handleEvent(const SDL_Event& event, AbstractWindow& scene, const ViewRect& view);
 
+  // Once a frame after stepping: the camera follows the body double-clicked.
+  void followBody(AbstractWindow& scene) { camera_.keepFollowing(scene); }
+
   // The drag to draw: the grabbed point on the body and the spring's
   // target. False when nothing is being dragged.
   bool dragLine(const AbstractWindow& scene, glm::vec3& grabbed, glm::vec3& target) const;
