@@ -33,6 +33,8 @@ class TextBlock {
   std::vector<std::string> lines_;
   int maxWidth_ = 0;
   int generation_ = -1;  // the HudText font size it was rendered with
+  bool small_ = false;   // in HudText's smaller font
+  bool renderedSmall_ = false;
   bool prepared_ = false;
   int width_ = 0, height_ = 0;
 };
@@ -51,10 +53,13 @@ class HudText {
   // items and laid out in as few columns (at most MAX_HUD_COLUMNS) as keep
   // it within `maxHeight` pixels. Returns the strip's height with its
   // margins (0 for no lines): the scene is drawn below it.
-  int layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight);
+  // `small`: in the smaller font (SMALL_PERCENT of the text height), for
+  // the full HUD's many lines.
+  int layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight, bool small = false);
   // Draws the strip laid out last.
   void drawHud(int viewportWidth, int viewportHeight);
   static constexpr int MAX_HUD_COLUMNS = 3;
+  static constexpr int SMALL_PERCENT = 80;
 
   // Text height in pixels: `pixels`, or when 0 one 45th of the window's
   // height within [12, 28] (16 at 720 rows). Re-renders blocks on a change.
@@ -89,6 +94,7 @@ class HudText {
   };
   TtfLibrary library_;
   std::unique_ptr<TTF_Font, FontCloser> font_;
+  std::unique_ptr<TTF_Font, FontCloser> small_;
   ShaderProgram program_;
   GLint rectUniform_, viewportUniform_, textUniform_;
   GLuint emptyVertexArray_ = 0;  // core profile needs one bound even without attributes

@@ -186,7 +186,7 @@ void FrameLoop::draw() {
   std::vector<std::string> hud = scene_.hudLines();
   // The full HUD also says where the frame's time goes.
   if (scene_.hudMode() == HudMode::Full && !profile_.text().empty()) hud.insert(hud.begin() + std::min<long>(3, static_cast<long>(hud.size())), profile_.text());
-  hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100);
+  hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.hudMode() == HudMode::Full);
   const int sceneHeight = std::max(1, height - hudStrip_);
   scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(sceneHeight));
   views_.renderer.render(scene_, width, sceneHeight);
