@@ -43,10 +43,11 @@ odelab_window_check(test2_window_rewind_replay_reaches_same_state test2 EVENTS r
   ARGS --step 0.001953125)
 # A drag pulls the picked body toward the cursor: the gap opened by moving
 # the cursor is at most half as wide when the button is released. (The
-# script's pixels are the bob's with the whole window as the view: no panel.)
+# script's pixels are the bob's with the whole window as the view: no
+# panel, no HUD strip.)
 odelab_window_check(test2_window_drag_pulls_body_to_cursor test2 EVENTS drag.events
   EXPECT drag_start_distance>1 drag_end_distance<@drag_start_distance*0.5
-  ARGS --no-panel)
+  ARGS --no-panel --hud off)
 
 # An ODE error in a window pauses at the last good state, as a blow-up
 # does, and the session goes on (headless it ends the run with status 4).
@@ -86,3 +87,22 @@ add_test(NAME test2_window_panel_sets_cfm
                  $<TARGET_FILE:expect_metrics> ${CMAKE_CURRENT_SOURCE_DIR}/scripts/panel_cfm.events
                  ${CMAKE_CURRENT_BINARY_DIR}/window_runs/panel_cfm)
 set_tests_properties(test2_window_panel_sets_cfm PROPERTIES LABELS window)
+
+# Home brings back the scene's start view after the wheel and W moved the
+# camera: a paused scene with the HUD off, compared pixel by pixel.
+add_test(NAME test0_window_home_restores_start_view
+         COMMAND sh ${ODELAB_CHECK_SCRIPTS}/check_home_view.sh ${XVFB_RUN} $<TARGET_FILE:test0>
+                 $<TARGET_FILE:png_compare> ${ODELAB_CHECK_SCRIPTS}/home_view.events
+                 ${CMAKE_CURRENT_BINARY_DIR}/window_runs/home_view)
+set_tests_properties(test0_window_home_restores_start_view PROPERTIES TIMEOUT 180 LABELS window)
+
+# A number typed into the panel is read as the command line reads it:
+# "0,002" in the step field is refused (never read as 0.002 or 2) with a
+# message naming the text, and the step stays 0.001 s, so one O advances
+# the paused run by exactly 0.001 s.
+if(XVFB_RUN)
+  add_test(NAME test2_window_panel_refuses_decimal_comma
+           COMMAND sh -c "\"${XVFB_RUN}\" -a -s '-screen 0 1280x800x24' \"$<TARGET_FILE:expect_metrics>\" mark_stepped_steps==1 mark_stepped_sim_seconds==0.001 -- \"$<TARGET_FILE:test2>\" --events \"${ODELAB_CHECK_SCRIPTS}/panel_refuses_comma.events\" --out-dir . 2>err.txt; s=$?; cat err.txt; test $s -eq 0 && grep -q \"step (s).*'0,002' is not a number; unchanged\" err.txt"
+           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/window_runs)
+  set_tests_properties(test2_window_panel_refuses_decimal_comma PROPERTIES TIMEOUT 180 LABELS window)
+endif()

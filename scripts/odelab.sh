@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # ODE Lab's one entry point for a fresh Debian machine.
 #
-#   scripts/odelab.sh run  [TEST] [ARGS...]  install what is missing, build, start TEST (default test0)
-#                                             in a window; with no display, say so and run it headless
+#   scripts/odelab.sh run  [TEST] [ARGS...]  install what the window needs, build TEST quietly, start it
+#                                             (default test0) in a window; with no display, say so and
+#                                             run it headless
 #   scripts/odelab.sh test                    install what is missing, build, run the sanitizer check
 #                                             (checks/sanitize.sh) and the whole CTest suite
 #   scripts/odelab.sh windows                 install MinGW-w64 and Wine, cross-build the programs for
@@ -50,6 +51,14 @@ windows_packages=(
 web_packages=(emscripten ninja-build dpkg-dev nodejs chromium)
 command -v npm >/dev/null || web_packages+=(npm)
 
+# What `run` needs for one program in a window: no checks, peers or lab.
+window_packages=(
+  g++ make cmake pkg-config
+  libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev
+  libcli11-dev libstb-dev libglm-dev libimgui-dev
+  fonts-dejavu-core
+)
+
 say() { printf 'odelab: %s\n' "$*" >&2; }
 
 install_missing() {  # install_missing [PACKAGE...] (default: the packages above)
@@ -79,8 +88,26 @@ build_web() {
 }
 
 build() {
-  cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DODELAB_BUILD_CHECKS=ON >/dev/null
   cmake --build "$build_dir" -j "$jobs"
+}
+
+# One program, its output kept in a log that is shown only when the build
+# fails. A build folder configured before keeps its options (the checks
+# stay on where `test` turned them on); a new one builds no checks.
+build_quietly() {
+  local target=$1 log
+  log=$(mktemp)
+  local configure=()
+  [ -f "$build_dir/CMakeCache.txt" ] || configure=(-DODELAB_BUILD_CHECKS=OFF)
+  say "building $target (log: $log)"
+  if ! { cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${configure[@]}" &&
+         cmake --build "$build_dir" -j "$jobs" --target "$target"; } >"$log" 2>&1; then
+    tail -n 40 "$log" >&2
+    say "error: the build failed; the whole log is $log"
+    exit 1
+  fi
+  rm -f "$log"
 }
 
 command=${1:-}
@@ -93,8 +120,8 @@ case "$command" in
       say "error: no program '$program'; the programs are test0 ... test10 (see README.md)"
       exit 2
     fi
-    install_missing
-    build
+    install_missing "${window_packages[@]}"
+    build_quietly "$program"
     if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
       say "no display (DISPLAY is not set): running $program headless instead of in a window"
       exec "$build_dir/tests/$program" --headless "$@"

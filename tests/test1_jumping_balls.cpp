@@ -123,8 +123,9 @@ class JumpingBalls : public AbstractWindow {
     }
     lines.push_back(s.str());
     s.str("");
+    const double lowest = lowestBall();
     s << "balls at rest " << ballsAtRest() << " of " << BALL_COUNT << "   lowest ball " << std::fixed
-      << std::setprecision(4) << lowestBall() << " m above the ground";
+      << std::setprecision(4) << std::abs(lowest) << (lowest < 0 ? " m into the ground" : " m above the ground");
     lines.push_back(s.str());
   }
 

@@ -93,6 +93,9 @@ class AxisSystem : public AbstractWindow {
     sideways_ = maxSideways_ = 0.0;
     maxSink_ = 0.0;
     uprightUntil_ = -1.0;
+    // A window opens (and R restarts) paused on the upright system, so that
+    // it is seen before it falls; a timed run (--seconds) runs at once.
+    if (!options().headless && options().seconds <= 0 && steps() == 0) time().setPaused(true);
   }
 
   void afterStep() override {
@@ -107,14 +110,17 @@ class AxisSystem : public AbstractWindow {
   }
 
   void addHudLines(std::vector<std::string>& lines) const override {
+    // The headline (the compact HUD's): how long the system stood.
+    if (steps() == 0 && time().paused())
+      lines.push_back("upright, paused at the start: P runs it (it stands, then falls within seconds)");
+    else
+      lines.push_back(uprightUntil_ < 0 ? "upright for " + formatValue(simulatedTime(), 5) +
+                                              " s so far (falls at tilt > 1 deg or 0.05 m sideways)"
+                                        : "stood upright for " + formatValue(uprightUntil_, 5) + " s, then fell");
     lines.push_back("big cube tilt " + formatValue(tilt_, 4) + " deg (max " + formatValue(maxTilt_, 4) +
                     "), centre moved " + formatValue(sideways_, 4) + " m sideways (max " +
                     formatValue(maxSideways_, 4) + ")   small cube sank " + formatValue(maxSink_, 4) +
                     " m (max while upright)");
-    lines.push_back(uprightUntil_ < 0 ? "upright for " + formatValue(simulatedTime(), 5) +
-                                            " s so far (falls at tilt > 1 deg "
-                                            "or 0.05 m sideways)"
-                                      : "fell after " + formatValue(uprightUntil_, 5) + " s");
     std::string limits = "max angular speed " + angularLimit_.describe();
     if (startTiltDegrees_ > 0) limits += "   built tilted by " + formatValue(startTiltDegrees_, 4) + " deg";
     lines.push_back(limits);

@@ -142,7 +142,9 @@ class RestitutionAccuracy : public AbstractWindow {
 
   static std::string vectorText(const double v[3]) {
     std::ostringstream s;
-    s << std::fixed << std::setprecision(6) << '[' << v[0] << ", " << v[1] << ", " << v[2] << ']';
+    // A value that rounds to zero prints as 0, not "-0.000000".
+    auto shown = [](double x) { return std::abs(x) < 5e-7 ? 0.0 : x; };
+    s << std::fixed << std::setprecision(6) << '[' << shown(v[0]) << ", " << shown(v[1]) << ", " << shown(v[2]) << ']';
     return s.str();
   }
 

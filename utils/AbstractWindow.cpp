@@ -230,7 +230,9 @@ bool AbstractWindow::stepOnce() {
   if (viewFlags_.contacts) contactMarkers_.clear();
   beforeStep();
   try {
+    const auto collideStart = std::chrono::steady_clock::now();
     dSpaceCollide(space_, this, &AbstractWindow::nearCallback);
+    collideWallSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - collideStart).count();
     if (settings_.solver == Solver::QuickStep)
       dWorldQuickStep(world_, settings_.step);
     else

@@ -134,6 +134,8 @@ class AbstractWindow {
   long long steps() const { return steps_; }
   int contactsLastStep() const { return contactsLastStep_; }
   double lastStepWallSeconds() const { return lastStepWallSeconds_; }
+  // Real seconds spent in dSpaceCollide since the program started (the window's frame profile).
+  double collideWallSeconds() const { return collideWallSeconds_; }
   const std::string& blowUpReason() const { return blowUpReason_; }
   // " at t=1.23 s (step 0.001, ERP 0.2, ...)": what every ODE error and
   // blow-up message ends with, on the main thread or in a pool thread.
@@ -264,6 +266,7 @@ class AbstractWindow {
   int contactsLastStep_ = 0;
   int contactsThisStep_ = 0;
   double lastStepWallSeconds_ = 0.0;
+  double collideWallSeconds_ = 0.0;
   double wallSeconds_ = 0.0;  // real time spent in this run (headless) or its frames (window)
   std::string blowUpReason_;
   HudMode hudMode_ = HudMode::Compact;

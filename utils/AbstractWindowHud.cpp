@@ -8,6 +8,7 @@
 #include "AbstractWindow.h"
 #include "FormatValue.h"
 #include "OdeMessages.h"
+#include "SceneKeys.h"
 #include "SpringDamper.h"
 
 namespace odelab {
@@ -58,16 +59,25 @@ std::vector<std::string> AbstractWindow::hudLines() const {
   lines.push_back(settingsLine(settings_));
   std::ostringstream s;
   char rate[96];
-  std::snprintf(rate, sizeof rate, "FPS %.0f (%s)   real-time x%.2f", time_.recentFramesPerSecond(),
-                frameLimitName(time_.limit()), time_.recentRealTimeFactor());
+  // Paused, no simulated time passes: a factor would only say how long ago
+  // the pause began.
+  char factor[32] = "paused";
+  if (!time_.paused()) std::snprintf(factor, sizeof factor, "x%.2f", time_.recentRealTimeFactor());
+  std::snprintf(rate, sizeof rate, "FPS %.0f (%s)   real-time %s", time_.recentFramesPerSecond(),
+                frameLimitName(time_.limit()), factor);
   s << rate << "   t=" << timeText(simulatedTime_, settings_.step) << " s   step " << steps_;
   if (time_.paused()) s << "   PAUSED (P runs, O steps)";
   lines.push_back(s.str());
   std::vector<std::string> sceneLines;
   addHudLines(sceneLines);
+  // What the scene's own keys do, in a few words each (H lists them in full).
+  std::string own;
+  for (const KeyBinding* binding : sceneKeys(keys_)) own += (own.empty() ? "keys: " : "   ") + shortKeyText(*binding);
   if (!full) {
     if (!sceneLines.empty()) lines.push_back(sceneLines.front());
+    if (!own.empty()) lines.push_back(own);
   } else {
+    if (!own.empty()) lines.push_back(own);
     s.str("");
     s << "F2 increment " << formatValue(stepper_.increment()) << "   space " << spaceKindName(spaceKind_)
       << "   bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << contactsLastStep_;

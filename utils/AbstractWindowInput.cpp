@@ -224,14 +224,12 @@ void AbstractWindow::bindTimeAndViewKeys() {
 }
 
 std::vector<std::string> AbstractWindow::helpLines() const {
-  std::vector<std::string> lines{
-      "left mouse   on a body: drag it with a spring; elsewhere: toggle mouse-look",
-      "W/S/A/D      move the camera forward / back / left / right along the view",
-      "mouse wheel  move the camera forward / back, 0.5 m a notch",
+  std::vector<std::string> lines = cameraHelpLines();
+  lines.insert(lines.end(), {
       "Tab          control panel on / off",
       "Shift        reverses every F-key",
       "Esc          quit",
-  };
+  });
   for (const std::string& line : keys_.helpLines()) lines.push_back(line);
   return lines;
 }

@@ -50,12 +50,20 @@ void requireReplaceableFile(const char* option, const std::string& file) {
                      "' does not exist or is not writable");
 }
 
+namespace {
+
+// strtod, under CLI11's reading of a real number, takes "0x10" as 16; a
+// person typing a setting means decimal.
+bool isHexadecimal(const std::string& text) { return text.find_first_of("xX") != std::string::npos; }
+
+}  // namespace
+
 CLI::Validator finiteRange(double min, double max) {
   const std::string range = "[" + formatNumber(min) + ", " + formatNumber(max) + "]";
   return CLI::Validator(
       [min, max, range](std::string& text) -> std::string {
         double value = 0;
-        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+        if (isHexadecimal(text) || !CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
         if (!std::isfinite(value)) return "'" + text + "' is not a finite number";
         if (value < min || value > max) return "'" + text + "' is outside " + range;
         return {};
@@ -103,7 +111,7 @@ CLI::Validator positive(double max) {
   return CLI::Validator(
       [max](std::string& text) -> std::string {
         double value = 0;
-        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+        if (isHexadecimal(text) || !CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
         if (!std::isfinite(value)) return "'" + text + "' is not a finite number";
         if (value <= 0 || value > max) return "'" + text + "' must be above 0 and at most " + formatNumber(max);
         return {};

@@ -2,7 +2,8 @@
 # Panel check: check_panel_cfm.sh XVFB_RUN TEST2 EXPECT_METRICS EVENTS OUT_DIR
 # A CFM typed into the control panel must reach the world (the world_cfm
 # metric reads dWorldGetCFM back), the output file (a "# t=... s: CFM
-# 1e-06 -> 0.01" line in Test2_output.txt) and the run log.
+# 1e-06 -> 0.01" line in Test2_output.txt) and the run log, once Enter is
+# pressed in the field.
 set -u
 xvfb=$1 program=$2 expect=$3 events=$4 out=$5
 rm -rf "$out" && mkdir -p "$out" || exit 1

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "../AbstractWindow.h"
 
@@ -37,17 +38,33 @@ class ControlPanel {
   static constexpr int MARGIN = 10;
   bool contains(int x, int y) const;
   void timeButtons(AbstractWindow& scene);
+  // A slider over the steps this run has reached: a drag goes back (or
+  // forth again) to any of them.
+  void timelineSlider(AbstractWindow& scene);
+  void copyCommandLine(const AbstractWindow& scene);
+  void sceneKeys(AbstractWindow& scene);    // the scene's own keys as buttons
+  void viewToggles(AbstractWindow& scene);  // C, J, X, V, L, H and the F2 increment
   void settings(AbstractWindow& scene);
   void parameters(AbstractWindow& scene);
   // A value edited by slider or typing, committed when the edit ends, so a
-  // drag is one change on the timeline, not one per frame.
+  // drag is one change on the timeline, not one per frame: a slider when a
+  // drag (not a click) is released, a field on Enter, Tab or a click
+  // elsewhere, its text read as the command line reads the option (a
+  // refusal is shown under the field; Esc drops the text).
   bool edit(const std::string& label, double& value, double min, double max, bool logScale, bool integer);
 
   bool visible_;
-  float width_ = 0, x_ = 0, y_ = 0, height_ = 0;
+  float textPixels_ = 16, width_ = 0, x_ = 0, y_ = 0, height_ = 0;
   int mouseX_ = -1, mouseY_ = -1;
   bool leftDown_ = false, leftPressed_ = false;
-  std::map<std::string, double> editing_;
+  std::vector<int> pressedKeys_;  // scancodes pressed since the last frame
+  std::map<std::string, double> editing_;        // a slider's value during its drag
+  std::map<std::string, std::string> typing_;    // a field's text while it is typed in
+  std::map<std::string, std::string> refusals_;  // why a typed value was refused, shown under it
+  std::string copied_;                           // the last "copy as command line"
+  bool scrubbing_ = false;                       // the timeline slider is being dragged
+  long long scrubStep_ = 0;
+  bool dragged_ = false;                         // the active slider has been dragged
 };
 
 }  // namespace odelab

@@ -36,6 +36,15 @@ void refuseInvisibleFallback() {
     throw NoDisplayError(std::string("no display found; SDL offers only its '") + driver + "' driver");
 }
 
+// glGetString is OpenGL 1.0, there without GLEW.
+bool isSoftwareRenderer() {
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!renderer) return false;
+  for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
+    if (std::strstr(renderer, name)) return true;
+  return false;
+}
+
 }  // namespace
 
 GlWindow::VideoSubsystem::VideoSubsystem() {
@@ -53,13 +62,19 @@ GlWindow::VideoSubsystem::VideoSubsystem() {
 
 GlWindow::GlWindow(const std::string& title, int width, int height, bool vsync) {
   const Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
-  // Antialiased edges when the driver offers them; plain otherwise.
+  // Antialiased edges when the driver offers them in hardware; plain
+  // otherwise (a software renderer would store and shade every sample).
   for (int multisamples : {4, 0}) {
     requestCoreContext(multisamples);
     window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
     if (!window_) continue;
     context_ = SDL_GL_CreateContext(window_);
-    if (context_) break;
+    if (context_) {
+      software_ = isSoftwareRenderer();
+      if (!(software_ && multisamples > 0)) break;
+      SDL_GL_DeleteContext(context_);
+      context_ = nullptr;
+    }
     SDL_DestroyWindow(window_);
     window_ = nullptr;
   }

@@ -32,6 +32,10 @@ class GlWindow {
   int height() const { return height_; }
   void swap() { SDL_GL_SwapWindow(window_); }
   bool vsync() const { return vsync_; }  // granted by the driver
+  // The renderer draws on the CPU (Mesa's llvmpipe or softpipe, SwiftShader):
+  // every pixel costs, so the window opens without multisampling and the
+  // renderer takes its cheaper shadow filter.
+  bool software() const { return software_; }
   void* glContext() const { return context_; }
   // Size in window coordinates, those of mouse events (differs from the
   // drawable size on high-DPI screens).
@@ -47,6 +51,7 @@ class GlWindow {
   VideoSubsystem video_;
   SDL_Window* window_ = nullptr;
   bool vsync_ = false;
+  bool software_ = false;
   SDL_GLContext context_ = nullptr;
   int width_ = 0, height_ = 0;
 };

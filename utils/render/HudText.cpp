@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "RenderError.h"
+#include "TextColumns.h"
 
 namespace odelab {
 
@@ -34,34 +35,13 @@ std::string elide(TTF_Font* font, std::string word, int maxWidth) {
   return word + "...";
 }
 
-// Greedy word wrap of every line to `maxWidth` pixels; continuation lines
-// are indented so they read as part of the line above.
+// Every line broken between items to `maxWidth` pixels (TextColumns); a
+// word wider than that still is cut and ends in "...".
 std::vector<std::string> wrapLines(TTF_Font* font, const std::vector<std::string>& lines, int maxWidth) {
   if (maxWidth <= 0) return lines;
-  std::vector<std::string> out;
-  for (const std::string& line : lines) {
-    if (textWidth(font, line) <= maxWidth) {
-      out.push_back(line);
-      continue;
-    }
-    std::string current;
-    size_t start = 0;
-    while (start <= line.size()) {
-      size_t end = line.find(' ', start);
-      if (end == std::string::npos) end = line.size();
-      const std::string word = line.substr(start, end - start);
-      const std::string joined = current.empty() ? word : current + ' ' + word;
-      if (textWidth(font, joined) <= maxWidth) {
-        current = joined;
-      } else {
-        if (!current.empty()) out.push_back(current);
-        current = "   " + word;
-        if (textWidth(font, current) > maxWidth) current = elide(font, current, maxWidth);
-      }
-      start = end + 1;
-    }
-    if (!current.empty()) out.push_back(current);
-  }
+  std::vector<std::string> out = wrapItems(lines, maxWidth, [font](const std::string& text) { return textWidth(font, text); });
+  for (std::string& line : out)
+    if (textWidth(font, line) > maxWidth) line = elide(font, line, maxWidth);
   return out;
 }
 
@@ -83,7 +63,7 @@ HudText::TtfLibrary::TtfLibrary() {
 HudText::TtfLibrary::~TtfLibrary() { TTF_Quit(); }
 
 HudText::HudText(const std::string& fontPath, const std::string& shaderDir)
-    : font_(openFont(fontPath)), program_(shaderDir + "/hud.vert", shaderDir + "/hud.frag") {
+    : font_(openFont(fontPath)), small_(openFont(fontPath)), program_(shaderDir + "/hud.vert", shaderDir + "/hud.frag") {
   rectUniform_ = program_.uniform("uRect");
   viewportUniform_ = program_.uniform("uViewport");
   textUniform_ = program_.uniform("uText");
@@ -96,24 +76,26 @@ void HudText::setSizeFor(int pixels, int viewportHeight) {
   const int wanted = pixels > 0 ? pixels : std::min(28, std::max(12, viewportHeight / 45));
   if (wanted == pixels_) return;
   if (TTF_SetFontSize(font_.get(), wanted) != 0) return;  // keeps the size it had
+  TTF_SetFontSize(small_.get(), std::max(11, wanted * SMALL_PERCENT / 100));
   pixels_ = wanted;
   ++generation_;
 }
 
 void HudText::prepare(TextBlock& block, const std::vector<std::string>& unwrapped, int maxWidth) {
   if (block.prepared_ && unwrapped == block.lines_ && maxWidth == block.maxWidth_ &&
-      block.generation_ == generation_)
+      block.generation_ == generation_ && block.renderedSmall_ == block.small_)
     return;
-  const std::vector<std::string> lines = wrapLines(font_.get(), unwrapped, maxWidth - 2 * PADDING);
+  TTF_Font* font = block.small_ ? small_.get() : font_.get();
+  const std::vector<std::string> lines = wrapLines(font, unwrapped, maxWidth - 2 * PADDING);
   // Render each line, then compose them onto one RGBA image whose bytes are
   // in R, G, B, A order whatever the machine's endianness (SDL_PIXELFORMAT_RGBA32).
   const int padding = block.boxAlpha_ > 0 ? PADDING : 0;
   std::vector<SurfacePtr> rendered;
   int width = 0;
-  const int skip = lineSkip();
+  const int skip = TTF_FontLineSkip(font);
   for (const std::string& line : lines) {
     // TTF refuses empty strings; a blank line still takes its height.
-    SurfacePtr surface(line.empty() ? nullptr : TTF_RenderUTF8_Blended(font_.get(), line.c_str(), TEXT_COLOR));
+    SurfacePtr surface(line.empty() ? nullptr : TTF_RenderUTF8_Blended(font, line.c_str(), TEXT_COLOR));
     if (surface) width = std::max(width, surface->w);
     rendered.push_back(std::move(surface));
   }
@@ -150,6 +132,7 @@ void HudText::prepare(TextBlock& block, const std::vector<std::string>& unwrappe
   block.lines_ = unwrapped;
   block.maxWidth_ = maxWidth;
   block.generation_ = generation_;
+  block.renderedSmall_ = block.small_;
   block.prepared_ = true;
 }
 
@@ -175,10 +158,48 @@ void HudText::drawAt(const TextBlock& block, int x, int y, int viewportWidth, in
   glBindVertexArray(0);
 }
 
-void HudText::draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight, int reservedRight) {
-  if (lines.empty()) return;
-  prepare(hud_, lines, std::max(80, viewportWidth - reservedRight - 2 * MARGIN));
-  drawAt(hud_, MARGIN, MARGIN, viewportWidth, viewportHeight);
+std::vector<std::string> HudText::inColumns(const std::vector<std::string>& lines, int maxWidth, int maxHeight,
+                                            int maxColumns, bool& fits) {
+  const int gapCharacters = 4;
+  const TextWidth width = [this](const std::string& text) { return textWidth(font_.get(), text); };
+  const int maxRows = std::max(1, (maxHeight - 2 * PADDING) / std::max(1, lineSkip()));
+  const auto columns = spreadOverColumns(lines, maxWidth - 2 * PADDING, gapCharacters * width(" "), maxRows,
+                                         maxColumns, width, Wrap::Hanging);
+  std::vector<std::string> joined = joinColumns(columns, gapCharacters);
+  fits = static_cast<int>(joined.size()) <= maxRows;
+  return joined;
+}
+
+int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight, bool small) {
+  if (lines.empty()) {
+    columnCount_ = 0;
+    return 0;
+  }
+  TTF_Font* font = small ? small_.get() : font_.get();
+  const int skip = TTF_FontLineSkip(font);
+  const int maxRows = std::max(1, (maxHeight - 2 * PADDING) / std::max(1, skip));
+  const int totalWidth = std::max(80, viewportWidth - 2 * MARGIN);
+  std::vector<std::vector<std::string>> columns =
+      spreadOverColumns(lines, totalWidth - 2 * PADDING, 2 * PADDING + MARGIN, maxRows, MAX_HUD_COLUMNS,
+                        [font](const std::string& text) { return textWidth(font, text); });
+  size_t rows = 0;
+  for (const auto& column : columns) rows = std::max(rows, column.size());
+  const int count = static_cast<int>(columns.size());
+  const int columnWidth = (totalWidth - (count - 1) * MARGIN) / count;
+  for (int i = 0; i < count; ++i) {
+    // Equal heights, so the columns read as one strip.
+    columns[i].resize(rows);
+    hudColumns_[i].small_ = small;
+    prepare(hudColumns_[i], columns[i], count > 1 ? columnWidth : totalWidth);
+  }
+  columnCount_ = count;
+  columnStep_ = count > 1 ? columnWidth + MARGIN : 0;
+  return hudColumns_[0].height() + 2 * MARGIN;
+}
+
+void HudText::drawHud(int viewportWidth, int viewportHeight) {
+  for (int i = 0; i < columnCount_; ++i)
+    drawAt(hudColumns_[i], MARGIN + i * columnStep_, MARGIN, viewportWidth, viewportHeight);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }

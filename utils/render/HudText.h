@@ -33,6 +33,8 @@ class TextBlock {
   std::vector<std::string> lines_;
   int maxWidth_ = 0;
   int generation_ = -1;  // the HudText font size it was rendered with
+  bool small_ = false;   // in HudText's smaller font
+  bool renderedSmall_ = false;
   bool prepared_ = false;
   int width_ = 0, height_ = 0;
 };
@@ -47,9 +49,17 @@ class HudText {
   HudText(const HudText&) = delete;
   HudText& operator=(const HudText&) = delete;
 
-  // The HUD: `lines` in a box in the top-left corner, wrapped to the window.
-  // `reservedRight`: pixels at the right edge the HUD must leave free (the panel).
-  void draw(const std::vector<std::string>& lines, int viewportWidth, int viewportHeight, int reservedRight = 0);
+  // The HUD as a strip across the top of the view: `lines` broken between
+  // items and laid out in as few columns (at most MAX_HUD_COLUMNS) as keep
+  // it within `maxHeight` pixels. Returns the strip's height with its
+  // margins (0 for no lines): the scene is drawn below it.
+  // `small`: in the smaller font (SMALL_PERCENT of the text height), for
+  // the full HUD's many lines.
+  int layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight, bool small = false);
+  // Draws the strip laid out last.
+  void drawHud(int viewportWidth, int viewportHeight);
+  static constexpr int MAX_HUD_COLUMNS = 3;
+  static constexpr int SMALL_PERCENT = 80;
 
   // Text height in pixels: `pixels`, or when 0 one 45th of the window's
   // height within [12, 28] (16 at 720 rows). Re-renders blocks on a change.
@@ -60,6 +70,12 @@ class HudText {
   // `maxWidth` pixels (0: no limit) wraps at spaces; a word wider still is
   // cut and ends in "...".
   void prepare(TextBlock& block, const std::vector<std::string>& lines, int maxWidth = 0);
+  // For a monospaced font: the lines broken to fit and spread over as few
+  // side-by-side columns (at most maxColumns) as keep them within
+  // maxWidth x maxHeight pixels, joined into the lines of one block (for
+  // prepare()). `fits` says whether they stay within maxHeight.
+  std::vector<std::string> inColumns(const std::vector<std::string>& lines, int maxWidth, int maxHeight,
+                                     int maxColumns, bool& fits);
   // Draws a prepared block with its top-left corner at pixel (x, y) from
   // the window's top-left corner. Leaves depth testing off and blending on.
   void drawAt(const TextBlock& block, int x, int y, int viewportWidth, int viewportHeight);
@@ -78,10 +94,12 @@ class HudText {
   };
   TtfLibrary library_;
   std::unique_ptr<TTF_Font, FontCloser> font_;
+  std::unique_ptr<TTF_Font, FontCloser> small_;
   ShaderProgram program_;
   GLint rectUniform_, viewportUniform_, textUniform_;
   GLuint emptyVertexArray_ = 0;  // core profile needs one bound even without attributes
-  TextBlock hud_;
+  TextBlock hudColumns_[MAX_HUD_COLUMNS];
+  int columnCount_ = 0, columnStep_ = 0;
   int pixels_ = 0;
   int generation_ = 0;
 };

@@ -83,6 +83,7 @@ Renderer::Renderer(const std::string& shaderDir)
   lit_.fogColor = p.uniform("uFogColor");
   lit_.fogStart = p.uniform("uFogStart");
   lit_.fogEnd = p.uniform("uFogEnd");
+  lit_.shadowRadius = p.uniform("uShadowRadius");
 }
 
 void Renderer::render(const AbstractWindow& scene, int width, int height) {
@@ -100,11 +101,13 @@ void Renderer::render(const AbstractWindow& scene, int width, int height) {
   glUniformMatrix4fv(depthLightViewProjection_, 1, GL_FALSE, glm::value_ptr(shadowMap_.lightViewProjection()));
   drawScene(scene, depthUniforms_);
 
-  // Lit pass into the window.
+  // Lit pass into the window, or the scaled target standing for it. The
+  // window is cleared whole either way (the HUD's strip above the view too).
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, width, height);
   glClearColor(SKY_COLOR.r, SKY_COLOR.g, SKY_COLOR.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  target_.begin(width, height);
+  if (target_.scale() < 1.0f) glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glCullFace(GL_BACK);
   sceneProgram_.use();
   setLitPassUniforms(scene, width, height);
@@ -130,6 +133,7 @@ void Renderer::setLitPassUniforms(const AbstractWindow& scene, int width, int he
   glUniform3fv(lit_.fogColor, 1, glm::value_ptr(SKY_COLOR));
   glUniform1f(lit_.fogStart, FOG_START);
   glUniform1f(lit_.fogEnd, FOG_END);
+  glUniform1i(lit_.shadowRadius, shadowRadius_);
 }
 
 void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& uniforms, bool wireframe) const {

@@ -8,6 +8,7 @@
 #include "../AbstractWindow.h"
 #include "Meshes.h"
 #include "ShaderProgram.h"
+#include "ScaledTarget.h"
 #include "ShadowMap.h"
 
 namespace odelab {
@@ -23,6 +24,17 @@ class Renderer {
   // Renders into the default framebuffer, sized width x height pixels; in
   // wireframe (V) the bodies' triangles are drawn as lines, the ground filled.
   void render(const AbstractWindow& scene, int width, int height);
+  // A software renderer's cheaper look: shadows filtered over one texel
+  // rather than 3x3 (harder shadow edges, a ninth of the lookups), and the
+  // scene drawn at SOFTWARE_SCALE of the view's size in each direction.
+  void setSoftware(bool software) {
+    shadowRadius_ = software ? 0 : 1;
+    target_.setScale(software ? SOFTWARE_SCALE : 1.0f);
+  }
+  static constexpr float SOFTWARE_SCALE = 0.7f;
+  // After render() and anything else drawn into the scene (the debug
+  // drawing): the scene onto the window, where it was drawn scaled.
+  void present() { target_.present(); }
   // The camera's view-projection of the last render(), for the debug drawing.
   const glm::mat4& viewProjection() const { return viewProjection_; }
 
@@ -46,11 +58,13 @@ class Renderer {
   GLint depthLightViewProjection_;
   struct {
     GLint viewProjection, lightViewProjection, toLight, cameraPosition, shadowMap;
-    GLint biasSlope, biasMin, fogColor, fogStart, fogEnd;
+    GLint biasSlope, biasMin, fogColor, fogStart, fogEnd, shadowRadius;
   } lit_;
   Meshes meshes_;
   ShadowMap shadowMap_;
   glm::mat4 viewProjection_{1.0f};
+  int shadowRadius_ = 1;
+  ScaledTarget target_;
 };
 
 }  // namespace odelab

@@ -17,7 +17,9 @@
 #include "ControlPanel.h"
 #include "DebugDraw.h"
 #include "EventPlayer.h"
+#include "FrameProfile.h"
 #include "GlWindow.h"
+#include "HelpOverlay.h"
 #include "HudText.h"
 #include "LivePlot.h"
 #include "Renderer.h"
@@ -40,6 +42,9 @@ const int IDLE_WAIT_MS = 1000;
 const double RECORD_FRAME_SECONDS = 1.0 / 60.0;
 const double NOTICE_SECONDS = 4.0;
 const int MARGIN = 10;
+// The HUD's strip takes at most this share of the window's height (its
+// columns spread wider first).
+const int HUD_MAX_PERCENT = 22;
 
 // Totals of the run, printed at exit and at each scripted mark (the
 // benchmark reads them): frames, real seconds, and the part of them spent
@@ -82,7 +87,7 @@ struct Views {
   DebugDraw debug;
   LivePlot plot;
   ControlPanel panel;
-  TextBlock help{240};
+  HelpOverlay help;
   TextBlock notice{200};
 };
 
@@ -106,6 +111,7 @@ class FrameLoop {
   void pollEvents(long long frame);
   void draw();
   void drawHelp(int width, int height);
+  bool turnHelpPage(const SDL_Event& event);
   void drawNotice(int width, int height);
   void saveRequestedScreenshot();
   void recordFrame(long long frame);
@@ -127,6 +133,8 @@ class FrameLoop {
   Uint64 previous_ = SDL_GetPerformanceCounter();
   // The frame cap, unless vsync already waits for the display.
   double period_ = options_.maxFps > 0 && !window_.vsync() ? 1.0 / options_.maxFps : 0.0;
+  int hudStrip_ = 0;  // pixels at the top the HUD took in the last frame
+  FrameProfile profile_;
 };
 
 void FrameLoop::pollEvents(long long frame) {
@@ -138,25 +146,39 @@ void FrameLoop::pollEvents(long long frame) {
     if (player_.handle(event, scene_, [this](const std::string& label) { printTotals(("mark " + label).c_str(), totals_); }))
       continue;
     if (views_.panel.handleEvent(event)) continue;
+    if (turnHelpPage(event)) continue;
     if (event.type == SDL_KEYDOWN && event.key.keysym.sym == SDLK_TAB && !event.key.repeat) {
       views_.panel.toggle();
       continue;
     }
-    // The scene's view is the window less the panel's column (in window
-    // coordinates, which differ from pixels on a high-DPI display).
+    // The scene's view is the window less the panel's column and the HUD's
+    // strip (in window coordinates, which differ from pixels on a high-DPI display).
     const int covered = window_.width() > 0 ? views_.panel.coveredWidth() * windowWidth / window_.width() : 0;
-    if (input_.handleEvent(event, scene_, windowWidth - covered, windowHeight)) window_.updateDrawableSize();
+    const int strip = window_.height() > 0 ? hudStrip_ * windowHeight / window_.height() : 0;
+    if (input_.handleEvent(event, scene_, {0, strip, windowWidth - covered, windowHeight - strip}))
+      window_.updateDrawableSize();
   }
   syncMouseLook(scene_);
+}
+
+// Page Down / Space and Page Up turn the help's pages while it is open.
+bool FrameLoop::turnHelpPage(const SDL_Event& event) {
+  if (!scene_.viewFlags().help) {
+    views_.help.close();
+    return false;
+  }
+  if (event.type != SDL_KEYDOWN) return false;
+  const SDL_Keycode key = event.key.keysym.sym;
+  if (key == SDLK_PAGEDOWN || key == SDLK_SPACE) views_.help.turn(+1);
+  else if (key == SDLK_PAGEUP) views_.help.turn(-1);
+  else return false;
+  return true;
 }
 
 void FrameLoop::drawHelp(int width, int height) {
   std::vector<std::string> lines{scene_.title() + ": keys and mouse   (H closes this)", ""};
   for (const std::string& line : scene_.helpLines()) lines.push_back(line);
-  views_.text.prepare(views_.help, lines, width - 2 * MARGIN);
-  const int x = std::max(MARGIN, (width - views_.help.width()) / 2);
-  const int y = std::max(MARGIN, (height - views_.help.height()) / 2);
-  views_.text.drawAt(views_.help, x, y, width, height);
+  views_.help.draw(views_.text, lines, width, height);
 }
 
 void FrameLoop::drawNotice(int width, int height) {
@@ -166,21 +188,35 @@ void FrameLoop::drawNotice(int width, int height) {
 }
 
 void FrameLoop::draw() {
-  // The panel is a column at the right edge; the scene, the HUD and the
-  // overlays share the rest, so the panel never covers the subject.
+  // The panel is a column at the right edge and the HUD a strip across the
+  // top; the scene takes the rest, so neither covers the subject. The plot
+  // and the notice sit in the view's bottom corners.
   const int windowWidth = window_.width(), height = window_.height();
   const int width = std::max(1, windowWidth - views_.panel.coveredWidth());
-  views_.renderer.render(scene_, width, height);
+  views_.text.setSizeFor(options_.textSize, height);
+  std::vector<std::string> hud = scene_.hudLines();
+  // The full HUD also says where the frame's time goes.
+  if (scene_.hudMode() == HudMode::Full && !profile_.text().empty()) hud.insert(hud.begin() + std::min<long>(3, static_cast<long>(hud.size())), profile_.text());
+  hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.hudMode() == HudMode::Full);
+  const int sceneHeight = std::max(1, height - hudStrip_);
+  scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(sceneHeight));
+  views_.renderer.render(scene_, width, sceneHeight);
   glm::vec3 grabbed, target;
   const bool dragging = input_.dragLine(scene_, grabbed, target);
   views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
-  views_.text.setSizeFor(options_.textSize, height);
-  views_.text.draw(scene_.hudLines(), width, height);
+  views_.renderer.present();
+  glViewport(0, 0, width, height);
+  views_.text.drawHud(width, height);
   const ViewFlags& flags = scene_.viewFlags();
   if (flags.plot) views_.plot.draw(scene_.chart(), views_.text, width, height);
-  if (flags.help) drawHelp(width, height);
   drawNotice(width, height);
   views_.panel.draw(scene_, windowWidth, height);
+  // The help is read, not worked beside: it takes the whole window, over
+  // the panel too, for room to stay in columns rather than run off.
+  if (flags.help) {
+    glViewport(0, 0, windowWidth, height);
+    drawHelp(windowWidth, height);
+  }
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }
@@ -237,15 +273,19 @@ double FrameLoop::runFrame() {
   moveCamera(scene_, elapsed);
   const double simulatedBefore = scene_.simulatedTime();
   const long long stepsBefore = scene_.steps();
+  const double collideBefore = scene_.collideWallSeconds();
   // An OdeError leaves through here; RAII cleans up.
   scene_.advanceFrame(recording ? RECORD_FRAME_SECONDS : elapsed,
                       recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET);
   const double stepping = seconds(now, SDL_GetPerformanceCounter());
+  input_.followBody(scene_);
   // A reset or a rewind moves time back: only forward steps count.
   const double advanced =
       scene_.steps() > stepsBefore ? std::max(0.0, scene_.simulatedTime() - simulatedBefore) : 0.0;
 
+  const Uint64 drawStart = SDL_GetPerformanceCounter();
   draw();
+  const Uint64 drawEnd = SDL_GetPerformanceCounter();
   // Read the back buffer before the swap leaves its contents undefined.
   const bool screenshotNow = screenshotRun && frame == screenshotFrame;
   if (scene_.takeScreenshotRequest()) saveRequestedScreenshot();
@@ -256,7 +296,10 @@ double FrameLoop::runFrame() {
   totals_.seconds += elapsed;
   totals_.longestFrame = std::max(totals_.longestFrame, elapsed);
   if (!screenshotNow) window_.swap();  // a software renderer does much of its work here
-  const double busy = seconds(start, SDL_GetPerformanceCounter());
+  const Uint64 swapped = SDL_GetPerformanceCounter();
+  const double busy = seconds(start, swapped);
+  profile_.add(scene_.collideWallSeconds() - collideBefore, stepping, seconds(drawStart, drawEnd),
+               seconds(drawEnd, swapped), elapsed);
   totals_.busySeconds += busy;
   scene_.time().endFrame(elapsed, advanced, stepping, busy, period_);
   if (screenshotNow) {
@@ -313,6 +356,9 @@ int runWindow(AbstractWindow& scene, const RunOptions& options, const std::funct
     // Made in this order so GL objects go before the context they live in.
     auto window = std::make_unique<GlWindow>(scene.title(), options.width, options.height, options.vsync);
     auto views = std::make_unique<Views>(shaders.found, font.found, *window, options);
+    views->renderer.setSoftware(window->software());
+    std::printf("renderer: %s%s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+                window->software() ? " (software: no multisampling, shadows filtered over one texel)" : "");
     // Built only now that the window can run, so that a refused window run
     // (no display, unusable shaders or font) leaves no output file behind;
     // a runner that built it already is fine too.

@@ -4,64 +4,60 @@ namespace odelab {
 
 namespace {
 
-const float DEGREES_PER_PIXEL = 0.15f;
 const float METRES_PER_SECOND = 8.0f;
-const float METRES_PER_WHEEL_NOTCH = 0.5f;
-
-// Keys the front end keeps for itself: they never reach the key table.
-bool isFrontEndKey(SDL_Keycode key) {
-  return key == SDLK_ESCAPE || key == SDLK_w || key == SDLK_a || key == SDLK_s || key == SDLK_d;
-}
 
 }  // namespace
 
-void WindowInput::ray(const AbstractWindow& scene, int x, int y, int windowWidth, int windowHeight,
-                      glm::vec3& origin, glm::vec3& direction) const {
-  const float w = static_cast<float>(windowWidth > 0 ? windowWidth : 1);
-  const float h = static_cast<float>(windowHeight > 0 ? windowHeight : 1);
+void WindowInput::ray(const AbstractWindow& scene, int x, int y, const ViewRect& view, glm::vec3& origin,
+                      glm::vec3& direction) const {
+  const float w = static_cast<float>(view.width > 0 ? view.width : 1);
+  const float h = static_cast<float>(view.height > 0 ? view.height : 1);
   // The centre of the pixel, in normalised device coordinates (y up).
-  const float ndcX = (static_cast<float>(x) + 0.5f) / w * 2.0f - 1.0f;
-  const float ndcY = 1.0f - (static_cast<float>(y) + 0.5f) / h * 2.0f;
+  const float ndcX = (static_cast<float>(x - view.x) + 0.5f) / w * 2.0f - 1.0f;
+  const float ndcY = 1.0f - (static_cast<float>(y - view.y) + 0.5f) / h * 2.0f;
   scene.camera().rayThrough(ndcX, ndcY, w / h, origin, direction);
 }
 
-void WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, int windowWidth,
-                            int windowHeight) {
-  if (scene.mouseLook()) {  // any click leaves mouse-look
-    scene.toggleMouseLook();
-    return;
-  }
+bool WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, const ViewRect& view) {
   glm::vec3 origin, direction;
-  ray(scene, button.x, button.y, windowWidth, windowHeight, origin, direction);
+  ray(scene, button.x, button.y, view, origin, direction);
   const double o[3] = {origin.x, origin.y, origin.z};
   const double d[3] = {direction.x, direction.y, direction.z};
   const PickHit hit = scene.pickAt(o, d);
-  if (hit.objectIndex < 0) {  // nothing there: look around instead
-    scene.toggleMouseLook();
-    return;
+  if (hit.objectIndex < 0) {  // nothing there: the camera's (a double click stops following)
+    if (button.clicks >= 2) camera_.follow(-1, scene);
+    return false;
   }
+  if (button.clicks >= 2) camera_.follow(hit.objectIndex, scene);
   scene.beginDrag(hit, hit.point);
-  if (!scene.dragging()) return;  // a static object: nothing to pull
+  if (!scene.dragging()) return false;  // a static object: nothing to pull
   held_ = true;
   grabDistance_ = hit.distance;
   grabbed_ = scene.draggedObject();
   dBodyGetPosRelPoint(grabbed_->getBody(), hit.point[0], hit.point[1], hit.point[2], grabLocal_);
+  return true;
 }
 
-bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, int windowWidth, int windowHeight) {
+bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, const ViewRect& view) {
   switch (event.type) {
     case SDL_QUIT:
       scene.requestQuit();
       break;
     case SDL_KEYDOWN:
       if (event.key.keysym.sym == SDLK_ESCAPE) scene.requestQuit();
+      if (camera_.handleKey(event.key, scene)) break;
       // Auto-repeat would toggle switches and step settings at the repeat
       // rate; one press is one action.
-      if (!isFrontEndKey(event.key.keysym.sym) && !event.key.repeat)
+      if (event.key.keysym.sym != SDLK_ESCAPE && !event.key.repeat)
         scene.handleKey(event.key.keysym.sym, (event.key.keysym.mod & KMOD_SHIFT) != 0);
       break;
     case SDL_MOUSEBUTTONDOWN:
-      if (event.button.button == SDL_BUTTON_LEFT) pressLeft(event.button, scene, windowWidth, windowHeight);
+      // The left button on a body drags it; any other press is the camera's.
+      if (held_ || camera_.active()) break;
+      if (event.button.button == SDL_BUTTON_LEFT && !(SDL_GetModState() & KMOD_SHIFT) &&
+          pressLeft(event.button, scene, view))
+        break;
+      camera_.pressButton(event.button);
       break;
     case SDL_MOUSEBUTTONUP:
       if (event.button.button == SDL_BUTTON_LEFT && held_) {
@@ -69,29 +65,24 @@ bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, int
         grabbed_ = nullptr;
         scene.endDrag();
       }
+      camera_.releaseButton(event.button);
       break;
     case SDL_MOUSEMOTION:
-      if (scene.mouseLook()) {
-        // Screen y grows downwards: moving the mouse up looks up.
-        scene.camera().turn(static_cast<float>(event.motion.xrel) * DEGREES_PER_PIXEL,
-                            -static_cast<float>(event.motion.yrel) * DEGREES_PER_PIXEL);
-      } else if (held_ && (event.motion.state & SDL_BUTTON_LMASK)) {
+      if (held_ && (event.motion.state & SDL_BUTTON_LMASK)) {
         // Keep the grab distance along the new ray: the target follows the
         // cursor across the screen at the depth where the body was grabbed.
         glm::vec3 origin, direction;
-        ray(scene, event.motion.x, event.motion.y, windowWidth, windowHeight, origin, direction);
+        ray(scene, event.motion.x, event.motion.y, view, origin, direction);
         const glm::vec3 target = origin + direction * static_cast<float>(grabDistance_);
         const double t[3] = {target.x, target.y, target.z};
         scene.moveDrag(t);
+      } else {
+        camera_.moveMouse(event.motion, scene.camera(), view.height);
       }
       break;
-    case SDL_MOUSEWHEEL: {
-      // Away from the user moves forward; a flipped ("natural") wheel reports the opposite.
-      const float sign = event.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -1.0f : 1.0f;
-      scene.camera().move(sign * static_cast<float>(event.wheel.y) * METRES_PER_WHEEL_NOTCH,
-                          sign * static_cast<float>(event.wheel.x) * METRES_PER_WHEEL_NOTCH);
+    case SDL_MOUSEWHEEL:
+      camera_.wheel(event.wheel, scene.camera());
       break;
-    }
     case SDL_WINDOWEVENT:
       return event.window.event == SDL_WINDOWEVENT_SIZE_CHANGED;
     default:

@@ -5,32 +5,41 @@
 #include <glm/glm.hpp>
 
 #include "../AbstractWindow.h"
+#include "CameraControl.h"
 
 namespace odelab {
 
 // Turns SDL input into scene actions: Esc and closing the window quit; the
 // left button on a body drags it (a spring pulls the grabbed point toward
-// the cursor, kept at its grab distance along the cursor's ray); the left
-// button elsewhere toggles mouse-look, and any left click leaves it; mouse
-// motion turns the camera in mouse-look; the wheel moves the camera forward
-// and back (sideways for a horizontal wheel); every other key press goes to the
-// scene's key table. Real and scripted (SDL_PushEvent) input take this path.
+// the cursor, kept at its grab distance along the cursor's ray); the other
+// buttons, the left one on empty space, the wheel, Home and W/S/A/D move
+// the camera (CameraControl); every other key press goes to the scene's key
+// table. Real and scripted (SDL_PushEvent) input take this path.
+// Where the scene is drawn in the window, in SDL's window coordinates (those
+// of mouse events): left, top, width, height.
+struct ViewRect {
+  int x, y, width, height;
+};
+
 class WindowInput {
  public:
-  // windowWidth / windowHeight: the window's size in SDL's window
-  // coordinates, those of mouse events. Returns true when the window's
-  // drawable size may have changed.
-  bool handleEvent(const SDL_Event& event, AbstractWindow& scene, int windowWidth, int windowHeight);
+  // Returns true when the window's drawable size may have changed.
+  bool handleEvent(const SDL_Event& event, AbstractWindow& scene, const ViewRect& view);
+
+  // Once a frame after stepping: the camera follows the body double-clicked.
+  void followBody(AbstractWindow& scene) { camera_.keepFollowing(scene); }
 
   // The drag to draw: the grabbed point on the body and the spring's
   // target. False when nothing is being dragged.
   bool dragLine(const AbstractWindow& scene, glm::vec3& grabbed, glm::vec3& target) const;
 
  private:
-  void pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, int windowWidth, int windowHeight);
-  void ray(const AbstractWindow& scene, int x, int y, int windowWidth, int windowHeight, glm::vec3& origin,
+  // Starts a body drag where the cursor hits one; false over empty space.
+  bool pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& scene, const ViewRect& view);
+  void ray(const AbstractWindow& scene, int x, int y, const ViewRect& view, glm::vec3& origin,
            glm::vec3& direction) const;
 
+  CameraControl camera_;
   bool held_ = false;                 // the left button holds a drag
   double grabDistance_ = 0.0;         // along the ray, where the body was grabbed
   const AbstractObject* grabbed_ = nullptr;
