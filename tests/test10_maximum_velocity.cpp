@@ -88,66 +88,57 @@ class MaximumVelocity : public AbstractWindow {
   MaximumVelocity() : AbstractWindow("test10 - Maximum velocity", settingsForThisScene()) {
     bindKey(SDLK_b, "B", "launch a cube from [-4, 3, 0] toward the wall at the launch velocity",
             [this](int) { launch(velocity_); });
-    bindKey(SDLK_F5, "F5", "launch velocity up (Shift: down): by 10 m/s below 1000 m/s, by 100 m/s from 1000 m/s",
-            [this](int direction) { changeVelocity(direction); });
+    declare(Knob::real("velocity", "launch velocity", "m/s", velocity_, 0.01, 1e7)
+                .withOption("--velocity", "launch velocity in m/s (window: the starting F5 value)")
+                .withKey(SDLK_F5, "F5", "launch velocity up (Shift: down): by 10 m/s below 1000 m/s, by 100 m/s from 1000 m/s")
+                .steppedBy(nextVelocity)
+                .logarithmic());
+    declare(Knob::real("surface_layer", "contact surface layer", "m", surfaceLayer_, 0.0, 1.0)
+                .withOption("--surface-layer", "contact surface layer, m: overlap ODE leaves uncorrected (the thesis: 0)")
+                .hidden());
+    launchesKnob_ = &declare(Knob::integer("launches", "launches", launches_, 1, 100000)
+                                  .withOption("--launches",
+                                              "headless: cubes launched one at a time (the previous one removed) at "
+                                              "--velocity; with --find-max-velocity, launches per tested velocity "
+                                              "(default 5, or 1 when scanning)"));
+    declare(Knob::real("scan_limit", "scan limit", "m/s", scanLimit_, 1.0, 1e7)
+                .withOption("--scan-limit", "--find-max-velocity gives up above this velocity (m/s)")
+                .onlyWith("--find-max-velocity")
+                .hidden());
+    declare(Knob::real("band_factor", "band factor", "", bandFactor_, 1.0, 100.0)
+                .withOption("--band-factor",
+                            "--find-max-velocity keeps scanning up to this multiple of the first failing velocity, "
+                            "to show whether stops reappear above it")
+                .onlyWith("--find-max-velocity")
+                .hidden());
+    declare(Knob::real("spin", "launch spin", "rad/s", spin_, 0.0, 1e6)
+                .withOption("--spin",
+                            "launch each cube turning at this rate (rad/s) about a random axis (from --seed): a limit "
+                            "of --ccd, whose step model is a constant turn"));
     // T (tunnelling): C is the shared key for the contact markers.
     bindKey(SDLK_t, "T",
             "continuous collision for fast bodies on / off (--ccd): sweep each fast body's step against "
             "the static geometry",
             [this](int) { toggleCcd(); });
-    keepAcrossRewind(velocity_);
     keepAcrossRewind(ccd_);
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--surface-layer", surfaceLayer_,
-                   "contact surface layer, m: overlap ODE leaves uncorrected (the thesis: 0)")
-        ->check(cli::finiteRange(0.0, 1.0))
-        ->capture_default_str();
-    app.add_option("--velocity", velocity_, "launch velocity in m/s (window: the starting F5 value)")
-        ->check(cli::positive(1e7))
-        ->capture_default_str();
-    launchesOption_ = app.add_option("--launches", launches_,
-                                     "headless: cubes launched one at a time (the previous one removed) at "
-                                     "--velocity; with --find-max-velocity, launches per tested velocity "
-                                     "(default 5, or 1 when scanning)")
-                          ->check(CLI::Range(1, 100000));
     app.add_flag("--find-max-velocity", findMaxVelocity_,
                  "headless: scan launch velocities from 1 m/s, every 1 m/s up to 1000 m/s and every 0.1% above, "
                  "for the highest velocity at which every launch so far was stopped");
-    scanOptions_.push_back(
-        app.add_option("--scan-limit", scanLimit_, "--find-max-velocity gives up above this velocity (m/s)")
-            ->check(cli::positive(1e7))
-            ->capture_default_str());
-    scanOptions_.push_back(
-        app.add_option("--band-factor", bandFactor_,
-                       "--find-max-velocity keeps scanning up to this multiple of the first failing velocity, to "
-                       "show whether stops reappear above it")
-            ->check(cli::finiteRange(1.0, 100.0))
-            ->capture_default_str());
     app.add_flag("--phase-jitter", phaseJitter_,
                  "start each launch up to one step's travel behind [-4, 3, 0] (uniform, from --seed), so the "
                  "cube meets the wall at a random phase of the step; off: the thesis's fixed launch point");
     app.add_flag("--random-orientation", randomOrientation_,
                  "launch each cube turned to a uniformly random orientation (from --seed), so it meets the wall "
                  "with a corner or an edge first; off: unturned, face on (the thesis's)");
-    app.add_option("--spin", spin_,
-                   "launch each cube turning at this rate (rad/s) about a random axis (from --seed): a limit of "
-                   "--ccd, whose step model is a constant turn")
-        ->check(cli::finiteRange(0.0, 1e6))
-        ->capture_default_str();
     app.add_flag("--ccd", ccd_,
                  "continuous collision for fast bodies: before each step, a body whose points may move more than "
                  "half its smallest half-extent in the step is swept along its motion (turning included) against "
                  "the static geometry, moved to its first touching pose and given contacts for the corners on "
                  "their way in, so the contacts stop it (window: T); off: the thesis's behaviour");
-  }
-
-  void checkOptions() const override {
-    for (const CLI::Option* option : scanOptions_)
-      if (option->count() && !findMaxVelocity_)
-        throw UsageError(option->get_name() + ": only used with --find-max-velocity");
   }
 
  protected:
@@ -261,12 +252,14 @@ class MaximumVelocity : public AbstractWindow {
   double geometricPrediction() const { return (CUBE_HALF_SIZE + WALL_THICKNESS) / settings().step; }
   double guaranteedStopVelocity() const { return (CUBE_HALF_SIZE + WALL_THICKNESS / 2) / settings().step; }
 
-  int launchCount(int fallback) const { return launchesOption_ && launchesOption_->count() ? launches_ : fallback; }
+  int launchCount(int fallback) const {
+    return launchesKnob_->parsed && launchesKnob_->parsed->count() ? launches_ : fallback;
+  }
 
-  void changeVelocity(int direction) {
-    const bool coarse = direction > 0 ? velocity_ >= F5_COARSE_FROM : velocity_ > F5_COARSE_FROM;
-    velocity_ = std::max(F5_FINE_STEP, velocity_ + direction * (coarse ? F5_COARSE_STEP : F5_FINE_STEP));
-    notify("launch velocity " + formatValue(velocity_) + " m/s");
+  // F5: by 10 m/s below 1000 m/s, by 100 m/s from there; never below 10 m/s.
+  static double nextVelocity(double velocity, int direction) {
+    const bool coarse = direction > 0 ? velocity >= F5_COARSE_FROM : velocity > F5_COARSE_FROM;
+    return std::max(F5_FINE_STEP, velocity + direction * (coarse ? F5_COARSE_STEP : F5_FINE_STEP));
   }
 
   void toggleCcd() {
@@ -381,8 +374,7 @@ class MaximumVelocity : public AbstractWindow {
 
   double velocity_ = DEFAULT_VELOCITY;
   int launches_ = 1;
-  CLI::Option* launchesOption_ = nullptr;
-  std::vector<const CLI::Option*> scanOptions_;
+  const Knob* launchesKnob_ = nullptr;
   bool findMaxVelocity_ = false;
   double scanLimit_ = DEFAULT_SCAN_LIMIT;
   double bandFactor_ = DEFAULT_BAND_FACTOR;

@@ -69,11 +69,8 @@ struct BallRecord {
 class JumpingBalls : public AbstractWindow {
  public:
   JumpingBalls() : AbstractWindow("test1 - Jumping Balls", settingsForThisScene()) {
+    declare(bounceVelocityKnob(bounceVelocity_, "the thesis"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
-  }
-
-  void addOptions(CLI::App& app) override {
-    addBounceVelocityOption(app, bounceVelocity_, "the thesis");
   }
 
   SceneBounds bounds() const override { return {{0.0, 3.5, 0.0}, 11.0}; }

@@ -91,13 +91,12 @@ WorldSettings settingsForThisScene() {
 class Domino : public AbstractWindow {
  public:
   Domino() : AbstractWindow("test3 - Domino", settingsForThisScene()) {
+    declare(Knob::integer("dominoes", "dominoes", dominoCount_, 2, 1000)
+                .withOption("--dominoes", "number of dominoes along the spiral"));
     useContactChoices(DEFAULT_MU);
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--dominoes", dominoCount_, "number of dominoes along the spiral")
-        ->check(CLI::Range(2, 1000))
-        ->capture_default_str();
     app.add_flag("--no-auto-disable", noAutoDisable_,
                  "keep every body active (the thesis: very slow) instead of auto-disable with thresholds 0.1");
   }

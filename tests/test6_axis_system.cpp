@@ -54,25 +54,21 @@ double depthBelowGround(dBodyID body, double side) {
 class AxisSystem : public AbstractWindow {
  public:
   AxisSystem() : AbstractWindow("test6 - Axis system", WorldSettings{}) {
-    addParameter({"start tilt", "deg", &startTiltDegrees_, 0.0, MAX_START_TILT_DEGREES});
-    addParameter({"spin limit, 0: none", "rad/s", &angularLimit_.radPerSecond, 0.0, 1000.0});
+    // Both act when the scene is built (the tilt) or its bodies made (the
+    // limit): a change builds the scene again.
+    declare(Knob::real("tilt_degrees", "start tilt", "deg", startTiltDegrees_, 0.0, MAX_START_TILT_DEGREES)
+                .withOption("--tilt-degrees",
+                            "start the big cube tilted about the anchor by this angle (about z), a deliberate "
+                            "disturbance; default 0: the thesis's perfectly symmetric build")
+                .rebuildsScene());
+    declare(Knob::real("max_angular_speed", "spin limit, 0: none", "rad/s", angularLimit_.radPerSecond, 1e-3, 1e6)
+                .withOption("--max-angular-speed",
+                            "dWorldSetMaxAngularSpeed(world, W) for every body, in rad/s (the thesis tried 0.01); "
+                            "0 or default: no limit")
+                .zeroIsOff()
+                .logarithmic()
+                .rebuildsScene());
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
-  }
-
-  // Both act when the scene is built (the tilt) or its bodies made (the
-  // limit): the scene is built again.
-  void onParameterChanged(const SceneParameter&) override { reset(); }
-
-  void addOptions(CLI::App& app) override {
-    app.add_option("--max-angular-speed", angularLimit_.radPerSecond,
-                   "dWorldSetMaxAngularSpeed(world, W) for every body, in rad/s (the thesis tried 0.01); "
-                   "default: no limit")
-        ->check(cli::positive(1e6));
-    app.add_option("--tilt-degrees", startTiltDegrees_,
-                   "start the big cube tilted about the anchor by this angle (about z), a deliberate "
-                   "disturbance; default 0: the thesis's perfectly symmetric build")
-        ->check(cli::finiteRange(0.0, MAX_START_TILT_DEGREES))
-        ->capture_default_str();
   }
 
  protected:

@@ -44,11 +44,8 @@ WorldSettings settingsForThisScene() {
 class RestitutionAccuracy : public AbstractWindow {
  public:
   RestitutionAccuracy() : AbstractWindow("test9 - Restitution accuracy", settingsForThisScene()) {
+    declare(bounceVelocityKnob(bounceVelocity_, "proposed"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
-  }
-
-  void addOptions(CLI::App& app) override {
-    addBounceVelocityOption(app, bounceVelocity_, "proposed");
   }
 
   SceneBounds bounds() const override { return {{0.0, 2.5, 0.0}, 6.0}; }

@@ -3,6 +3,7 @@
 #include <ode/ode.h>
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <random>
@@ -15,6 +16,7 @@
 #include "ContactChoices.h"
 #include "DebugMarkers.h"
 #include "KeyTable.h"
+#include "Knob.h"
 #include "Metrics.h"
 #include "MouseDrag.h"
 #include "Rewind.h"
@@ -50,6 +52,9 @@ class AbstractWindow {
   virtual void addOptions(CLI::App& app);  // the scene's own options, before parsing
   // --mu and --max-contacts, for scenes that called useContactChoices().
   void addContactOptions(CLI::App& app);
+  // Every declared knob; the runner adds their options (utils/CommandLine.h).
+  std::deque<Knob>& knobs() { return knobs_; }
+  const std::deque<Knob>& knobs() const { return knobs_; }
   void setRunOptions(const RunOptions& options) { options_ = options; }
   // Its files in --out-dir (run log included): --metrics-json and --screenshot may not name them.
   virtual std::vector<std::string> outputFileNames() const { return {programName() + "_run_log.txt"}; }
@@ -173,8 +178,9 @@ class AbstractWindow {
   virtual void addMetrics(Metrics& metrics) const { (void)metrics; }
   // After any setting change (keys, panel), e.g. to log it in an output file.
   virtual void onSettingChanged(const std::string& change) { (void)change; }
-  // After a scene parameter changed from the panel.
-  virtual void onParameterChanged(const SceneParameter& parameter) { (void)parameter; }
+  // After a knob changed from its key or the panel (a knob that rebuilds
+  // the scene has been rebuilt already).
+  virtual void onKnobChanged(const Knob& knob) { (void)knob; }
   virtual double defaultHeadlessSeconds() const { return 10.0; }  // without --seconds
   // Why a rewind (a replay) may not match the run, or "": shown on rewinding.
   virtual std::string rewindCaveat() const { return {}; }
@@ -197,8 +203,12 @@ class AbstractWindow {
   void keepAcrossRewind(T& value) {
     rewind_.keep(value);
   }
-  // A scene value the panel shows and sets (kept across rewind too).
-  void addParameter(SceneParameter parameter);
+  // A scene's knob, declared once (utils/Knob.h): its option, key, panel
+  // row and rewind follow from the declaration. Returns the stored knob.
+  Knob& declare(Knob knob);
+  // A scene key that takes over a shared one (R): binding a key twice otherwise fails at start-up.
+  void rebindKey(SDL_Keycode key, std::string keyName, std::string description,
+                 std::function<void(int direction)> action);
 
   // Objects are owned here; scenes keep raw pointers, valid until the next reset.
   template <class T, class... Args>
@@ -230,6 +240,7 @@ class AbstractWindow {
   void bindSharedKeys();
   void bindTimeAndViewKeys();
   void bindSetting(const SettingSpec& spec);
+  void changeKnob(Knob& knob, double value, const std::string& source);
   static bool settingKey(SDL_Keycode key);
   void reportSetting(const SettingChange& change);
   void recoverFrom(const std::string& failure);
@@ -246,6 +257,8 @@ class AbstractWindow {
   Rewind rewind_;
   MouseDrag drag_;
   SceneParameters parameters_;
+  std::deque<Knob> knobs_;
+  std::vector<Knob*> panelKnobs_;  // parameters_'s rows, in order
   RunLog runLog_;
   std::vector<std::unique_ptr<AbstractObject>> objects_;
   std::mt19937 random_;

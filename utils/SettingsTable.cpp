@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "FormatValue.h"
+#include "Knob.h"
 
 namespace odelab {
 
@@ -61,6 +62,20 @@ void setSettingValue(WorldSettings& s, SettingId id, double value) {
 std::string settingText(SettingId id, double value) {
   if (id == SettingId::Solver) return value < 0.5 ? "quick" : "step";
   return formatValue(value);
+}
+
+std::string settingJson(const SettingSpec& spec, const WorldSettings& settings) {
+  const double value = settingValue(settings, spec.id);
+  std::string text = "{\"name\": " + jsonString(spec.range ? spec.range->name : "solver") +
+                     ", \"option\": " + jsonString(spec.option) + ", \"key\": " + jsonString(spec.keyName);
+  if (spec.range)
+    text += ", \"min\": " + jsonNumber(spec.range->min) + ", \"max\": " + jsonNumber(spec.range->max) +
+            ", \"unit\": " + jsonString(spec.unit) + ", \"default\": " + jsonNumber(value) +
+            ", \"kind\": " + jsonString(spec.integer ? "integer" : "real");
+  else
+    text += ", \"choices\": [\"quick\", \"step\"], \"unit\": \"\", \"default\": " + jsonString(settingText(spec.id, value)) +
+            ", \"kind\": \"choice\"";
+  return text + ", \"off_at_zero\": false, \"only_with\": \"\"}";
 }
 
 std::string SettingChange::text() const {

@@ -38,6 +38,10 @@ void setSettingValue(WorldSettings& settings, SettingId id, double value);
 // "0.2", "20", "quick".
 std::string settingText(SettingId id, double value);
 
+// {"name": "erp", "option": "--erp", "key": "F3", "min": 0, "max": 1, "unit": "", "default": 0.2}
+// (the solver: "choices" in place of min and max).
+std::string settingJson(const SettingSpec& spec, const WorldSettings& settings);
+
 // What one action did to a setting.
 struct SettingChange {
   SettingId id;

@@ -42,13 +42,22 @@ int run(AbstractWindow& scene, const RunOptions& options) {
 
 }  // namespace
 
+int reportBrokenScene(const std::logic_error& error) {
+  std::cerr << "error: scene declaration: " << error.what() << '\n';
+  return exit_code::RUNTIME_ERROR;
+}
+
 int runScene(AbstractWindow& scene, const char* description, int argc, char** argv) {
   RunOptions options;
   CLI::App app{std::string(scene.title()) + "\n" + description};
   app.get_formatter()->column_width(34);
   cli::addCommonOptions(app, options, scene.settings());
   scene.addOptions(app);
+  cli::addKnobOptions(app, scene.knobs());
   scene.addContactOptions(app);
+  bool listSettings = false;
+  app.add_flag("--list-settings", listSettings,
+               "print every setting and scene knob as JSON (name, option, key, min, max, unit, default) and exit");
   cli::rejectEmptyValues(app);
   app.footer(cli::keysHelp(scene));
   try {
@@ -56,6 +65,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     cli::validateRunOptions(options);
     cli::refuseOwnOutputs(options, scene.outputFileNames());
     cli::refuseRunShorterThanStep(options, scene.settings().step);
+    cli::checkKnobs(app, scene.knobs(), scene.settings().step);
     scene.setRunOptions(options);
     scene.checkOptions();
   } catch (const CLI::CallForHelp& help) {
@@ -68,6 +78,10 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     return exit_code::USAGE;
   }
 
+  if (listSettings) {
+    std::cout << cli::settingsJson(scene.settings(), scene.knobs());
+    return exit_code::OK;
+  }
   installStopSignalHandlers();
   OdeLibrary ode;
   if (!dCheckConfiguration("ODE_double_precision")) {
