@@ -3,7 +3,7 @@
 # 1024x768, after 120 frames at its defaults, for looking at: is the subject
 # in view, is any text clipped, is the panel readable?
 #
-#   scripts/screenshots.sh [OUT_DIR] [PROGRAM...]   (default: screenshots/, test0 ... test10)
+#   scripts/screenshots.sh [OUT_DIR] [PROGRAM...]   (default: screenshots/, every program: odelab --list)
 #
 # Environment: BUILD_DIR (default: build). Needs xvfb-run (Debian's xvfb).
 set -euo pipefail
@@ -12,7 +12,7 @@ build_dir=${BUILD_DIR:-$root/build}
 out=${1:-screenshots}
 [ $# -gt 0 ] && shift
 programs=("$@")
-[ ${#programs[@]} -eq 0 ] && programs=(test0 test1 test2 test3 test4 test5 test6 test7 test8 test9 test10)
+[ ${#programs[@]} -eq 0 ] && mapfile -t programs < <("$build_dir/tests/odelab" --list | cut -f1)
 command -v xvfb-run >/dev/null || { echo "screenshots: xvfb-run not found (apt-get install xvfb xauth)" >&2; exit 1; }
 mkdir -p "$out"
 for program in "${programs[@]}"; do

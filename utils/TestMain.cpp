@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 
 #include "CommandLine.h"
 #include "ExitCodes.h"
@@ -42,9 +43,15 @@ int run(AbstractWindow& scene, const RunOptions& options) {
 
 }  // namespace
 
-int reportBrokenScene(const std::logic_error& error) {
-  std::cerr << "error: scene declaration: " << error.what() << '\n';
-  return exit_code::RUNTIME_ERROR;
+int runEntry(const SceneEntry& entry, int argc, char** argv) {
+  std::unique_ptr<AbstractWindow> scene;
+  try {
+    scene = entry.make();
+  } catch (const std::logic_error& error) {
+    std::cerr << "error: scene declaration: " << error.what() << '\n';
+    return exit_code::RUNTIME_ERROR;
+  }
+  return runScene(*scene, entry.description, argc, argv);
 }
 
 int runScene(AbstractWindow& scene, const char* description, int argc, char** argv) {

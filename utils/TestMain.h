@@ -1,9 +1,7 @@
 #pragma once
 
-#include <memory>
-#include <stdexcept>
-
 #include "AbstractWindow.h"
+#include "SceneRegistry.h"
 
 namespace odelab {
 
@@ -11,21 +9,10 @@ namespace odelab {
 // with its handlers, and runs the scene headless or in a window. Returns the
 // process exit status (utils/ExitCodes.h).
 int runScene(AbstractWindow& scene, const char* description, int argc, char** argv);
-// Prints "error: scene declaration: ..." and returns exit_code::RUNTIME_ERROR.
-int reportBrokenScene(const std::logic_error& error);
 
 // Every test's main(): `int main(int argc, char** argv) { return odelab::runTest<Test1>(argc, argv, "..."); }`
-// A scene that declares a key twice (or a knob wrongly) fails here, at
-// start-up, with the reason on stderr.
-template <class Scene>
-int runTest(int argc, char** argv, const char* description) {
-  std::unique_ptr<Scene> scene;
-  try {
-    scene = std::make_unique<Scene>();
-  } catch (const std::logic_error& error) {
-    return reportBrokenScene(error);
-  }
-  return runScene(*scene, description, argc, argv);
-}
+// Makes the registry's scene and runs it. A scene that declares a key twice
+// fails here, at start-up: "error: scene declaration: ...", status 1.
+int runEntry(const SceneEntry& entry, int argc, char** argv);
 
 }  // namespace odelab

@@ -12,7 +12,7 @@
 #include "Box.h"
 #include "CommandLine.h"
 #include "Sphere.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/BodyMeasures.h"
 
 namespace {
@@ -169,7 +169,5 @@ class BoxAndSphere : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<BoxAndSphere>(argc, argv,
-                                       "Boxes and spheres of random size fall onto a platform; auto-disable on.");
-}
+ODELAB_SCENE(test0, BoxAndSphere,
+             "Boxes and spheres of random size fall onto a platform; auto-disable on.")

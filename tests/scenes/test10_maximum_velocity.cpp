@@ -37,7 +37,7 @@
 #include "FormatValue.h"
 #include "Plane.h"
 #include "SweptCollision.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/MechanicalEnergy.h"
 #include "shared/SceneConstants.h"
 #include "shared/VelocityScan.h"
@@ -126,19 +126,19 @@ class MaximumVelocity : public AbstractWindow {
 
   void addOptions(CLI::App& app) override {
     app.add_flag("--find-max-velocity", findMaxVelocity_,
-                 "headless: scan launch velocities from 1 m/s, every 1 m/s up to 1000 m/s and every 0.1% above, "
-                 "for the highest velocity at which every launch so far was stopped");
+             "headless: scan launch velocities from 1 m/s, every 1 m/s up to 1000 m/s and every 0.1% above, "
+             "for the highest velocity at which every launch so far was stopped");
     app.add_flag("--phase-jitter", phaseJitter_,
-                 "start each launch up to one step's travel behind [-4, 3, 0] (uniform, from --seed), so the "
-                 "cube meets the wall at a random phase of the step; off: the thesis's fixed launch point");
+             "start each launch up to one step's travel behind [-4, 3, 0] (uniform, from --seed), so the "
+             "cube meets the wall at a random phase of the step; off: the thesis's fixed launch point");
     app.add_flag("--random-orientation", randomOrientation_,
-                 "launch each cube turned to a uniformly random orientation (from --seed), so it meets the wall "
-                 "with a corner or an edge first; off: unturned, face on (the thesis's)");
+             "launch each cube turned to a uniformly random orientation (from --seed), so it meets the wall "
+             "with a corner or an edge first; off: unturned, face on (the thesis's)");
     app.add_flag("--ccd", ccd_,
-                 "continuous collision for fast bodies: before each step, a body whose points may move more than "
-                 "half its smallest half-extent in the step is swept along its motion (turning included) against "
-                 "the static geometry, moved to its first touching pose and given contacts for the corners on "
-                 "their way in, so the contacts stop it (window: T); off: the thesis's behaviour");
+             "continuous collision for fast bodies: before each step, a body whose points may move more than "
+             "half its smallest half-extent in the step is swept along its motion (turning included) against "
+             "the static geometry, moved to its first touching pose and given contacts for the corners on "
+             "their way in, so the contacts stop it (window: T); off: the thesis's behaviour");
   }
 
  protected:
@@ -395,7 +395,5 @@ class MaximumVelocity : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<MaximumVelocity>(
-      argc, argv, "Cubes launched at a thin wall: the highest velocity at which the wall still stops every one.");
-}
+ODELAB_SCENE(test10, MaximumVelocity,
+             "Cubes launched at a thin wall: the highest velocity at which the wall still stops every one.")

@@ -17,7 +17,7 @@
 
 #include "Plane.h"
 #include "Sphere.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/ApexTracker.h"
 #include "shared/BodyMeasures.h"
 #include "shared/BounceVelocityOption.h"
@@ -199,8 +199,6 @@ class JumpingBalls : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<JumpingBalls>(argc, argv,
-                                       "Fifty balls with restitution 0 to 1 bounce on the ground; each rebound "
-                                       "apex ratio is compared with e^2.");
-}
+ODELAB_SCENE(test1, JumpingBalls,
+             "Fifty balls with restitution 0 to 1 bounce on the ground; each rebound "
+             "apex ratio is compared with e^2.")

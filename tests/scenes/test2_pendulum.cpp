@@ -18,7 +18,7 @@
 #include "CommandLine.h"
 #include "FormatValue.h"
 #include "MeasurementLog.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/FixedIntervalSampler.h"
 #include "shared/PendulumRig.h"
 
@@ -115,8 +115,8 @@ class Pendulum : public PendulumScene {
     // a total without the spin about the centre of mass dips at the bottom of
     // every swing, the shape the thesis saw.
     app.add_flag("--no-rotational-energy", withoutRotation_,
-                 "leave the rotational kinetic energy 0.5 w^T I w out of the kinetic and total energy "
-                 "(0.5 m v^2 only)");
+             "leave the rotational kinetic energy 0.5 w^T I w out of the kinetic and total energy "
+             "(0.5 m v^2 only)");
   }
 
   void checkOptions() const override {
@@ -255,8 +255,6 @@ class Pendulum : public PendulumScene {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<Pendulum>(argc, argv,
-                                   "A rod and a sphere merged into one body swing on a hinge; energies go to "
-                                   "Test2_output.txt.");
-}
+ODELAB_SCENE(test2, Pendulum,
+             "A rod and a sphere merged into one body swing on a hinge; energies go to "
+             "Test2_output.txt.")

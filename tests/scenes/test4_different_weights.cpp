@@ -20,7 +20,7 @@
 
 #include "AbstractWindow.h"
 #include "Box.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/SceneConstants.h"
 #include "shared/BodyMeasures.h"
 
@@ -171,7 +171,5 @@ class DifferentWeights : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<DifferentWeights>(
-      argc, argv, "A 5000 kg cube balanced on a 5 kg cube on a static platform; how long does it hold?");
-}
+ODELAB_SCENE(test4, DifferentWeights,
+             "A 5000 kg cube balanced on a 5 kg cube on a static platform; how long does it hold?")

@@ -30,7 +30,7 @@
 #include "AbstractWindow.h"
 #include "Box.h"
 #include "CommandLine.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/SceneConstants.h"
 #include "shared/BodyMeasures.h"
 #include "shared/IslandThreads.h"
@@ -106,7 +106,7 @@ class ManyCollisions : public AbstractWindow {
         ->check(CLI::IsMember({"simple", "hash", "sap", "quadtree"}))
         ->default_str("simple");
     app.add_flag("--auto-disable", autoDisable_,
-                 "let ODE disable resting plates (default off: the thesis found it freezes plates in the air)");
+             "let ODE disable resting plates (default off: the thesis found it freezes plates in the air)");
   }
 
  protected:
@@ -385,7 +385,5 @@ class ManyCollisions : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<ManyCollisions>(
-      argc, argv, "Plates [5, 0.05, 5] dropped onto a stack; how fast and how straight does it grow?");
-}
+ODELAB_SCENE(test5, ManyCollisions,
+             "Plates [5, 0.05, 5] dropped onto a stack; how fast and how straight does it grow?")

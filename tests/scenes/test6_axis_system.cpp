@@ -20,7 +20,7 @@
 #include "CommandLine.h"
 #include "FormatValue.h"
 #include "Plane.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/AngularSpeedLimit.h"
 #include "shared/BodyMeasures.h"
 
@@ -173,7 +173,5 @@ class AxisSystem : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<AxisSystem>(
-      argc, argv, "A 5000 kg cube on a ball joint above a 1 kg cube: how long does the axis stay upright?");
-}
+ODELAB_SCENE(test6, AxisSystem,
+             "A 5000 kg cube on a ball joint above a 1 kg cube: how long does the axis stay upright?")

@@ -22,7 +22,7 @@
 #include "FormatValue.h"
 #include "Plane.h"
 #include "Sphere.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/AngularSpeedLimit.h"
 #include "shared/BodyMeasures.h"
 
@@ -291,7 +291,5 @@ class AxisSystem2 : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<AxisSystem2>(
-      argc, argv, "Two cubes hang on ball joints; a 100 kg cube is thrown into the upper one at 30 m/s.");
-}
+ODELAB_SCENE(test7, AxisSystem2,
+             "Two cubes hang on ball joints; a 100 kg cube is thrown into the upper one at 30 m/s.")

@@ -18,7 +18,7 @@
 #include "CommandLine.h"
 #include "FormatValue.h"
 #include "MeasurementLog.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/FixedIntervalSampler.h"
 #include "shared/PendulumRig.h"
 
@@ -173,8 +173,6 @@ class HingeStability : public PendulumScene {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<HingeStability>(argc, argv,
-                                         "test2's pendulum with a 5000 kg bob; its relative elongation goes to "
-                                         "Test8_output.txt.");
-}
+ODELAB_SCENE(test8, HingeStability,
+             "test2's pendulum with a 5000 kg bob; its relative elongation goes to "
+             "Test8_output.txt.")

@@ -15,7 +15,7 @@
 
 #include "Plane.h"
 #include "Sphere.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/ApexTracker.h"
 #include "shared/BounceVelocityOption.h"
 #include "shared/SceneConstants.h"
@@ -159,8 +159,6 @@ class RestitutionAccuracy : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<RestitutionAccuracy>(argc, argv,
-                                              "A ball with bounce 1.0 bounces under 4 g; every apex's deviation "
-                                              "from the start is printed.");
-}
+ODELAB_SCENE(test9, RestitutionAccuracy,
+             "A ball with bounce 1.0 bounces under 4 g; every apex's deviation "
+             "from the start is printed.")
