@@ -15,3 +15,11 @@ foreach(_program IN LISTS ODELAB_PROGRAMS)
                    $<TARGET_FILE:${_program}> --seconds 3)
   set_tests_properties(${_program}_same_run_from_odelab PROPERTIES TIMEOUT 600 LABELS scene)
 endforeach()
+
+# The launcher's window switches scenes without leaving the window: the
+# scene on screen at the end reports its own metrics (test2's energies after
+# two Page Downs from test0; test10's launch velocity after one Page Up).
+odelab_window_check(odelab_window_page_down_switches_scenes odelab EVENTS switch_scenes.events
+  EXPECT energy_start_J>0 non_finite==0)
+odelab_window_check(odelab_window_page_up_wraps_to_the_last_scene odelab EVENTS switch_back.events
+  EXPECT launch_velocity>0 non_finite==0)

@@ -90,6 +90,10 @@ class AbstractWindow {
   std::vector<std::string> helpLines() const;
   bool quitRequested() const { return quitRequested_; }
   void requestQuit() { quitRequested_ = true; }
+  // The launcher's window: Page Down / Page Up end this scene's frame loop
+  // asking for the next / previous scene of the registry (switchRequest()).
+  void offerSceneSwitch(const std::string& sceneList);
+  int switchRequest() const { return switchRequest_; }
   Camera& camera() { return camera_; }
   const Camera& camera() const { return camera_; }
   bool mouseLook() const { return mouseLook_; }
@@ -278,6 +282,7 @@ class AbstractWindow {
   std::string blowUpReason_;
   HudMode hudMode_ = HudMode::Compact;
   bool quitRequested_ = false;
+  int switchRequest_ = 0;  // +1 next scene, -1 previous, 0 none
   bool mouseLook_ = false;
   std::string notice_, failure_;
   long long failures_ = 0;  // blow-ups and ODE errors a window recovered from

@@ -169,6 +169,15 @@ void AbstractWindow::bindSharedKeys() {
   for (const SettingSpec& spec : settingsTable()) bindSetting(spec);
 }
 
+void AbstractWindow::offerSceneSwitch(const std::string& sceneList) {
+  const auto ask = [this](int direction) {
+    switchRequest_ = direction;
+    quitRequested_ = true;
+  };
+  bindViewKey(SDLK_PAGEDOWN, "PageDown", "next scene of " + sceneList, [ask](int) { ask(+1); });
+  bindViewKey(SDLK_PAGEUP, "PageUp", "previous scene", [ask](int) { ask(-1); });
+}
+
 PickHit AbstractWindow::pickAt(const double origin[3], const double direction[3]) const {
   return pickObject(objects_, origin, direction);
 }

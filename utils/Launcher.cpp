@@ -1,4 +1,6 @@
 // odelab: every scene of the library from one program.
+//   odelab [window options]             a window with the first scene; Page Down / Page Up
+//                                       switch to the next / previous scene, H lists the keys
 //   odelab --list                       the scenes, one a line: name, tab, description
 //   odelab --scene NAME [options]       NAME as its own program runs it (same options,
 //                                       headless too: the same metrics and state hash)
@@ -14,8 +16,37 @@
 namespace {
 
 constexpr const char* USAGE =
-    "usage: odelab --list\n"
+    "usage: odelab [window options]        (Page Down / Page Up switch scenes)\n"
+    "       odelab --list\n"
     "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n";
+
+// Page Down / Page Up in the window: the next or previous scene of the
+// registry, made fresh with the window's options (its knobs at their defaults).
+class RegistrySwitching : public odelab::SceneSwitching {
+ public:
+  explicit RegistrySwitching(const odelab::SceneEntry& first) {
+    const auto& scenes = odelab::sceneRegistry();
+    while (index_ < scenes.size() && scenes[index_].make != first.make) ++index_;
+  }
+
+  odelab::AbstractWindow& next(int direction, const odelab::RunOptions& options) override {
+    const auto& scenes = odelab::sceneRegistry();
+    index_ = (index_ + scenes.size() + (direction > 0 ? 1 : scenes.size() - 1)) % scenes.size();
+    scene_ = scenes[index_].make();  // the scene it replaces has ended: freed here
+    scene_->offerSceneSwitch(sceneList());
+    scene_->setRunOptions(options);
+    return *scene_;
+  }
+
+  std::string sceneList() const override {
+    const auto& scenes = odelab::sceneRegistry();
+    return std::string(scenes.front().name) + " ... " + scenes.back().name + " (odelab --list)";
+  }
+
+ private:
+  size_t index_ = 0;
+  std::unique_ptr<odelab::AbstractWindow> scene_;
+};
 
 int usageError(const std::string& message) {
   std::cerr << "error: " << message << '\n' << USAGE;
@@ -49,8 +80,14 @@ int main(int argc, char** argv) {
       arguments.push_back(argv[i]);
     }
   }
-  if (!named) return usageError(first.empty() ? "--scene: no scene given" : "--scene NAME (or --list) is needed");
-  const odelab::SceneEntry* scene = odelab::findScene(name);
+  // No --scene: the window starts with the registry's first scene.
+  const odelab::SceneEntry* scene = named ? odelab::findScene(name) : &odelab::sceneRegistry().front();
   if (!scene) return usageError("--scene: no scene '" + name + "'; odelab --list names them");
-  return odelab::runEntry(*scene, static_cast<int>(arguments.size()), arguments.data());
+  // The window switches scenes (Page Down / Page Up); a headless run is one scene's.
+  bool headless = false;
+  for (const char* argument : arguments) headless = headless || std::strcmp(argument, "--headless") == 0;
+  if (headless && !named) return usageError("--headless: needs --scene NAME");
+  RegistrySwitching switching(*scene);
+  return odelab::runEntry(*scene, static_cast<int>(arguments.size()), arguments.data(),
+                          headless ? nullptr : &switching);
 }

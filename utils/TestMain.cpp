@@ -1,6 +1,7 @@
 #include "TestMain.h"
 
 #include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <stdexcept>
 
@@ -25,14 +26,32 @@ class OdeLibrary {
   ~OdeLibrary() { dCloseODE(); }
 };
 
-int run(AbstractWindow& scene, const RunOptions& options) {
+int run(AbstractWindow& first, const RunOptions& options, SceneSwitching* switching) {
   if (options.headless) {
-    scene.initialize(options);
-    return scene.runHeadless();
+    first.initialize(options);
+    return first.runHeadless();
   }
   // The window builds the scene itself once the window, shaders, font and
   // --events script are ready, so a missing resource leaves no output file.
-  const int status = runWindow(scene, options);
+  AbstractWindow* current = &first;
+  // A scene switched to is torn down here, before ODE closes (the runner
+  // tears down the first); not while an error unwinds (see runScene).
+  struct TearDownLast {
+    AbstractWindow& first;
+    AbstractWindow*& current;
+    ~TearDownLast() {
+      if (current != &first && std::uncaught_exceptions() == 0) current->shutdown();
+    }
+  } tearDown{first, current};
+  const int status = switching ? runWindowSwitching(first, options,
+                                                    [&](int direction) -> AbstractWindow& {
+                                                      current->endOutputs("");
+                                                      current->shutdown();
+                                                      current = &switching->next(direction, options);
+                                                      return *current;
+                                                    })
+                               : runWindow(first, options);
+  AbstractWindow& scene = *current;
   if (stopSignal() != 0) return scene.stoppedBySignal();
   if (status != exit_code::OK) return status;
   scene.endOutputs("");
@@ -43,18 +62,19 @@ int run(AbstractWindow& scene, const RunOptions& options) {
 
 }  // namespace
 
-int runEntry(const SceneEntry& entry, int argc, char** argv) {
+int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* switching) {
   std::unique_ptr<AbstractWindow> scene;
   try {
     scene = entry.make();
+    if (switching) scene->offerSceneSwitch(switching->sceneList());
   } catch (const std::logic_error& error) {
     std::cerr << "error: scene declaration: " << error.what() << '\n';
     return exit_code::RUNTIME_ERROR;
   }
-  return runScene(*scene, entry.description, argc, argv);
+  return runScene(*scene, entry.description, argc, argv, switching);
 }
 
-int runScene(AbstractWindow& scene, const char* description, int argc, char** argv) {
+int runScene(AbstractWindow& scene, const char* description, int argc, char** argv, SceneSwitching* switching) {
   RunOptions options;
   CLI::App app{std::string(scene.title()) + "\n" + description};
   app.get_formatter()->column_width(34);
@@ -97,7 +117,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   }
   int status = exit_code::OK;
   try {
-    status = run(scene, options);
+    status = run(scene, options, switching);
   } catch (const OdeError& error) {
     // ODE's state is not to be trusted after its own error: tearing the
     // world down can raise another one from a destructor. Leave without

@@ -273,6 +273,11 @@ std::vector<ScriptEvent> loadScript(const RunOptions& options) {
 void checkWindowOptions(const RunOptions& options) { loadScript(options); }
 
 int runWindow(AbstractWindow& scene, const RunOptions& options) {
+  return runWindowSwitching(scene, options, nullptr);
+}
+
+int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
+                       const std::function<AbstractWindow&(int direction)>& next) {
   const ResourceLookup shaders = findShaderDir(options.shaderDir);
   if (!shaders.ok()) {
     std::fprintf(stderr, "error: shaders not found; tried: %s\n", shaders.triedList().c_str());
@@ -289,15 +294,23 @@ int runWindow(AbstractWindow& scene, const RunOptions& options) {
 
   try {
     // Declared in this order so GL objects go before the context they live in.
-    GlWindow window(scene.title(), options.width, options.height, options.vsync);
+    GlWindow window(first.title(), options.width, options.height, options.vsync);
     Views views(shaders.found, font.found, window, options);
-    // Built only now that the window can run, so that a refused window run
-    // (no display, unusable shaders or font) leaves no output file behind;
-    // a runner that built it already is fine too.
-    if (!scene.world()) scene.initialize(options);
+    // One script for the whole window; after a switch its frame numbers
+    // count the new scene's frames from 1.
     EventPlayer player(std::move(script), window.sdlWindow());
-    FrameLoop loop(scene, options, window, views, player);
-    return loop.run();
+    AbstractWindow* scene = &first;
+    for (;;) {
+      // Built only now that the window can run, so that a refused window run
+      // (no display, unusable shaders or font) leaves no output file behind;
+      // a runner that built it already is fine too.
+      if (!scene->world()) scene->initialize(options);
+      FrameLoop loop(*scene, options, window, views, player);
+      const int status = loop.run();
+      if (!next || scene->switchRequest() == 0 || stopSignal() != 0) return status;
+      scene = &next(scene->switchRequest());
+      SDL_SetWindowTitle(window.sdlWindow(), scene->title().c_str());
+    }
   } catch (const NoDisplayError& error) {
     std::fprintf(stderr, "error: cannot open a window (%s); set DISPLAY or run with --headless\n", error.what());
     return exit_code::NO_DISPLAY;

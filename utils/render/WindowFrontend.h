@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+
 #include "../AbstractWindow.h"
 
 namespace odelab {
@@ -14,6 +16,13 @@ namespace odelab {
 // Unless the caller did, it builds the scene (scene.initialize) once the
 // window, shaders, font and script are ready, so a refused run writes nothing.
 int runWindow(AbstractWindow& scene, const RunOptions& options);
+
+// The launcher's window: runs `first` as runWindow does, and when the scene
+// ends asking for another (AbstractWindow::switchRequest), runs the one
+// `next(direction)` gives in the same window, built with the same options.
+// `next` ends the scene it replaces; it returns the scene now running.
+int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
+                       const std::function<AbstractWindow&(int direction)>& next);
 
 // Reads and checks the --events script only, throwing UsageError like
 // runWindow. For the runner to call before the scene is built, so that a bad
