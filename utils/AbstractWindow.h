@@ -248,6 +248,7 @@ class AbstractWindow {
   static bool settingKey(SDL_Keycode key);
   void reportSetting(const SettingChange& change);
   void recoverFrom(const std::string& failure);
+  bool stateSuspicious() const;  // the cheap test behind stateProblem()
   std::string stateProblem() const;
   std::string settingsInForce() const;
 
