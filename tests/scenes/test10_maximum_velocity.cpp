@@ -39,6 +39,7 @@
 #include "SweptCollision.h"
 #include "SceneRegistry.h"
 #include "shared/MechanicalEnergy.h"
+#include "shared/LaunchOutcome.h"
 #include "shared/SceneConstants.h"
 #include "shared/VelocityScan.h"
 
@@ -50,17 +51,11 @@ using namespace odelab::scene::test10;
 constexpr double DEFAULT_VELOCITY = 200.0;  // m/s (proposed): stopped at the default step
 // F5 changes the velocity by 10 m/s below 1000 m/s and by 100 m/s from there up.
 constexpr double F5_FINE_STEP = 10.0, F5_COARSE_STEP = 100.0, F5_COARSE_FROM = 1000.0;
-constexpr double DEFAULT_SCAN_LIMIT = 100000.0;  // m/s: where the scan gives up (proposed)
 constexpr double DEFAULT_BAND_FACTOR = 1.5;      // keep scanning to 1.5x the first failure (proposed)
 
-// A launch is over when the cube is wholly past the wall, or moves no longer
-// toward it on the near side; failing both, after the time it needs to reach
-// the wall plus this much (a soft contact, with CFM > 0, may take a while).
-constexpr double SETTLE_SECONDS = 0.05;
 // The window keeps launched cubes to show where they ended; farther away they go.
 constexpr double KEEP_RADIUS = 100.0;
 
-enum class Outcome { InFlight, Stopped, Passed };
 
 const char* outcomeName(Outcome outcome) {
   switch (outcome) {
@@ -300,19 +295,10 @@ class MaximumVelocity : public AbstractWindow {
     dBodySetAngularVel(cube.getBody(), spin_ * axis[0] / n, spin_ * axis[1] / n, spin_ * axis[2] / n);
   }
 
-  // Passed: the whole cube is beyond the far face. Stopped: on the near side
-  // of the mid-plane and no longer moving toward the wall (bounced back, or
-  // fell to the ground short of it). Otherwise still in flight until the
-  // time it needs to reach the wall plus SETTLE_SECONDS; then its centre decides.
+  // test10's rule (shared/LaunchOutcome.h), which the peer engines use too.
   Outcome classify(const Launch& l) const {
-    const double x = l.cube->getPosition()[0];
-    const double vx = dBodyGetLinearVel(l.cube->getBody())[0];
-    if (x - CUBE_HALF_SIZE > WALL_FAR_FACE) return Outcome::Passed;
-    if (vx <= 0.0 && x < WALL_X) return Outcome::Stopped;
-    const double reachSeconds = (WALL_FAR_FACE + CUBE_HALF_SIZE - LAUNCH_X) / l.velocity;
-    if (simulatedTime() - l.launchedAt > reachSeconds + SETTLE_SECONDS)
-      return x > WALL_FAR_FACE ? Outcome::Passed : Outcome::Stopped;
-    return Outcome::InFlight;
+    return launchOutcome(l.cube->getPosition()[0], dBodyGetLinearVel(l.cube->getBody())[0], l.velocity,
+                         simulatedTime() - l.launchedAt);
   }
 
   // Drops the cubes whose outcome is known and that flew far away, with their records.
