@@ -481,8 +481,7 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
       {"step_seconds", formatValue(settings_.step)},
       {"erp", formatValue(settings_.erp)},
       {"cfm", formatValue(settings_.cfm)},
-      {"solver", solverName(settings_.solver) == std::string("quick") ? "quick (dWorldQuickStep)"
-                                                                       : "step (dWorldStep)"},
+      {"solver", settings_.solver == Solver::QuickStep ? "quick (dWorldQuickStep)" : "step (dWorldStep)"},
       {"iterations", std::to_string(settings_.iterations)},
       {"sor_w", formatValue(settings_.sor)},
       {"gravity", formatValue(settings_.gravity)},
