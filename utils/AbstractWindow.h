@@ -142,7 +142,7 @@ class AbstractWindow {
   double simulatedTime() const { return simulatedTime_; }
   long long steps() const { return steps_; }
   int contactsLastStep() const { return contactsLastStep_; }
-  double lastStepWallSeconds() const { return lastStepWallSeconds_; }
+  double lastStepWallSeconds() const { return lastStepWallSeconds_; }  // 0 unless the scene called timeSteps()
   const std::string& blowUpReason() const { return blowUpReason_; }
   int bodyCount() const;
   int disabledBodyCount() const;
@@ -230,6 +230,8 @@ class AbstractWindow {
 
   std::mt19937& random() { return random_; }
   const RunOptions& options() const { return options_; }
+  // Measure every step's wall time (lastStepWallSeconds()); off by default.
+  void timeSteps() { timeSteps_ = true; }
   // Prints a line on stderr and keeps it for the HUD for a few seconds.
   void notify(const std::string& message);
 
@@ -279,6 +281,7 @@ class AbstractWindow {
   int contactsLastStep_ = 0;
   int contactsThisStep_ = 0;
   double lastStepWallSeconds_ = 0.0;
+  bool timeSteps_ = false;
   double wallSeconds_ = 0.0;  // real time spent in this run (headless) or its frames (window)
   std::string blowUpReason_;
   HudMode hudMode_ = HudMode::Compact;

@@ -91,6 +91,7 @@ class ManyCollisions : public AbstractWindow {
             [this](int direction) { cycleSpace(direction); });
     declareKnobs();
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
+    timeSteps();                   // ms_per_step and the collide cost read each step's wall time
   }
 
   // The world must let go of the threading implementation before it is
