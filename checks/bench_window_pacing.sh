@@ -13,7 +13,7 @@
 #
 #   checks/bench_window_pacing.sh [--frames N] [--seconds S] [PROGRAM...]
 #
-# PROGRAM defaults to test0 ... test10 (in build/tests); N = 240, S = 5.
+# PROGRAM defaults to every program (odelab --list, in build/tests); N = 240, S = 5.
 # Figures depend on the machine and its load: compare runs made side by side.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -29,7 +29,7 @@ while [ $# -gt 0 ]; do
     *) break ;;
   esac
 done
-programs=${*:-test0 test1 test2 test3 test4 test5 test6 test7 test8 test9 test10}
+programs=${*:-$("$bin/odelab" --list | cut -f1)}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

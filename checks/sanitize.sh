@@ -17,7 +17,6 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build-sanitize
 logs=$build/sanitize-logs
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
-programs="test0 test1 test2 test3 test4 test5 test6 test7 test8 test9 test10"
 
 say() { printf 'sanitize: %s\n' "$*"; }
 now() { date +%s; }
@@ -58,6 +57,7 @@ run() {
 }
 
 run unit_tests 0 "$build/checks/odelab_unit_tests"
+programs=$("$build/tests/odelab" --list | cut -f1)  # the registry: every program
 # A short headless run of every program; where a scene ignores --seconds or
 # needs something to happen first, a scene-appropriate run instead.
 for p in $programs; do

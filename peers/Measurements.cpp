@@ -165,13 +165,10 @@ Tally measureHold(Engine& engine, const RunOptions& options, Metrics& metrics) {
 
 namespace {
 
-enum class Outcome { InFlight, Stopped, Passed, BlewUp };
+enum class Outcome { Stopped, Passed, BlewUp };
 
-// One launch, stepped until test10's rule decides it.
+// One launch, stepped until test10's rule (test10::launchOutcome) decides it.
 Outcome launchAndResolve(Engine& engine, const RunOptions& options, double velocity, Tally& tally) {
-  using namespace test10;
-  const double half = CUBE_SIDE / 2, farFace = WALL_X + WALL_THICKNESS / 2;
-  const double reachSeconds = (farFace + half - LAUNCH_X) / velocity;
   auto cube = engine.launch(velocity, options);
   for (long steps = 1;; ++steps) {
     cube->step();
@@ -180,9 +177,11 @@ Outcome launchAndResolve(Engine& engine, const RunOptions& options, double veloc
     const Vec3 p = cube->cubeCentre();
     const double vx = cube->cubeVelocityX();
     if (!finite(p) || !std::isfinite(vx)) return Outcome::BlewUp;
-    if (p.x - half > farFace) return Outcome::Passed;
-    if (vx <= 0.0 && p.x < WALL_X) return Outcome::Stopped;
-    if (steps * options.step > reachSeconds + SETTLE_SECONDS) return p.x > farFace ? Outcome::Passed : Outcome::Stopped;
+    switch (test10::launchOutcome(p.x, vx, velocity, steps * options.step)) {
+      case test10::Outcome::Passed: return Outcome::Passed;
+      case test10::Outcome::Stopped: return Outcome::Stopped;
+      case test10::Outcome::InFlight: break;
+    }
   }
 }
 
@@ -214,8 +213,7 @@ Tally measureWall(Engine& engine, const RunOptions& options, Metrics& metrics) {
   } else {
     double maxVelocity = 0.0, firstFailure = 0.0;
     int tested = 0;
-    for (double v = SCAN_FINE_STEP; v <= SCAN_LIMIT * (1 + 1e-12);
-         v = v < SCAN_FINE_LIMIT ? v + SCAN_FINE_STEP : v * (1 + SCAN_COARSE_RATIO)) {
+    for (double v = VelocityScan::FINE_STEP; v <= SCAN_LIMIT * (1 + 1e-12); v = VelocityScan::next(v)) {
       const Outcome outcome = run(v);
       if (outcome == Outcome::BlewUp) break;
       ++tested;
@@ -226,7 +224,7 @@ Tally measureWall(Engine& engine, const RunOptions& options, Metrics& metrics) {
       maxVelocity = v;
     }
     metrics.set("max_velocity", maxVelocity);
-    metrics.set("max_velocity_resolution", maxVelocity < SCAN_FINE_LIMIT ? SCAN_FINE_STEP : maxVelocity * SCAN_COARSE_RATIO);
+    metrics.set("max_velocity_resolution", VelocityScan::resolutionAt(maxVelocity));
     metrics.set("first_failure_velocity", firstFailure);
     metrics.set("tested_velocities", tested);
   }

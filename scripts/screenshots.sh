@@ -7,7 +7,7 @@
 # reduced to 256 colours with pngquant where it is installed (doc/screenshots
 # holds such a set).
 #
-#   scripts/screenshots.sh [OUT_DIR] [PROGRAM...]   (default: screenshots/, test0 ... test10)
+#   scripts/screenshots.sh [OUT_DIR] [PROGRAM...]   (default: screenshots/, every program: odelab --list)
 #
 # Environment: BUILD_DIR (default: build). Needs xvfb-run (Debian's xvfb).
 set -euo pipefail
@@ -16,7 +16,7 @@ build_dir=${BUILD_DIR:-$root/build}
 out=${1:-screenshots}
 [ $# -gt 0 ] && shift
 programs=("$@")
-[ ${#programs[@]} -eq 0 ] && programs=(test0 test1 test2 test3 test4 test5 test6 test7 test8 test9 test10)
+[ ${#programs[@]} -eq 0 ] && mapfile -t programs < <("$build_dir/tests/odelab" --list | cut -f1)
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 for program in "${programs[@]}"; do

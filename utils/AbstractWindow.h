@@ -3,6 +3,7 @@
 #include <ode/ode.h>
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <random>
@@ -15,6 +16,7 @@
 #include "ContactChoices.h"
 #include "DebugMarkers.h"
 #include "KeyTable.h"
+#include "Knob.h"
 #include "Metrics.h"
 #include "MouseDrag.h"
 #include "Rewind.h"
@@ -50,6 +52,9 @@ class AbstractWindow {
   virtual void addOptions(CLI::App& app);  // the scene's own options, before parsing
   // --mu and --max-contacts, for scenes that called useContactChoices().
   void addContactOptions(CLI::App& app);
+  // Every declared knob; the runner adds their options (utils/CommandLine.h).
+  std::deque<Knob>& knobs() { return knobs_; }
+  const std::deque<Knob>& knobs() const { return knobs_; }
   void setRunOptions(const RunOptions& options) { options_ = options; }
   // Its files in --out-dir (run log included): --metrics-json and --screenshot may not name them.
   virtual std::vector<std::string> outputFileNames() const { return {programName() + "_run_log.txt"}; }
@@ -85,6 +90,10 @@ class AbstractWindow {
   std::vector<std::string> helpLines() const;
   bool quitRequested() const { return quitRequested_; }
   void requestQuit() { quitRequested_ = true; }
+  // The launcher's window: Page Down / Page Up end this scene's frame loop
+  // asking for the next / previous scene of the registry (switchRequest()).
+  void offerSceneSwitch(const std::string& sceneList);
+  int switchRequest() const { return switchRequest_; }
   Camera& camera() { return camera_; }
   const Camera& camera() const { return camera_; }
   bool mouseLook() const { return mouseLook_; }
@@ -133,9 +142,9 @@ class AbstractWindow {
   double simulatedTime() const { return simulatedTime_; }
   long long steps() const { return steps_; }
   int contactsLastStep() const { return contactsLastStep_; }
-  double lastStepWallSeconds() const { return lastStepWallSeconds_; }
   // Real seconds spent in dSpaceCollide since the program started (the window's frame profile).
   double collideWallSeconds() const { return collideWallSeconds_; }
+  double lastStepWallSeconds() const { return lastStepWallSeconds_; }  // 0 unless the scene called timeSteps()
   const std::string& blowUpReason() const { return blowUpReason_; }
   // " at t=1.23 s (step 0.001, ERP 0.2, ...)": what every ODE error and
   // blow-up message ends with, on the main thread or in a pool thread.
@@ -178,8 +187,9 @@ class AbstractWindow {
   virtual void addMetrics(Metrics& metrics) const { (void)metrics; }
   // After any setting change (keys, panel), e.g. to log it in an output file.
   virtual void onSettingChanged(const std::string& change) { (void)change; }
-  // After a scene parameter changed from the panel.
-  virtual void onParameterChanged(const SceneParameter& parameter) { (void)parameter; }
+  // After a knob changed from its key or the panel (a knob that rebuilds
+  // the scene has been rebuilt already).
+  virtual void onKnobChanged(const Knob& knob) { (void)knob; }
   virtual double defaultHeadlessSeconds() const { return 10.0; }  // without --seconds
   // Why a rewind (a replay) may not match the run, or "": shown on rewinding.
   virtual std::string rewindCaveat() const { return {}; }
@@ -202,8 +212,12 @@ class AbstractWindow {
   void keepAcrossRewind(T& value) {
     rewind_.keep(value);
   }
-  // A scene value the panel shows and sets (kept across rewind too).
-  void addParameter(SceneParameter parameter);
+  // A scene's knob, declared once (utils/Knob.h): its option, key, panel
+  // row and rewind follow from the declaration. Returns the stored knob.
+  Knob& declare(Knob knob);
+  // A scene key that takes over a shared one (R): binding a key twice otherwise fails at start-up.
+  void rebindKey(SDL_Keycode key, std::string keyName, std::string description,
+                 std::function<void(int direction)> action);
 
   // Objects are owned here; scenes keep raw pointers, valid until the next reset.
   template <class T, class... Args>
@@ -221,6 +235,8 @@ class AbstractWindow {
 
   std::mt19937& random() { return random_; }
   const RunOptions& options() const { return options_; }
+  // Measure every step's wall time (lastStepWallSeconds()); off by default.
+  void timeSteps() { timeSteps_ = true; }
   // Prints a line on stderr and keeps it for the HUD for a few seconds.
   void notify(const std::string& message);
 
@@ -235,9 +251,11 @@ class AbstractWindow {
   void bindSharedKeys();
   void bindTimeAndViewKeys();
   void bindSetting(const SettingSpec& spec);
+  void changeKnob(Knob& knob, double value, const std::string& source);
   static bool settingKey(SDL_Keycode key);
   void reportSetting(const SettingChange& change);
   void recoverFrom(const std::string& failure);
+  bool stateSuspicious() const;  // the cheap test behind stateProblem()
   std::string stateProblem() const;
   std::string settingsInForce() const;
 
@@ -251,6 +269,8 @@ class AbstractWindow {
   Rewind rewind_;
   MouseDrag drag_;
   SceneParameters parameters_;
+  std::deque<Knob> knobs_;
+  std::vector<Knob*> panelKnobs_;  // parameters_'s rows, in order
   RunLog runLog_;
   std::vector<std::unique_ptr<AbstractObject>> objects_;
   std::mt19937 random_;
@@ -267,10 +287,13 @@ class AbstractWindow {
   int contactsThisStep_ = 0;
   double lastStepWallSeconds_ = 0.0;
   double collideWallSeconds_ = 0.0;
+  bool profileCollision_ = false;
+  bool timeSteps_ = false;
   double wallSeconds_ = 0.0;  // real time spent in this run (headless) or its frames (window)
   std::string blowUpReason_;
   HudMode hudMode_ = HudMode::Compact;
   bool quitRequested_ = false;
+  int switchRequest_ = 0;  // +1 next scene, -1 previous, 0 none
   bool mouseLook_ = false;
   std::string notice_, failure_;
   long long failures_ = 0;  // blow-ups and ODE errors a window recovered from

@@ -20,9 +20,38 @@ void AbstractWindow::bindViewKey(SDL_Keycode key, std::string keyName, std::stri
   keys_.bind({key, std::move(keyName), std::move(description), std::move(action), false});
 }
 
-void AbstractWindow::addParameter(SceneParameter parameter) {
-  rewind_.keep(*parameter.value);
-  parameters_.add(std::move(parameter));
+void AbstractWindow::rebindKey(SDL_Keycode key, std::string keyName, std::string description,
+                               std::function<void(int)> action) {
+  keys_.replace({key, std::move(keyName), std::move(description), std::move(action), true});
+}
+
+Knob& AbstractWindow::declare(Knob declared) {
+  knobs_.push_back(std::move(declared));
+  Knob& knob = knobs_.back();  // a deque keeps it in place as more are declared
+  if (knob.count)
+    rewind_.keep(*knob.count);
+  else
+    rewind_.keep(*knob.value);
+  if (knob.panel && knob.value) {
+    parameters_.add({knob.label, knob.unit, knob.value, knob.offAtZero ? 0.0 : knob.min, knob.max, knob.logScale});
+    panelKnobs_.push_back(&knob);
+  }
+  if (knob.key != SDLK_UNKNOWN) {
+    Knob* stepped = &knob;
+    bindKey(knob.key, knob.keyName, knob.keyHelp,
+            [this, stepped](int direction) { changeKnob(*stepped, stepped->next(direction), ""); });
+  }
+  return knob;
+}
+
+// Every knob change, from its key, the panel or a replay, ends here.
+void AbstractWindow::changeKnob(Knob& knob, double value, const std::string& source) {
+  const std::string change = knob.set(value);
+  if (change.empty()) return;
+  if (!source.empty()) logAction(source + change);
+  if (knob.rebuilds) reset();  // a new value is a new experiment
+  notify((source.empty() ? "" : timeStamp(simulatedTime_) + ": ") + change + (knob.rebuilds ? "; scene rebuilt" : ""));
+  onKnobChanged(knob);
 }
 
 bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
@@ -94,14 +123,9 @@ void AbstractWindow::applyEvent(const TimelineEvent& event) {
     case TimelineEvent::Kind::Setting:
       reportSetting(assignSetting(settings_, static_cast<SettingId>(event.index), event.value));
       break;
-    case TimelineEvent::Kind::Parameter: {
-      const std::string change = parameters_.set(event.index, event.value);
-      if (change.empty()) break;
-      logAction("panel: " + change);
-      notify(timeStamp(simulatedTime_) + ": " + change);
-      onParameterChanged(parameters_.all()[event.index]);
+    case TimelineEvent::Kind::Parameter:
+      changeKnob(*panelKnobs_[event.index], event.value, "panel: ");
       break;
-    }
   }
 }
 
@@ -143,6 +167,15 @@ void AbstractWindow::bindSharedKeys() {
     applySettings(change);
   });
   for (const SettingSpec& spec : settingsTable()) bindSetting(spec);
+}
+
+void AbstractWindow::offerSceneSwitch(const std::string& sceneList) {
+  const auto ask = [this](int direction) {
+    switchRequest_ = direction;
+    quitRequested_ = true;
+  };
+  bindViewKey(SDLK_PAGEDOWN, "PageDown", "next scene of " + sceneList, [ask](int) { ask(+1); });
+  bindViewKey(SDLK_PAGEUP, "PageUp", "previous scene", [ask](int) { ask(-1); });
 }
 
 PickHit AbstractWindow::pickAt(const double origin[3], const double direction[3]) const {

@@ -187,6 +187,49 @@ void addWindowOptions(CLI::App& app, RunOptions& options) {
   app.add_flag("!--no-panel", options.panel, "window: start with the control panel hidden (Tab shows it)");
 }
 
+void addKnobOptions(CLI::App& app, std::deque<Knob>& knobs) {
+  for (Knob& knob : knobs) {
+    if (knob.option.empty()) continue;
+    Knob* target = &knob;
+    const std::string range = knob.rangeText();
+    CLI::Option* option = app.add_option_function<double>(
+        knob.option, [target](double value) { target->set(value); }, knob.help);
+    option->type_name(knob.kind == KnobKind::Integer ? "INT" : "FLOAT");
+    option->default_str(formatNumber(knob.get()));
+    option->check(CLI::Validator(
+        [target, range](std::string& text) -> std::string {
+          double value = 0;
+          if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+          if (!std::isfinite(value)) return "'" + text + "' is not a finite number";
+          if (!target->accepts(value))
+            return "'" + text + "' is outside " + range +
+                   (target->kind == KnobKind::Integer ? " or not a whole number" : "");
+          return {};
+        },
+        "in " + range));
+    if (knob.kind == KnobKind::Integer) option->transform(decimalInteger());
+    knob.parsed = option;
+  }
+}
+
+void checkKnobs(const CLI::App& app, const std::deque<Knob>& knobs, double step) {
+  for (const Knob& knob : knobs) {
+    if (!knob.parsed || knob.parsed->count() == 0) continue;
+    if (!knob.companion.empty() && app.count(knob.companion) == 0)
+      throw UsageError(knob.option + ": only used with " + knob.companion);
+    if (knob.kind == KnobKind::Interval && !(knob.offAtZero && knob.get() == 0))
+      refuseBelowStep(knob.option.c_str(), knob.get(), step);
+  }
+}
+
+std::string settingsJson(const WorldSettings& settings, const std::deque<Knob>& knobs) {
+  std::string text = "[\n";
+  for (const SettingSpec& spec : settingsTable()) text += "  " + settingJson(spec, settings) + ",\n";
+  for (size_t i = 0; i < knobs.size(); ++i) text += "  " + knobs[i].json() + (i + 1 < knobs.size() ? ",\n" : "\n");
+  if (knobs.empty()) text.erase(text.size() - 2, 1);  // the last setting's comma
+  return text + "]\n";
+}
+
 void rejectEmptyValues(CLI::App& app) {
   const CLI::Validator nonEmpty(
       [](std::string& text) -> std::string { return text.empty() ? "an empty value is not allowed" : ""; }, "");

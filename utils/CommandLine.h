@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <functional>
+#include <deque>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,6 +40,16 @@ double settingNumber(SettingId id, const std::string& text);
 void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& settings);
 // --max-frame-time, --max-fps, --no-vsync, --text-size, --hud, --no-panel.
 void addWindowOptions(CLI::App& app, RunOptions& options);
+
+// An option for every knob that names one, checked against the knob's
+// range (utils/Knob.h), default shown in --help.
+void addKnobOptions(CLI::App& app, std::deque<Knob>& knobs);
+// After parsing: an interval knob given below one step is refused (a row,
+// spawn or throw that no step separates), and a knob given without the flag
+// it only works with. Throws UsageError naming the option.
+void checkKnobs(const CLI::App& app, const std::deque<Knob>& knobs, double step);
+// --list-settings: the world settings and the scene's knobs as a JSON array.
+std::string settingsJson(const WorldSettings& settings, const std::deque<Knob>& knobs);
 
 // Makes every option that takes a value refuse an empty one ("--seed=").
 // Call after every option is added.

@@ -1,13 +1,23 @@
 #include "KeyTable.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace odelab {
 
 void KeyTable::bind(KeyBinding binding) {
+  if (const KeyBinding* earlier = find(binding.key))
+    throw std::logic_error("key " + binding.keyName + " is bound twice: \"" + earlier->description + "\" and \"" +
+                           binding.description + "\"");
+  bindings_.push_back(std::move(binding));
+}
+
+void KeyTable::replace(KeyBinding binding) {
   const SDL_Keycode key = binding.key;
-  bindings_.erase(std::remove_if(bindings_.begin(), bindings_.end(), [key](const KeyBinding& b) { return b.key == key; }),
-                  bindings_.end());
+  const auto earlier =
+      std::find_if(bindings_.begin(), bindings_.end(), [key](const KeyBinding& b) { return b.key == key; });
+  if (earlier == bindings_.end()) throw std::logic_error("key " + binding.keyName + ": nothing bound to replace");
+  bindings_.erase(earlier);
   bindings_.push_back(std::move(binding));
 }
 

@@ -21,9 +21,11 @@ struct KeyBinding {
 
 class KeyTable {
  public:
-  // A later binding replaces an earlier one on the same key (a scene's
-  // replaces a shared one).
+  // A key bound twice is a mistake in the scene: std::logic_error, at start-up.
   void bind(KeyBinding binding);
+  // Takes over a key bound already (a scene's R for the shared one);
+  // std::logic_error when the key has no binding to take over.
+  void replace(KeyBinding binding);
   const KeyBinding* find(SDL_Keycode key) const;
   const std::vector<KeyBinding>& bindings() const { return bindings_; }
   // "F3           ERP up by ..." for every binding, in order.

@@ -4,24 +4,36 @@
 #include <stdexcept>
 
 #include "FormatValue.h"
+#include "Knob.h"
 
 namespace odelab {
 
 const std::vector<SettingSpec>& settingsTable() {
+  using S = WorldSettings;
+  using P = ParameterStepper;
   static const std::vector<SettingSpec> table{
       {SettingId::Erp, "ERP", "--erp", "", SDLK_F3, "F3", "ERP up by the increment (Shift: down), within [0, 1]",
-       "global error reduction parameter", &ranges::ERP, false, false},
+       "global error reduction parameter", &ranges::ERP, false, false, [](const S& s) { return s.erp; },
+       [](S& s, double v) { s.erp = v; }, [](S& s, int d, const P& p) { p.stepErp(s, d); }},
       {SettingId::Cfm, "CFM", "--cfm", "", SDLK_F4, "F4", "CFM up by the increment (Shift: down), within [0, 1]",
-       "global constraint force mixing", &ranges::CFM, true, false},
+       "global constraint force mixing", &ranges::CFM, true, false, [](const S& s) { return s.cfm; },
+       [](S& s, double v) { s.cfm = v; }, [](S& s, int d, const P& p) { p.stepCfm(s, d); }},
       {SettingId::Iterations, "iterations", "--iterations", "", SDLK_F6, "F6",
        "QuickStep iterations up (Shift: down): 1, 2, 3, 5, 8, 10, 15, 20, 30, 50 ... 1000", "QuickStep iterations",
-       &ranges::ITERATIONS, true, true},
+       &ranges::ITERATIONS, true, true, [](const S& s) { return double(s.iterations); },
+       [](S& s, double v) { s.iterations = static_cast<int>(std::lround(v)); },
+       [](S& s, int d, const P&) { P::stepIterations(s, d); }},
       {SettingId::Sor, "SOR w", "--sor", "", SDLK_F7, "F7", "SOR relaxation w up by 0.05 (Shift: down), within [0.05, 1.95]",
-       "QuickStep SOR over-relaxation w", &ranges::SOR, false, false},
+       "QuickStep SOR over-relaxation w", &ranges::SOR, false, false, [](const S& s) { return s.sor; },
+       [](S& s, double v) { s.sor = v; }, [](S& s, int d, const P&) { P::stepSor(s, d); }},
       {SettingId::Step, "step", "--step", "s", SDLK_F8, "F8", "step size up (Shift: down): 1e-5, 2e-5, 5e-5 ... 0.1 s",
-       "simulation step size in seconds", &ranges::STEP, true, false},
+       "simulation step size in seconds", &ranges::STEP, true, false, [](const S& s) { return s.step; },
+       [](S& s, double v) { s.step = v; }, [](S& s, int d, const P&) { P::stepStepSize(s, d); }},
       {SettingId::Solver, "solver", "--solver", "", SDLK_F9, "F9", "switch solver: dWorldQuickStep / dWorldStep",
-       "quick (dWorldQuickStep) or step (dWorldStep)", nullptr, false, true},
+       "quick (dWorldQuickStep) or step (dWorldStep)", nullptr, false, true,
+       [](const S& s) { return s.solver == Solver::QuickStep ? 0.0 : 1.0; },
+       [](S& s, double v) { s.solver = v < 0.5 ? Solver::QuickStep : Solver::WorldStep; },
+       [](S& s, int, const P&) { s.solver = s.solver == Solver::QuickStep ? Solver::WorldStep : Solver::QuickStep; }},
   };
   return table;
 }
@@ -32,35 +44,31 @@ const SettingSpec& settingSpec(SettingId id) {
   throw std::logic_error("settingSpec: no such setting");
 }
 
-double settingValue(const WorldSettings& s, SettingId id) {
-  switch (id) {
-    case SettingId::Erp: return s.erp;
-    case SettingId::Cfm: return s.cfm;
-    case SettingId::Iterations: return s.iterations;
-    case SettingId::Sor: return s.sor;
-    case SettingId::Step: return s.step;
-    case SettingId::Solver: return s.solver == Solver::QuickStep ? 0 : 1;
-  }
-  return 0;
-}
+double settingValue(const WorldSettings& s, SettingId id) { return settingSpec(id).get(s); }
 
 void setSettingValue(WorldSettings& s, SettingId id, double value) {
   if (std::isnan(value)) return;
   const SettingSpec& spec = settingSpec(id);
-  if (spec.range) value = spec.range->clamp(value);
-  switch (id) {
-    case SettingId::Erp: s.erp = value; break;
-    case SettingId::Cfm: s.cfm = value; break;
-    case SettingId::Iterations: s.iterations = static_cast<int>(std::lround(value)); break;
-    case SettingId::Sor: s.sor = value; break;
-    case SettingId::Step: s.step = value; break;
-    case SettingId::Solver: s.solver = value < 0.5 ? Solver::QuickStep : Solver::WorldStep; break;
-  }
+  spec.set(s, spec.range ? spec.range->clamp(value) : value);
 }
 
 std::string settingText(SettingId id, double value) {
   if (id == SettingId::Solver) return value < 0.5 ? "quick" : "step";
   return formatValue(value);
+}
+
+std::string settingJson(const SettingSpec& spec, const WorldSettings& settings) {
+  const double value = settingValue(settings, spec.id);
+  std::string text = "{\"name\": " + jsonString(spec.range ? spec.range->name : "solver") +
+                     ", \"option\": " + jsonString(spec.option) + ", \"key\": " + jsonString(spec.keyName);
+  if (spec.range)
+    text += ", \"min\": " + jsonNumber(spec.range->min) + ", \"max\": " + jsonNumber(spec.range->max) +
+            ", \"unit\": " + jsonString(spec.unit) + ", \"default\": " + jsonNumber(value) +
+            ", \"kind\": " + jsonString(spec.integer ? "integer" : "real");
+  else
+    text += ", \"choices\": [\"quick\", \"step\"], \"unit\": \"\", \"default\": " + jsonString(settingText(spec.id, value)) +
+            ", \"kind\": \"choice\"";
+  return text + ", \"off_at_zero\": false, \"only_with\": \"\"}";
 }
 
 std::string SettingChange::text() const {
@@ -69,14 +77,7 @@ std::string SettingChange::text() const {
 
 SettingChange stepSetting(WorldSettings& s, SettingId id, int direction, const ParameterStepper& stepper) {
   SettingChange change{id, settingValue(s, id), 0};
-  switch (id) {
-    case SettingId::Erp: stepper.stepErp(s, direction); break;
-    case SettingId::Cfm: stepper.stepCfm(s, direction); break;
-    case SettingId::Iterations: ParameterStepper::stepIterations(s, direction); break;
-    case SettingId::Sor: ParameterStepper::stepSor(s, direction); break;
-    case SettingId::Step: ParameterStepper::stepStepSize(s, direction); break;
-    case SettingId::Solver: s.solver = s.solver == Solver::QuickStep ? Solver::WorldStep : Solver::QuickStep; break;
-  }
+  settingSpec(id).step(s, direction, stepper);
   change.to = settingValue(s, id);
   return change;
 }

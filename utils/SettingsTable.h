@@ -26,6 +26,11 @@ struct SettingSpec {
   const ParameterRange* range;  // nullptr for the solver (a choice of two)
   bool logScale;                // the panel's slider: CFM and the step span decades
   bool integer;
+  // The field in WorldSettings, as a number (the solver: 0 QuickStep, 1 dWorldStep).
+  double (*get)(const WorldSettings& settings);
+  void (*set)(WorldSettings& settings, double value);  // value already clamped
+  // One F-key press: the F2 increment (ERP, CFM), the ladder, or the other solver.
+  void (*step)(WorldSettings& settings, int direction, const ParameterStepper& stepper);
 };
 
 const std::vector<SettingSpec>& settingsTable();
@@ -37,6 +42,10 @@ double settingValue(const WorldSettings& settings, SettingId id);
 void setSettingValue(WorldSettings& settings, SettingId id, double value);
 // "0.2", "20", "quick".
 std::string settingText(SettingId id, double value);
+
+// {"name": "erp", "option": "--erp", "key": "F3", "min": 0, "max": 1, "unit": "", "default": 0.2}
+// (the solver: "choices" in place of min and max).
+std::string settingJson(const SettingSpec& spec, const WorldSettings& settings);
 
 // What one action did to a setting.
 struct SettingChange {

@@ -1,7 +1,9 @@
 #include "TestMain.h"
 
 #include <cstdlib>
+#include <exception>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "CommandLine.h"
@@ -76,37 +78,78 @@ int afterWindow(AbstractWindow& scene, const RunOptions& options, int status) {
   return status;
 }
 
-int run(AbstractWindow& scene, const RunOptions& options) {
+int run(AbstractWindow& first, const RunOptions& options, SceneSwitching* switching) {
   if (options.headless) {
-    scene.initialize(options);
-    return scene.runHeadless();
+    first.initialize(options);
+    return first.runHeadless();
   }
   // The window builds the scene itself once the window, shaders, font and
   // --events script are ready, so a missing resource leaves no output file.
   // The options by value: in a browser the callback runs after this call.
-  return runWindow(scene, options, [&scene, options](int status) { return afterWindow(scene, options, status); });
+  if (!switching)
+    return runWindow(first, options, [&first, options](int status) { return afterWindow(first, options, status); });
+  AbstractWindow* current = &first;
+  // A scene switched to is torn down here, before ODE closes (the runner
+  // tears down the first); not while an error unwinds (see runScene).
+  struct TearDownLast {
+    AbstractWindow& first;
+    AbstractWindow*& current;
+    ~TearDownLast() {
+      if (current != &first && std::uncaught_exceptions() == 0) current->shutdown();
+    }
+  } tearDown{first, current};
+  return runWindowSwitching(
+      first, options,
+      [&](int direction) -> AbstractWindow& {
+        current->endOutputs("");
+        current->shutdown();
+        current = &switching->next(direction, options);
+        return *current;
+      },
+      [&](int status) { return afterWindow(*current, options, status); });
 }
 
 }  // namespace
 
-int runScene(AbstractWindow& scene, const char* description, int argc, char** argv) {
+int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* switching) {
+  std::unique_ptr<AbstractWindow> scene;
+  try {
+    scene = entry.make();
+    if (switching) scene->offerSceneSwitch(switching->sceneList());
+  } catch (const std::logic_error& error) {
+    std::cerr << "error: scene declaration: " << error.what() << '\n';
+    return exit_code::RUNTIME_ERROR;
+  }
+  return runScene(*scene, entry.description, argc, argv, switching);
+}
+
+int runScene(AbstractWindow& scene, const char* description, int argc, char** argv, SceneSwitching* switching) {
   RunOptions options;
   CLI::App app{std::string(scene.title()) + "\n" + description};
   app.get_formatter()->column_width(34);
   cli::addCommonOptions(app, options, scene.settings());
   scene.addOptions(app);
+  cli::addKnobOptions(app, scene.knobs());
   scene.addContactOptions(app);
+  bool listSettings = false;
+  app.add_flag("--list-settings", listSettings,
+               "print every setting and scene knob as JSON (name, option, key, min, max, unit, default) and exit");
   cli::rejectEmptyValues(app);
   app.footer(cli::keysHelp(scene));
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     cli::validateRunOptions(options);
     cli::refuseOwnOutputs(options, scene.outputFileNames());
     cli::refuseRunShorterThanStep(options, scene.settings().step);
+    cli::checkKnobs(app, scene.knobs(), scene.settings().step);
     scene.setRunOptions(options);
     scene.checkOptions();
   });
   if (refused) return *refused;
 
+  if (listSettings) {
+    std::cout << cli::settingsJson(scene.settings(), scene.knobs());
+    return exit_code::OK;
+  }
   installStopSignalHandlers();
   OdeLibrary ode;
   if (!dCheckConfiguration("ODE_double_precision")) {
@@ -116,7 +159,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   int status = exit_code::OK;
   RunEnding ending(scene);
   try {
-    status = run(scene, options);
+    status = run(scene, options, switching);
   } catch (const OdeError& error) {
     // ODE's state is not to be trusted after its own error: tearing the
     // world down can raise another one from a destructor. Leave without

@@ -1,19 +1,30 @@
 #pragma once
 
 #include "AbstractWindow.h"
+#include "SceneRegistry.h"
 
 namespace odelab {
 
 // Parses the command line (common options plus the scene's), initialises ODE
 // with its handlers, and runs the scene headless or in a window. Returns the
 // process exit status (utils/ExitCodes.h).
-int runScene(AbstractWindow& scene, const char* description, int argc, char** argv);
+// The launcher's window goes from scene to scene (Page Down / Page Up)
+// without leaving the window: next() makes the scene that follows the one
+// just ended, with the same options. The last one on screen reports.
+class SceneSwitching {
+ public:
+  virtual ~SceneSwitching() = default;
+  virtual AbstractWindow& next(int direction, const RunOptions& options) = 0;
+  virtual std::string sceneList() const = 0;  // for the keys' help: "test0 ... test10"
+};
+
+// With `switching` (the launcher), a window run may go on to other scenes.
+int runScene(AbstractWindow& scene, const char* description, int argc, char** argv,
+             SceneSwitching* switching = nullptr);
 
 // Every test's main(): `int main(int argc, char** argv) { return odelab::runTest<Test1>(argc, argv, "..."); }`
-template <class Scene>
-int runTest(int argc, char** argv, const char* description) {
-  Scene scene;
-  return runScene(scene, description, argc, argv);
-}
+// Makes the registry's scene and runs it. A scene that declares a key twice
+// fails here, at start-up: "error: scene declaration: ...", status 1.
+int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* switching = nullptr);
 
 }  // namespace odelab

@@ -24,7 +24,7 @@ odelab_check(test0_count_bounded_by_lifetime test0
 # show that the program takes the shared options (common_options.cmake
 # checks those in full, through this program).
 odelab_refusals(test0 refuses_bad_options headless 2
-  --spawn-interval=<empty> --spawn-interval=0 --spawn-interval=-1 --spawn-interval=nan --spawn-interval=inf
+  --spawn-interval=<empty> --spawn-interval=0.001 --spawn-interval=-1 --spawn-interval=nan --spawn-interval=inf
   --spawn-interval=1e400 --spawn-interval=abc
   --spawn-count=<empty> --spawn-count=-1 --spawn-count=1.5 --spawn-count=abc --spawn-count=99999999999999999999
   --spawn-shapes=<empty> --spawn-shapes=cube --spawn-shapes=BOX --spawn-shapes=1
@@ -32,6 +32,10 @@ odelab_refusals(test0 refuses_bad_options headless 2
 # The scene draws its sizes from --seed: the same seed gives the same run,
 # another seed another one.
 odelab_determinism(test0 OTHER_SEED 2 --seconds 5 --spawn-interval 0.2)
+# --spawn-interval 0 turns timed spawning off, headless too.
+odelab_check(test0_spawn_interval_zero_is_off test0
+  EXPECT spawned==0
+  ARGS --headless --seconds 2 --spawn-interval 0)
 # A window that cannot start writes nothing (the framework's checks, through test0).
 odelab_window_refusals(test0)
 

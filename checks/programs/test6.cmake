@@ -22,11 +22,11 @@ odelab_check(test6_max_angular_speed_caps_tilt_rate test6
   EXPECT fell==1 max_tilt_degrees<=5.73 non_finite==0
   ARGS --headless --seconds 10 --max-angular-speed 0.01)
 
-# The speed cap positive and finite; the start tilt finite, from 0 to below
+# The speed cap 0 (none) or from 0.001 rad/s, finite; the start tilt finite, from 0 to below
 # the 1 degree upright band. Then one common option and an unknown one (the
 # shared options: common_options.cmake).
 odelab_refusals(test6 refuses_bad_options headless 2
-  --max-angular-speed=<empty> --max-angular-speed=0 --max-angular-speed=-1 --max-angular-speed=nan
+  --max-angular-speed=<empty> --max-angular-speed=0.0005 --max-angular-speed=-1 --max-angular-speed=nan
   --max-angular-speed=inf --max-angular-speed=abc
   --tilt-degrees=<empty> --tilt-degrees=-0.1 --tilt-degrees=1 --tilt-degrees=nan --tilt-degrees=inf
   --tilt-degrees=abc

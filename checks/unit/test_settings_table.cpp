@@ -3,7 +3,11 @@
 #include <set>
 #include <string>
 
-#include "SceneParameters.h"
+#include <cmath>
+#include <stdexcept>
+
+#include "KeyTable.h"
+#include "Knob.h"
 #include "SettingsTable.h"
 
 using namespace odelab;
@@ -43,13 +47,54 @@ TEST(SettingsTable, TheSolverIsAChoiceOfTwo) {
   EXPECT_EQ(settings.solver, Solver::QuickStep);
 }
 
-TEST(SceneParameters, SetClampsAndSaysWhatChanged) {
+TEST(Knob, SetClampsAndSaysWhatChanged) {
   double mass = 5000;
-  SceneParameters parameters;
-  parameters.add({"big cube mass", "kg", &mass, 1.0, 1e6, true});
-  EXPECT_EQ(parameters.set(0, 2e6), "big cube mass 5000 -> 1e+06 kg");
+  Knob knob = Knob::real("big_mass", "big cube mass", "kg", mass, 1.0, 1e6);
+  EXPECT_EQ(knob.set(2e6), "big cube mass 5000 -> 1e+06 kg");
   EXPECT_DOUBLE_EQ(mass, 1e6);
-  EXPECT_EQ(parameters.set(0, 1e6), "");
-  EXPECT_EQ(parameters.set(1, 3.0), "");  // no such parameter
-  EXPECT_EQ(parameters.set(0, NAN), "");
+  EXPECT_EQ(knob.set(1e6), "");
+  EXPECT_EQ(knob.set(NAN), "");
+}
+
+TEST(Knob, AcceptsItsRangeAndNothingPastIt) {
+  double interval = 0;
+  Knob knob = Knob::interval("spawn_interval", "spawn interval", interval, 1e-6, 10).zeroIsOff();
+  EXPECT_TRUE(knob.accepts(0));  // off
+  EXPECT_TRUE(knob.accepts(1e-6));
+  EXPECT_EQ(knob.rangeText(), "0 (off) or [1e-06, 10]");
+  EXPECT_TRUE(knob.accepts(10));
+  EXPECT_FALSE(knob.accepts(5e-7));
+  EXPECT_FALSE(knob.accepts(10.000001));
+  EXPECT_FALSE(knob.accepts(NAN));
+  EXPECT_FALSE(knob.accepts(INFINITY));
+  int count = 3;
+  Knob whole = Knob::integer("dominoes", "dominoes", count, 2, 1000);
+  EXPECT_TRUE(whole.accepts(2));
+  EXPECT_FALSE(whole.accepts(2.5));
+  EXPECT_FALSE(whole.accepts(1));
+  EXPECT_EQ(whole.set(7.6), "dominoes 3 -> 8");
+}
+
+TEST(Knob, KeyWalksTheLadderWithinTheRange) {
+  double mass = 5000;
+  Knob knob = Knob::real("big_mass", "big cube mass", "kg", mass, 1.0, 1e6).withKey(SDLK_F5, "F5", "", {500, 5000, 10000});
+  EXPECT_DOUBLE_EQ(knob.next(+1), 10000);
+  EXPECT_DOUBLE_EQ(knob.next(-1), 500);
+}
+
+TEST(Knob, ListsItselfAsJson) {
+  double mass = 5000;
+  Knob knob = Knob::real("big_mass", "big cube mass", "kg", mass, 1.0, 1e9).withOption("--big-mass", "");
+  EXPECT_EQ(knob.json(),
+            "{\"name\": \"big_mass\", \"option\": \"--big-mass\", \"key\": \"\", \"min\": 1, \"max\": 1e+09, "
+            "\"unit\": \"kg\", \"default\": 5000, \"kind\": \"real\", \"off_at_zero\": false, \"only_with\": \"\"}");
+}
+
+TEST(KeyTable, AKeyBoundTwiceIsAnError) {
+  KeyTable keys;
+  keys.bind({SDLK_r, "R", "reset", [](int) {}, true});
+  EXPECT_THROW(keys.bind({SDLK_r, "R", "again", [](int) {}, true}), std::logic_error);
+  keys.replace({SDLK_r, "R", "the scene's reset", [](int) {}, true});
+  EXPECT_EQ(keys.find(SDLK_r)->description, "the scene's reset");
+  EXPECT_THROW(keys.replace({SDLK_q, "Q", "nothing to replace", [](int) {}, true}), std::logic_error);
 }

@@ -338,6 +338,12 @@ std::vector<ScriptEvent> loadScript(const RunOptions& options) {
 void checkWindowOptions(const RunOptions& options) { loadScript(options); }
 
 int runWindow(AbstractWindow& scene, const RunOptions& options, const std::function<int(int)>& finish) {
+  return runWindowSwitching(scene, options, nullptr, finish);
+}
+
+int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
+                       const std::function<AbstractWindow&(int direction)>& next,
+                       const std::function<int(int)>& finish) {
   const ResourceLookup shaders = findShaderDir(options.shaderDir);
   if (!shaders.ok()) {
     std::fprintf(stderr, "error: shaders not found; tried: %s\n", shaders.triedList().c_str());
@@ -352,27 +358,25 @@ int runWindow(AbstractWindow& scene, const RunOptions& options, const std::funct
   // exit status 2).
   std::vector<ScriptEvent> script = loadScript(options);
 
+  AbstractWindow* scene = &first;  // the scene on screen
   try {
     // Made in this order so GL objects go before the context they live in.
-    auto window = std::make_unique<GlWindow>(scene.title(), options.width, options.height, options.vsync);
+    auto window = std::make_unique<GlWindow>(first.title(), options.width, options.height, options.vsync);
     auto views = std::make_unique<Views>(shaders.found, font.found, *window, options);
     views->renderer.setSoftware(window->software());
     std::printf("renderer: %s%s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
                 window->software() ? " (software: no multisampling, shadows filtered over one texel)" : "");
-    // Built only now that the window can run, so that a refused window run
-    // (no display, unusable shaders or font) leaves no output file behind;
-    // a runner that built it already is fine too.
-    if (!scene.world()) scene.initialize(options);
+    // One script for the whole window; after a switch its frame numbers
+    // count the new scene's frames from 1.
     auto player = std::make_unique<EventPlayer>(std::move(script), window->sdlWindow());
 #ifdef __EMSCRIPTEN__
+    // Built only now that the window can run, so that a refused window run
+    // (no display, unusable shaders or font) leaves no output file behind.
+    if (!scene->world()) scene->initialize(options);
     // The frames outlive this call and the caller's options: they keep a
-    // copy for the page's life.
+    // copy for the page's life. A page runs one scene (no switching).
     const RunOptions& frameOptions = *new RunOptions(options);
-#else
-    const RunOptions& frameOptions = options;
-#endif
-    auto loop = std::make_unique<FrameLoop>(scene, frameOptions, *window, *views, *player);
-#ifdef __EMSCRIPTEN__
+    auto loop = std::make_unique<FrameLoop>(*scene, frameOptions, *window, *views, *player);
     // The browser calls the frame back; this function never returns, and
     // what the frames use lives as long as the page.
     FrameLoop* frames = loop.get();
@@ -382,8 +386,20 @@ int runWindow(AbstractWindow& scene, const RunOptions& options, const std::funct
                          frames->end();
                          return finish(exit_code::OK);
                        });
+    return exit_code::OK;
 #else
-    return finish(loop->run());
+    (void)next;
+    for (;;) {
+      // Built only now that the window can run, so that a refused window run
+      // (no display, unusable shaders or font) leaves no output file behind;
+      // a runner that built it already is fine too.
+      if (!scene->world()) scene->initialize(options);
+      FrameLoop loop(*scene, options, *window, *views, *player);
+      const int status = loop.run();
+      if (!next || scene->switchRequest() == 0 || stopSignal() != 0) return finish(status);
+      scene = &next(scene->switchRequest());
+      SDL_SetWindowTitle(window->sdlWindow(), scene->title().c_str());
+    }
 #endif
   } catch (const NoDisplayError& error) {
     std::fprintf(stderr, "error: cannot open a window (%s); set DISPLAY or run with --headless\n", error.what());
@@ -395,7 +411,7 @@ int runWindow(AbstractWindow& scene, const RunOptions& options, const std::funct
     // A frame that cannot be recorded (a full disk), a GL failure: the
     // output files name it as the reason the run was cut short.
     std::fprintf(stderr, "error: %s\n", error.what());
-    scene.endOutputs(error.what());
+    scene->endOutputs(error.what());
     return finish(exit_code::RUNTIME_ERROR);
   }
 }

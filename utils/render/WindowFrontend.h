@@ -21,6 +21,16 @@ namespace odelab {
 // what it returns.
 int runWindow(AbstractWindow& scene, const RunOptions& options, const std::function<int(int)>& finish);
 
+// The launcher's window: runs `first` as runWindow does, and when the scene
+// ends asking for another (AbstractWindow::switchRequest), runs the one
+// `next(direction)` gives in the same window, built with the same options.
+// `next` ends the scene it replaces; it returns the scene now running.
+// `finish` gets the status as with runWindow. A browser page runs one scene:
+// there `next` is not used.
+int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
+                       const std::function<AbstractWindow&(int direction)>& next,
+                       const std::function<int(int)>& finish);
+
 // Reads and checks the --events script only, throwing UsageError like
 // runWindow. For the runner to call before the scene is built, so that a bad
 // script stops the run before any output file is written.

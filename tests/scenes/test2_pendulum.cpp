@@ -18,7 +18,7 @@
 #include "CommandLine.h"
 #include "FormatValue.h"
 #include "MeasurementLog.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/FixedIntervalSampler.h"
 #include "shared/PendulumRig.h"
 
@@ -83,44 +83,46 @@ class Pendulum : public PendulumScene {
  public:
   Pendulum() : PendulumScene("test2 - Pendulum", settingsForThisScene()) {
     // R as everywhere, and it says what happens to the output file.
-    bindKey(SDLK_r, "R", "reset the pendulum to horizontal and rewrite Test2_output.txt", [this](int) {
+    rebindKey(SDLK_r, "R", "reset the pendulum to horizontal and rewrite Test2_output.txt", [this](int) {
       reset();
       notify("scene reset; Test2_output.txt rewritten");
     });
+    // A row interval given below the step is refused (the default with a
+    // large --step gives a row every step).
+    declare(Knob::interval("sample_interval", "row interval", sampleInterval_, 1e-6, 3600.0)
+                .withOption("--sample-interval", "simulated seconds between rows of Test2_output.txt")
+                .hidden());
+    // The rig's shape is not in the thesis; it sets how much of the kinetic
+    // energy is spin about the centre of mass. Each range keeps the bob above
+    // the ground (anchor at 7 m) with the others at their defaults, and ODE's
+    // mass valid (a radius or a mass that underflows fails dMassCheck).
+    declare(Knob::real("rod_length", "rod length", "m", shape_.rodLength, 0.01, 6.0)
+                .withOption("--rod-length", "rod length, m (proposed)")
+                .hidden());
+    declare(Knob::real("rod_thickness", "rod thickness", "m", shape_.rodThickness, 0.001, 1.0)
+                .withOption("--rod-thickness", "rod thickness (square section), m (proposed)")
+                .hidden());
+    declare(Knob::real("rod_mass", "rod mass", "kg", shape_.rodMass, 0.001, 1e6)
+                .withOption("--rod-mass", "rod mass, kg (proposed)")
+                .hidden());
+    declare(Knob::real("bob_radius", "bob radius", "m", shape_.bobRadius, 0.001, 1.0)
+                .withOption("--bob-radius", "bob radius, m (proposed; its centre is at rod length + radius)")
+                .hidden());
   }
 
   void addOptions(CLI::App& app) override {
-    sampleOption_ = app.add_option("--sample-interval", sampleInterval_,
-                   "simulated seconds between rows of Test2_output.txt")
-        ->check(cli::positive(3600.0))
-        ->capture_default_str();
     // The thesis does not say how its kinetic energy was computed (issue 12):
     // a total without the spin about the centre of mass dips at the bottom of
     // every swing, the shape the thesis saw.
     app.add_flag("--no-rotational-energy", withoutRotation_,
-                 "leave the rotational kinetic energy 0.5 w^T I w out of the kinetic and total energy "
-                 "(0.5 m v^2 only)");
-    // The rig's shape is not in the thesis either; it sets how much of the
-    // kinetic energy is spin about the centre of mass.
-    app.add_option("--rod-length", shape_.rodLength, "rod length, m (proposed)")
-        ->check(cli::positive(6.5))  // the bob stays above the ground: anchor at 7 m
-        ->capture_default_str();
-    app.add_option("--rod-thickness", shape_.rodThickness, "rod thickness (square section), m (proposed)")
-        ->check(cli::positive(1.0))
-        ->capture_default_str();
-    app.add_option("--rod-mass", shape_.rodMass, "rod mass, kg (proposed)")->check(cli::positive(1e6))->capture_default_str();
-    app.add_option("--bob-radius", shape_.bobRadius, "bob radius, m (proposed; its centre is at rod length + radius)")
-        ->check(cli::positive(1.0))
-        ->capture_default_str();
+             "leave the rotational kinetic energy 0.5 w^T I w out of the kinetic and total energy "
+             "(0.5 m v^2 only)");
   }
 
   void checkOptions() const override {
     if (shape_.rodLength + 2 * shape_.bobRadius >= ANCHOR_HEIGHT)
       throw UsageError("--rod-length plus twice --bob-radius must stay below the anchor's height, " +
                        formatValue(ANCHOR_HEIGHT) + " m, so the bob swings clear of the ground");
-    // A row interval asked for below the step would ask for rows the run
-    // cannot take. (The default with a large --step gives a row every step.)
-    if (sampleOption_->count()) cli::refuseBelowStep("--sample-interval", sampleInterval_, settings().step);
   }
   std::vector<std::string> outputFileNames() const override {
     return {programName() + "_run_log.txt", "Test2_output.txt"};
@@ -244,7 +246,6 @@ class Pendulum : public PendulumScene {
   double sampleInterval_ = SAMPLE_INTERVAL;
   bool withoutRotation_ = false;
   double maxRotationalEnergy_ = 0.0;
-  const CLI::Option* sampleOption_ = nullptr;
   MeasurementLog log_;
   FixedIntervalSampler sampler_{SAMPLE_INTERVAL};
   SwingTimer swingTimer_;
@@ -254,8 +255,6 @@ class Pendulum : public PendulumScene {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<Pendulum>(argc, argv,
-                                   "A rod and a sphere merged into one body swing on a hinge; energies go to "
-                                   "Test2_output.txt.");
-}
+ODELAB_SCENE(test2, Pendulum,
+             "A rod and a sphere merged into one body swing on a hinge; energies go to "
+             "Test2_output.txt.")

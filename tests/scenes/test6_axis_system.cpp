@@ -20,7 +20,7 @@
 #include "CommandLine.h"
 #include "FormatValue.h"
 #include "Plane.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/AngularSpeedLimit.h"
 #include "shared/BodyMeasures.h"
 #include "shared/SceneConstants.h"
@@ -45,25 +45,21 @@ double depthBelowGround(dBodyID body, double side) {
 class AxisSystem : public AbstractWindow {
  public:
   AxisSystem() : AbstractWindow("test6 - Axis system", WorldSettings{}) {
-    addParameter({"start tilt", "deg", &startTiltDegrees_, 0.0, MAX_START_TILT_DEGREES});
-    addParameter({"spin limit, 0: none", "rad/s", &angularLimit_.radPerSecond, 0.0, 1000.0});
+    // Both act when the scene is built (the tilt) or its bodies made (the
+    // limit): a change builds the scene again.
+    declare(Knob::real("tilt_degrees", "start tilt", "deg", startTiltDegrees_, 0.0, MAX_START_TILT_DEGREES)
+                .withOption("--tilt-degrees",
+                            "start the big cube tilted about the anchor by this angle (about z), a deliberate "
+                            "disturbance; default 0: the thesis's perfectly symmetric build")
+                .rebuildsScene());
+    declare(Knob::real("max_angular_speed", "spin limit, 0: none", "rad/s", angularLimit_.radPerSecond, 1e-3, 1e6)
+                .withOption("--max-angular-speed",
+                            "dWorldSetMaxAngularSpeed(world, W) for every body, in rad/s (the thesis tried 0.01); "
+                            "0 or default: no limit")
+                .zeroIsOff()
+                .logarithmic()
+                .rebuildsScene());
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
-  }
-
-  // Both act when the scene is built (the tilt) or its bodies made (the
-  // limit): the scene is built again.
-  void onParameterChanged(const SceneParameter&) override { reset(); }
-
-  void addOptions(CLI::App& app) override {
-    app.add_option("--max-angular-speed", angularLimit_.radPerSecond,
-                   "dWorldSetMaxAngularSpeed(world, W) for every body, in rad/s (the thesis tried 0.01); "
-                   "default: no limit")
-        ->check(cli::positive(1e6));
-    app.add_option("--tilt-degrees", startTiltDegrees_,
-                   "start the big cube tilted about the anchor by this angle (about z), a deliberate "
-                   "disturbance; default 0: the thesis's perfectly symmetric build")
-        ->check(cli::finiteRange(0.0, MAX_START_TILT_DEGREES))
-        ->capture_default_str();
   }
 
  protected:
@@ -174,7 +170,5 @@ class AxisSystem : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<AxisSystem>(
-      argc, argv, "A 5000 kg cube on a ball joint above a 1 kg cube: how long does the axis stay upright?");
-}
+ODELAB_SCENE(test6, AxisSystem,
+             "A 5000 kg cube on a ball joint above a 1 kg cube: how long does the axis stay upright?")

@@ -23,7 +23,7 @@
 #include "Box.h"
 #include "CommandLine.h"
 #include "Plane.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/BodyMeasures.h"
 
 namespace {
@@ -91,15 +91,14 @@ WorldSettings settingsForThisScene() {
 class Domino : public AbstractWindow {
  public:
   Domino() : AbstractWindow("test3 - Domino", settingsForThisScene()) {
+    declare(Knob::integer("dominoes", "dominoes", dominoCount_, 2, 1000)
+                .withOption("--dominoes", "number of dominoes along the spiral"));
     useContactChoices(DEFAULT_MU);
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--dominoes", dominoCount_, "number of dominoes along the spiral")
-        ->check(CLI::Range(2, 1000))
-        ->capture_default_str();
     app.add_flag("--no-auto-disable", noAutoDisable_,
-                 "keep every body active (the thesis: very slow) instead of auto-disable with thresholds 0.1");
+             "keep every body active (the thesis: very slow) instead of auto-disable with thresholds 0.1");
   }
 
  protected:
@@ -224,6 +223,5 @@ class Domino : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<Domino>(argc, argv, "A spiral of dominoes knocked over in a chain; auto-disable on.");
-}
+ODELAB_SCENE(test3, Domino,
+             "A spiral of dominoes knocked over in a chain; auto-disable on.")

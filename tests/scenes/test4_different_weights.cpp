@@ -20,8 +20,7 @@
 
 #include "AbstractWindow.h"
 #include "Box.h"
-#include "CommandLine.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/SceneConstants.h"
 #include "shared/BodyMeasures.h"
 
@@ -61,23 +60,19 @@ WorldSettings settingsForThisScene() {
 class DifferentWeights : public AbstractWindow {
  public:
   DifferentWeights() : AbstractWindow("test4 - Different Weights", settingsForThisScene()) {
-    bindKey(SDLK_F5, "F5", "big cube's mass up the ladder 500 ... 500000 kg (Shift: down); rebuilds the scene",
-            [this](int direction) { stepBigMass(direction); });
-    addParameter({"big cube mass", "kg", &bigMass_, 1.0, 1e6, true});
+    // A new mass is a new experiment: the scene is built again from the balanced pose.
+    declare(Knob::real("big_mass", "big cube mass", "kg", bigMass_, 1.0, 1e9)
+                .withOption("--big-mass", "mass of the big cube in kg")
+                .withKey(SDLK_F5, "F5", "big cube's mass up the ladder 500 ... 500000 kg (Shift: down); rebuilds the scene",
+                         BIG_MASS_LADDER)
+                .logarithmic()
+                .rebuildsScene());
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
-  }
-
-  void addOptions(CLI::App& app) override {
-    app.add_option("--big-mass", bigMass_, "mass of the big cube in kg")
-        ->check(cli::positive(1e9))
-        ->capture_default_str();
   }
 
  protected:
   // Auto-disable off: a disabled body would hide the instability the scene is about.
   void configureWorld() override { dWorldSetAutoDisableFlag(world(), 0); }
-  // A new mass is a new experiment: the scene is built again, as with F5.
-  void onParameterChanged(const SceneParameter&) override { reset(); }
 
   void buildScene() override {
     Box& platform = add<Box>(world(), space(), PLATFORM_SIDE, PLATFORM_THICKNESS, PLATFORM_SIDE, 1.0);
@@ -165,15 +160,6 @@ class DifferentWeights : public AbstractWindow {
                      penetrationDepth(big_->getGeom(), platform_->getGeom())});
   }
 
-  void stepBigMass(int direction) {
-    const double before = bigMass_;
-    bigMass_ = ParameterStepper::nextOnLadder(BIG_MASS_LADDER, bigMass_, direction);
-    reset();  // the new mass starts from the balanced pose
-    std::ostringstream s;
-    s << "big cube mass " << before << " -> " << bigMass_ << " kg; scene rebuilt";
-    notify(s.str());
-  }
-
   Box* platform_ = nullptr;
   Box* small_ = nullptr;
   Box* big_ = nullptr;
@@ -185,7 +171,5 @@ class DifferentWeights : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<DifferentWeights>(
-      argc, argv, "A 5000 kg cube balanced on a 5 kg cube on a static platform; how long does it hold?");
-}
+ODELAB_SCENE(test4, DifferentWeights,
+             "A 5000 kg cube balanced on a 5 kg cube on a static platform; how long does it hold?")

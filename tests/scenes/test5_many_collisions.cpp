@@ -30,7 +30,7 @@
 #include "AbstractWindow.h"
 #include "Box.h"
 #include "CommandLine.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/SceneConstants.h"
 #include "shared/BodyMeasures.h"
 #include "shared/IslandThreads.h"
@@ -89,7 +89,9 @@ class ManyCollisions : public AbstractWindow {
             [this](int) { spawnPlate(); });
     bindKey(SDLK_q, "Q", "next collision space: simple -> hash -> sap -> quadtree (Shift: back)",
             [this](int direction) { cycleSpace(direction); });
+    declareKnobs();
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
+    timeSteps();                   // ms_per_step and the collide cost read each step's wall time
   }
 
   // The world must let go of the threading implementation before it is
@@ -99,38 +101,13 @@ class ManyCollisions : public AbstractWindow {
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--plates", plateLimit_, "timed spawning stops after N plates (default: 50 headless)")
-        ->check(CLI::Range(1, 100000));
-    app.add_option("--spawn-interval", spawnInterval_,
-                   "drop a plate every S simulated seconds (default: 0.3 headless, off in the window)")
-        ->check(cli::positive(1e6));
     app.add_option_function<std::string>(
            "--space", [this](const std::string& text) { parseSpaceKind(text, requestedSpace_); },
            "collision space: simple, hash (dHashSpaceCreate), sap (sweep and prune) or quadtree")
         ->check(CLI::IsMember({"simple", "hash", "sap", "quadtree"}))
         ->default_str("simple");
     app.add_flag("--auto-disable", autoDisable_,
-                 "let ODE disable resting plates (default off: the thesis found it freezes plates in the air)");
-    linearOption_ = app.add_option("--auto-disable-linear", disableLinear_,
-                   "auto-disable linear velocity threshold, m/s (default ODE's 0.01; the thesis tried 0.3)")
-        ->check(cli::finiteRange(0.0, 1e6));
-    angularOption_ = app.add_option("--auto-disable-angular", disableAngular_,
-                   "auto-disable angular velocity threshold, rad/s (default ODE's 0.01)")
-        ->check(cli::finiteRange(0.0, 1e6));
-    app.add_option("--contact-max-correcting-vel", maxCorrectingVel_,
-                   "dWorldSetContactMaxCorrectingVel: the fastest a contact pushes bodies apart to undo "
-                   "penetration, m/s (default ODE's: unlimited)")
-        ->check(cli::positive(1e9));
-    app.add_option("--contact-surface-layer", surfaceLayer_,
-                   "dWorldSetContactSurfaceLayer: penetration depth a contact leaves alone, m (default ODE's 0)")
-        ->check(cli::finiteRange(0.0, 0.1));
-    app.add_option("--threads", threads_, "threads for ODE's threaded island stepping (default 1: not threaded)")
-        ->check(CLI::Range(1, MAX_THREADS));
-  }
-
-  void checkOptions() const override {
-    if (!autoDisable_ && (linearOption_->count() > 0 || angularOption_->count() > 0))
-      throw UsageError("--auto-disable-linear/--auto-disable-angular: need --auto-disable");
+             "let ODE disable resting plates (default off: the thesis found it freezes plates in the air)");
   }
 
  protected:
@@ -250,6 +227,41 @@ class ManyCollisions : public AbstractWindow {
   SceneBounds bounds() const override { return {{0, 3, 0}, 8.0}; }
 
  private:
+  // The scene's knobs; 0 in
+  // --plates and --spawn-interval stands for the scene's default (refused
+  // when typed).
+  void declareKnobs() {
+    declare(Knob::integer("plates", "plates", plateLimit_, 1, 100000)
+                .withOption("--plates", "timed spawning stops after N plates (default: 50 headless)"));
+    declare(Knob::interval("spawn_interval", "spawn interval", spawnInterval_, 1e-6, 1e6)
+                .withOption("--spawn-interval",
+                            "drop a plate every S simulated seconds (default: 0.3 headless, off in the window)")
+                .hidden());
+    declare(Knob::real("auto_disable_linear", "auto-disable linear threshold", "m/s", disableLinear_, 0.0, 1e6)
+                               .withOption("--auto-disable-linear",
+                                           "auto-disable linear velocity threshold, m/s (default ODE's 0.01; the "
+                                           "thesis tried 0.3)")
+                               .onlyWith("--auto-disable")
+                               .hidden());
+    declare(Knob::real("auto_disable_angular", "auto-disable angular threshold", "rad/s", disableAngular_,
+                                       0.0, 1e6)
+                                .withOption("--auto-disable-angular",
+                                            "auto-disable angular velocity threshold, rad/s (default ODE's 0.01)")
+                                .onlyWith("--auto-disable")
+                                .hidden());
+    declare(Knob::real("contact_max_correcting_vel", "contact max correcting velocity", "m/s", maxCorrectingVel_, 1e-6, 1e9)
+                .withOption("--contact-max-correcting-vel",
+                            "dWorldSetContactMaxCorrectingVel: the fastest a contact pushes bodies apart to undo "
+                            "penetration, m/s (default ODE's: unlimited)")
+                .hidden());
+    declare(Knob::real("contact_surface_layer", "contact surface layer", "m", surfaceLayer_, 0.0, 0.1)
+                .withOption("--contact-surface-layer",
+                            "dWorldSetContactSurfaceLayer: penetration depth a contact leaves alone, m (default ODE's 0)")
+                .hidden());
+    declare(Knob::integer("threads", "threads", threads_, 1, MAX_THREADS)
+                .withOption("--threads", "threads for ODE's threaded island stepping (default 1: not threaded)"));
+  }
+
   double spawnInterval() const {
     if (spawnInterval_ > 0) return spawnInterval_;
     return options().headless ? DEFAULT_SPAWN_INTERVAL : 0.0;
@@ -370,13 +382,9 @@ class ManyCollisions : public AbstractWindow {
   double maxCorrectingVel_ = 0.0;  // 0: not set, ODE's unlimited
   double surfaceLayer_ = 0.0;
   std::unique_ptr<IslandThreads> islandThreads_;  // only with --threads > 1
-  CLI::Option* linearOption_ = nullptr;
-  CLI::Option* angularOption_ = nullptr;
 };
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<ManyCollisions>(
-      argc, argv, "Plates [5, 0.05, 5] dropped onto a stack; how fast and how straight does it grow?");
-}
+ODELAB_SCENE(test5, ManyCollisions,
+             "Plates [5, 0.05, 5] dropped onto a stack; how fast and how straight does it grow?")

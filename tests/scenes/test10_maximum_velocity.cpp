@@ -37,8 +37,9 @@
 #include "FormatValue.h"
 #include "Plane.h"
 #include "SweptCollision.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/MechanicalEnergy.h"
+#include "shared/LaunchOutcome.h"
 #include "shared/SceneConstants.h"
 #include "shared/VelocityScan.h"
 
@@ -50,17 +51,11 @@ using namespace odelab::scene::test10;
 constexpr double DEFAULT_VELOCITY = 200.0;  // m/s (proposed): stopped at the default step
 // F5 changes the velocity by 10 m/s below 1000 m/s and by 100 m/s from there up.
 constexpr double F5_FINE_STEP = 10.0, F5_COARSE_STEP = 100.0, F5_COARSE_FROM = 1000.0;
-constexpr double DEFAULT_SCAN_LIMIT = 100000.0;  // m/s: where the scan gives up (proposed)
 constexpr double DEFAULT_BAND_FACTOR = 1.5;      // keep scanning to 1.5x the first failure (proposed)
 
-// A launch is over when the cube is wholly past the wall, or moves no longer
-// toward it on the near side; failing both, after the time it needs to reach
-// the wall plus this much (a soft contact, with CFM > 0, may take a while).
-constexpr double SETTLE_SECONDS = 0.05;
 // The window keeps launched cubes to show where they ended; farther away they go.
 constexpr double KEEP_RADIUS = 100.0;
 
-enum class Outcome { InFlight, Stopped, Passed };
 
 const char* outcomeName(Outcome outcome) {
   switch (outcome) {
@@ -88,66 +83,57 @@ class MaximumVelocity : public AbstractWindow {
   MaximumVelocity() : AbstractWindow("test10 - Maximum velocity", settingsForThisScene()) {
     bindKey(SDLK_b, "B", "launch a cube from [-4, 3, 0] toward the wall at the launch velocity",
             [this](int) { launch(velocity_); });
-    bindKey(SDLK_F5, "F5", "launch velocity up (Shift: down): by 10 m/s below 1000 m/s, by 100 m/s from 1000 m/s",
-            [this](int direction) { changeVelocity(direction); });
+    declare(Knob::real("velocity", "launch velocity", "m/s", velocity_, 0.01, 1e7)
+                .withOption("--velocity", "launch velocity in m/s (window: the starting F5 value)")
+                .withKey(SDLK_F5, "F5", "launch velocity up (Shift: down): by 10 m/s below 1000 m/s, by 100 m/s from 1000 m/s")
+                .steppedBy(nextVelocity)
+                .logarithmic());
+    declare(Knob::real("surface_layer", "contact surface layer", "m", surfaceLayer_, 0.0, 1.0)
+                .withOption("--surface-layer", "contact surface layer, m: overlap ODE leaves uncorrected (the thesis: 0)")
+                .hidden());
+    launchesKnob_ = &declare(Knob::integer("launches", "launches", launches_, 1, 100000)
+                                  .withOption("--launches",
+                                              "headless: cubes launched one at a time (the previous one removed) at "
+                                              "--velocity; with --find-max-velocity, launches per tested velocity "
+                                              "(default 5, or 1 when scanning)"));
+    declare(Knob::real("scan_limit", "scan limit", "m/s", scanLimit_, 1.0, 1e7)
+                .withOption("--scan-limit", "--find-max-velocity gives up above this velocity (m/s)")
+                .onlyWith("--find-max-velocity")
+                .hidden());
+    declare(Knob::real("band_factor", "band factor", "", bandFactor_, 1.0, 100.0)
+                .withOption("--band-factor",
+                            "--find-max-velocity keeps scanning up to this multiple of the first failing velocity, "
+                            "to show whether stops reappear above it")
+                .onlyWith("--find-max-velocity")
+                .hidden());
+    declare(Knob::real("spin", "launch spin", "rad/s", spin_, 0.0, 1e6)
+                .withOption("--spin",
+                            "launch each cube turning at this rate (rad/s) about a random axis (from --seed): a limit "
+                            "of --ccd, whose step model is a constant turn"));
     // T (tunnelling): C is the shared key for the contact markers.
     bindKey(SDLK_t, "T",
             "continuous collision for fast bodies on / off (--ccd): sweep each fast body's step against "
             "the static geometry",
             [this](int) { toggleCcd(); });
-    keepAcrossRewind(velocity_);
     keepAcrossRewind(ccd_);
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--surface-layer", surfaceLayer_,
-                   "contact surface layer, m: overlap ODE leaves uncorrected (the thesis: 0)")
-        ->check(cli::finiteRange(0.0, 1.0))
-        ->capture_default_str();
-    app.add_option("--velocity", velocity_, "launch velocity in m/s (window: the starting F5 value)")
-        ->check(cli::positive(1e7))
-        ->capture_default_str();
-    launchesOption_ = app.add_option("--launches", launches_,
-                                     "headless: cubes launched one at a time (the previous one removed) at "
-                                     "--velocity; with --find-max-velocity, launches per tested velocity "
-                                     "(default 5, or 1 when scanning)")
-                          ->check(CLI::Range(1, 100000));
     app.add_flag("--find-max-velocity", findMaxVelocity_,
-                 "headless: scan launch velocities from 1 m/s, every 1 m/s up to 1000 m/s and every 0.1% above, "
-                 "for the highest velocity at which every launch so far was stopped");
-    scanOptions_.push_back(
-        app.add_option("--scan-limit", scanLimit_, "--find-max-velocity gives up above this velocity (m/s)")
-            ->check(cli::positive(1e7))
-            ->capture_default_str());
-    scanOptions_.push_back(
-        app.add_option("--band-factor", bandFactor_,
-                       "--find-max-velocity keeps scanning up to this multiple of the first failing velocity, to "
-                       "show whether stops reappear above it")
-            ->check(cli::finiteRange(1.0, 100.0))
-            ->capture_default_str());
+             "headless: scan launch velocities from 1 m/s, every 1 m/s up to 1000 m/s and every 0.1% above, "
+             "for the highest velocity at which every launch so far was stopped");
     app.add_flag("--phase-jitter", phaseJitter_,
-                 "start each launch up to one step's travel behind [-4, 3, 0] (uniform, from --seed), so the "
-                 "cube meets the wall at a random phase of the step; off: the thesis's fixed launch point");
+             "start each launch up to one step's travel behind [-4, 3, 0] (uniform, from --seed), so the "
+             "cube meets the wall at a random phase of the step; off: the thesis's fixed launch point");
     app.add_flag("--random-orientation", randomOrientation_,
-                 "launch each cube turned to a uniformly random orientation (from --seed), so it meets the wall "
-                 "with a corner or an edge first; off: unturned, face on (the thesis's)");
-    app.add_option("--spin", spin_,
-                   "launch each cube turning at this rate (rad/s) about a random axis (from --seed): a limit of "
-                   "--ccd, whose step model is a constant turn")
-        ->check(cli::finiteRange(0.0, 1e6))
-        ->capture_default_str();
+             "launch each cube turned to a uniformly random orientation (from --seed), so it meets the wall "
+             "with a corner or an edge first; off: unturned, face on (the thesis's)");
     app.add_flag("--ccd", ccd_,
-                 "continuous collision for fast bodies: before each step, a body whose points may move more than "
-                 "half its smallest half-extent in the step is swept along its motion (turning included) against "
-                 "the static geometry, moved to its first touching pose and given contacts for the corners on "
-                 "their way in, so the contacts stop it (window: T); off: the thesis's behaviour");
-  }
-
-  void checkOptions() const override {
-    for (const CLI::Option* option : scanOptions_)
-      if (option->count() && !findMaxVelocity_)
-        throw UsageError(option->get_name() + ": only used with --find-max-velocity");
+             "continuous collision for fast bodies: before each step, a body whose points may move more than "
+             "half its smallest half-extent in the step is swept along its motion (turning included) against "
+             "the static geometry, moved to its first touching pose and given contacts for the corners on "
+             "their way in, so the contacts stop it (window: T); off: the thesis's behaviour");
   }
 
  protected:
@@ -261,12 +247,14 @@ class MaximumVelocity : public AbstractWindow {
   double geometricPrediction() const { return (CUBE_HALF_SIZE + WALL_THICKNESS) / settings().step; }
   double guaranteedStopVelocity() const { return (CUBE_HALF_SIZE + WALL_THICKNESS / 2) / settings().step; }
 
-  int launchCount(int fallback) const { return launchesOption_ && launchesOption_->count() ? launches_ : fallback; }
+  int launchCount(int fallback) const {
+    return launchesKnob_->parsed && launchesKnob_->parsed->count() ? launches_ : fallback;
+  }
 
-  void changeVelocity(int direction) {
-    const bool coarse = direction > 0 ? velocity_ >= F5_COARSE_FROM : velocity_ > F5_COARSE_FROM;
-    velocity_ = std::max(F5_FINE_STEP, velocity_ + direction * (coarse ? F5_COARSE_STEP : F5_FINE_STEP));
-    notify("launch velocity " + formatValue(velocity_) + " m/s");
+  // F5: by 10 m/s below 1000 m/s, by 100 m/s from there; never below 10 m/s.
+  static double nextVelocity(double velocity, int direction) {
+    const bool coarse = direction > 0 ? velocity >= F5_COARSE_FROM : velocity > F5_COARSE_FROM;
+    return std::max(F5_FINE_STEP, velocity + direction * (coarse ? F5_COARSE_STEP : F5_FINE_STEP));
   }
 
   void toggleCcd() {
@@ -307,19 +295,10 @@ class MaximumVelocity : public AbstractWindow {
     dBodySetAngularVel(cube.getBody(), spin_ * axis[0] / n, spin_ * axis[1] / n, spin_ * axis[2] / n);
   }
 
-  // Passed: the whole cube is beyond the far face. Stopped: on the near side
-  // of the mid-plane and no longer moving toward the wall (bounced back, or
-  // fell to the ground short of it). Otherwise still in flight until the
-  // time it needs to reach the wall plus SETTLE_SECONDS; then its centre decides.
+  // test10's rule (shared/LaunchOutcome.h), which the peer engines use too.
   Outcome classify(const Launch& l) const {
-    const double x = l.cube->getPosition()[0];
-    const double vx = dBodyGetLinearVel(l.cube->getBody())[0];
-    if (x - CUBE_HALF_SIZE > WALL_FAR_FACE) return Outcome::Passed;
-    if (vx <= 0.0 && x < WALL_X) return Outcome::Stopped;
-    const double reachSeconds = (WALL_FAR_FACE + CUBE_HALF_SIZE - LAUNCH_X) / l.velocity;
-    if (simulatedTime() - l.launchedAt > reachSeconds + SETTLE_SECONDS)
-      return x > WALL_FAR_FACE ? Outcome::Passed : Outcome::Stopped;
-    return Outcome::InFlight;
+    return launchOutcome(l.cube->getPosition()[0], dBodyGetLinearVel(l.cube->getBody())[0], l.velocity,
+                         simulatedTime() - l.launchedAt);
   }
 
   // Drops the cubes whose outcome is known and that flew far away, with their records.
@@ -381,8 +360,7 @@ class MaximumVelocity : public AbstractWindow {
 
   double velocity_ = DEFAULT_VELOCITY;
   int launches_ = 1;
-  CLI::Option* launchesOption_ = nullptr;
-  std::vector<const CLI::Option*> scanOptions_;
+  const Knob* launchesKnob_ = nullptr;
   bool findMaxVelocity_ = false;
   double scanLimit_ = DEFAULT_SCAN_LIMIT;
   double bandFactor_ = DEFAULT_BAND_FACTOR;
@@ -403,7 +381,5 @@ class MaximumVelocity : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<MaximumVelocity>(
-      argc, argv, "Cubes launched at a thin wall: the highest velocity at which the wall still stops every one.");
-}
+ODELAB_SCENE(test10, MaximumVelocity,
+             "Cubes launched at a thin wall: the highest velocity at which the wall still stops every one.")

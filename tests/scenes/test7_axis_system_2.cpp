@@ -22,7 +22,7 @@
 #include "FormatValue.h"
 #include "Plane.h"
 #include "Sphere.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/AngularSpeedLimit.h"
 #include "shared/BodyMeasures.h"
 
@@ -90,7 +90,7 @@ double ballJointError(dJointID joint) {
 class AxisSystem2 : public AbstractWindow {
  public:
   AxisSystem2() : AbstractWindow("test7 - Axis system 2", WorldSettings{}) {
-    bindKey(SDLK_r, "R", "throw the test cube again at the pivot (Shift+R: reset the whole scene to its initial state)",
+    rebindKey(SDLK_r, "R", "throw the test cube again at the pivot (Shift+R: reset the whole scene to its initial state)",
             [this](int direction) {
               if (direction > 0) {
                 throwTestCube();
@@ -99,26 +99,19 @@ class AxisSystem2 : public AbstractWindow {
               reset();
               notify("scene reset");
             });
-    bindKey(SDLK_F5, "F5", "max angular speed of every body up (Shift: down): off, 1, 3, 10, 30, 100 rad/s",
-            [this](int direction) { stepAngularSpeedLimit(direction); });
+    declare(Knob::real("max_angular_speed", "max angular speed, 0: off", "rad/s", angularLimit_.radPerSecond, 0.0, 1e6)
+                .withOption("--max-angular-speed",
+                            "dWorldSetMaxAngularSpeed(world, W) in rad/s for every body (the thesis's 10); 0: no limit")
+                .withKey(SDLK_F5, "F5", "max angular speed of every body up (Shift: down): off, 1, 3, 10, 30, 100 rad/s",
+                         ANGULAR_SPEED_LADDER));
+    declare(Knob::integer("throws", "throws", throws_, 1, 1000)
+                .withOption("--throws", "headless: how many times the test cube is thrown"));
+    // A throw interval below one step would count throws that no step separates.
+    declare(Knob::interval("throw_interval", "throw interval", throwInterval_, 1e-6, 1e4)
+                .withOption("--throw-interval", "headless: simulated seconds between throws")
+                .hidden());
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
-
-  void addOptions(CLI::App& app) override {
-    app.add_option("--max-angular-speed", angularLimit_.radPerSecond,
-                   "dWorldSetMaxAngularSpeed(world, W) in rad/s for every body (the thesis's 10); 0: no limit")
-        ->check(cli::finiteRange(0.0, 1e6))
-        ->capture_default_str();
-    app.add_option("--throws", throws_, "headless: how many times the test cube is thrown")
-        ->check(CLI::Range(1, 1000))
-        ->capture_default_str();
-    app.add_option("--throw-interval", throwInterval_, "headless: simulated seconds between throws")
-        ->check(cli::positive(1e4))
-        ->capture_default_str();
-  }
-
-  // A throw interval below one step would count throws that no step separates.
-  void checkOptions() const override { cli::refuseBelowStep("--throw-interval", throwInterval_, settings().step); }
 
  protected:
   void configureWorld() override {
@@ -273,12 +266,10 @@ class AxisSystem2 : public AbstractWindow {
     ++throwCount_;
   }
 
-  void stepAngularSpeedLimit(int direction) {
-    angularLimit_.radPerSecond =
-        ParameterStepper::nextOnLadder(ANGULAR_SPEED_LADDER, angularLimit_.radPerSecond, direction);
+  // F5 or the panel changed the limit: the bodies that exist take it now.
+  void onKnobChanged(const Knob&) override {
     for (const auto& object : objects())
       if (const dBodyID body = object->getBody()) angularLimit_.applyToBody(body);
-    notify("max angular speed " + angularLimit_.describe());
   }
 
   AngularSpeedLimit angularLimit_{THESIS_MAX_ANGULAR_SPEED};
@@ -300,7 +291,5 @@ class AxisSystem2 : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<AxisSystem2>(
-      argc, argv, "Two cubes hang on ball joints; a 100 kg cube is thrown into the upper one at 30 m/s.");
-}
+ODELAB_SCENE(test7, AxisSystem2,
+             "Two cubes hang on ball joints; a 100 kg cube is thrown into the upper one at 30 m/s.")

@@ -17,7 +17,7 @@
 
 #include "Plane.h"
 #include "Sphere.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/ApexTracker.h"
 #include "shared/BodyMeasures.h"
 #include "shared/BounceVelocityOption.h"
@@ -61,11 +61,8 @@ struct BallRecord {
 class JumpingBalls : public AbstractWindow {
  public:
   JumpingBalls() : AbstractWindow("test1 - Jumping Balls", settingsForThisScene()) {
+    declare(bounceVelocityKnob(bounceVelocity_, "the thesis"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
-  }
-
-  void addOptions(CLI::App& app) override {
-    addBounceVelocityOption(app, bounceVelocity_, "the thesis");
   }
 
   SceneBounds bounds() const override { return {{0.0, 3.5, 0.0}, 11.0}; }
@@ -195,8 +192,6 @@ class JumpingBalls : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<JumpingBalls>(argc, argv,
-                                       "Fifty balls with restitution 0 to 1 bounce on the ground; each rebound "
-                                       "apex ratio is compared with e^2.");
-}
+ODELAB_SCENE(test1, JumpingBalls,
+             "Fifty balls with restitution 0 to 1 bounce on the ground; each rebound "
+             "apex ratio is compared with e^2.")

@@ -12,7 +12,7 @@
 #include "Box.h"
 #include "CommandLine.h"
 #include "Sphere.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/BodyMeasures.h"
 
 namespace {
@@ -32,17 +32,20 @@ class BoxAndSphere : public AbstractWindow {
   BoxAndSphere() : AbstractWindow("test0 - Box & Sphere", WorldSettings{}) {
     bindKey(SDLK_b, "B", "spawn a box of random size at [0, 10, 0]", [this](int) { spawn(true); });
     bindKey(SDLK_n, "N", "spawn a sphere of random size at [0, 10, 0]", [this](int) { spawn(false); });
-    addParameter({"spawn interval (0: off)", "s", &spawnInterval_, 0.0, 10.0});
+    // Every object appears at one point: faster than 0.01 s they pile into
+    // each other there, a crawl of overlapping contacts rather than a scene.
+    spawnKnob_ = &declare(Knob::interval("spawn_interval", "spawn interval (0: off)", spawnInterval_, 0.01, 1e6)
+                              .withOption("--spawn-interval",
+                                          "spawn a box, then a sphere, ... every S simulated seconds; 0: off "
+                                          "(default: 1 headless, off in the window)")
+                              .zeroIsOff()
+                              .logarithmic());
+    declare(Knob::integer("spawn_count", "spawn count (0: no limit)", spawnLimit_, 0, 1000000000)
+                .withOption("--spawn-count", "stop spawning after N objects (0 = no limit)"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
   void addOptions(CLI::App& app) override {
-    app.add_option("--spawn-interval", spawnInterval_,
-                   "spawn a box, then a sphere, ... every S simulated seconds (default: 1 headless, off in the window)")
-        ->check(cli::positive(1e6));
-    app.add_option("--spawn-count", spawnLimit_, "stop spawning after N objects (0 = no limit)")
-        ->check(CLI::NonNegativeNumber)
-        ->capture_default_str();
     app.add_option("--spawn-shapes", spawnShapes_,
                    "what timed spawning drops: both (alternately), box or sphere. Spheres have no rolling "
                    "resistance in ODE and may roll off the platform")
@@ -112,8 +115,9 @@ class BoxAndSphere : public AbstractWindow {
 
  private:
   double spawnInterval() const {
-    if (spawnInterval_ > 0) return spawnInterval_;
-    return options().headless ? 1.0 : 0.0;
+    // Headless, a run without --spawn-interval spawns every second.
+    if (options().headless && spawnKnob_->parsed && spawnKnob_->parsed->count() == 0) return 1.0;
+    return spawnInterval_;
   }
 
   double uniform(double low, double high) { return std::uniform_real_distribution<double>(low, high)(random()); }
@@ -158,13 +162,12 @@ class BoxAndSphere : public AbstractWindow {
   int maxBodies_ = 0;  // the most bodies alive at once (after a step's spawn)
   double nextSpawn_ = 0.0;
   double spawnInterval_ = 0.0;
+  const Knob* spawnKnob_ = nullptr;
   int spawnLimit_ = 0;
   std::string spawnShapes_ = "both";
 };
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<BoxAndSphere>(argc, argv,
-                                       "Boxes and spheres of random size fall onto a platform; auto-disable on.");
-}
+ODELAB_SCENE(test0, BoxAndSphere,
+             "Boxes and spheres of random size fall onto a platform; auto-disable on.")

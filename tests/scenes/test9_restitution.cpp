@@ -15,7 +15,7 @@
 
 #include "Plane.h"
 #include "Sphere.h"
-#include "TestMain.h"
+#include "SceneRegistry.h"
 #include "shared/ApexTracker.h"
 #include "shared/BounceVelocityOption.h"
 #include "shared/SceneConstants.h"
@@ -44,11 +44,8 @@ WorldSettings settingsForThisScene() {
 class RestitutionAccuracy : public AbstractWindow {
  public:
   RestitutionAccuracy() : AbstractWindow("test9 - Restitution accuracy", settingsForThisScene()) {
+    declare(bounceVelocityKnob(bounceVelocity_, "proposed"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
-  }
-
-  void addOptions(CLI::App& app) override {
-    addBounceVelocityOption(app, bounceVelocity_, "proposed");
   }
 
   SceneBounds bounds() const override { return {{0.0, 2.5, 0.0}, 6.0}; }
@@ -164,8 +161,6 @@ class RestitutionAccuracy : public AbstractWindow {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  return odelab::runTest<RestitutionAccuracy>(argc, argv,
-                                              "A ball with bounce 1.0 bounces under 4 g; every apex's deviation "
-                                              "from the start is printed.");
-}
+ODELAB_SCENE(test9, RestitutionAccuracy,
+             "A ball with bounce 1.0 bounces under 4 g; every apex's deviation "
+             "from the start is printed.")

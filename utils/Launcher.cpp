@@ -1,0 +1,93 @@
+// odelab: every scene of the library from one program.
+//   odelab [window options]             a window with the first scene; Page Down / Page Up
+//                                       switch to the next / previous scene, H lists the keys
+//   odelab --list                       the scenes, one a line: name, tab, description
+//   odelab --scene NAME [options]       NAME as its own program runs it (same options,
+//                                       headless too: the same metrics and state hash)
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "ExitCodes.h"
+#include "SceneRegistry.h"
+#include "TestMain.h"
+
+namespace {
+
+constexpr const char* USAGE =
+    "usage: odelab [window options]        (Page Down / Page Up switch scenes)\n"
+    "       odelab --list\n"
+    "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n";
+
+// Page Down / Page Up in the window: the next or previous scene of the
+// registry, made fresh with the window's options (its knobs at their defaults).
+class RegistrySwitching : public odelab::SceneSwitching {
+ public:
+  explicit RegistrySwitching(const odelab::SceneEntry& first) {
+    const auto& scenes = odelab::sceneRegistry();
+    while (index_ < scenes.size() && scenes[index_].make != first.make) ++index_;
+  }
+
+  odelab::AbstractWindow& next(int direction, const odelab::RunOptions& options) override {
+    const auto& scenes = odelab::sceneRegistry();
+    index_ = (index_ + scenes.size() + (direction > 0 ? 1 : scenes.size() - 1)) % scenes.size();
+    scene_ = scenes[index_].make();  // the scene it replaces has ended: freed here
+    scene_->offerSceneSwitch(sceneList());
+    scene_->setRunOptions(options);
+    return *scene_;
+  }
+
+  std::string sceneList() const override {
+    const auto& scenes = odelab::sceneRegistry();
+    return std::string(scenes.front().name) + " ... " + scenes.back().name + " (odelab --list)";
+  }
+
+ private:
+  size_t index_ = 0;
+  std::unique_ptr<odelab::AbstractWindow> scene_;
+};
+
+int usageError(const std::string& message) {
+  std::cerr << "error: " << message << '\n' << USAGE;
+  return odelab::exit_code::USAGE;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string first = argc > 1 ? argv[1] : "";
+  if (first == "--help" || first == "-h") {
+    std::cout << USAGE;
+    return odelab::exit_code::OK;
+  }
+  if (first == "--list" && argc == 2) {
+    for (const odelab::SceneEntry& scene : odelab::sceneRegistry())
+      std::cout << scene.name << '\t' << scene.description << '\n';
+    return odelab::exit_code::OK;
+  }
+  // --scene NAME or --scene=NAME anywhere; every other argument is the scene's.
+  std::string name;
+  bool named = false;
+  std::vector<char*> arguments{argv[0]};  // the scene's program sees its own arguments only
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument.rfind("--scene=", 0) == 0 || (argument == "--scene" && i + 1 < argc)) {
+      if (named) return usageError("--scene: given twice");
+      named = true;
+      name = argument == "--scene" ? argv[++i] : argument.substr(std::strlen("--scene="));
+    } else {
+      arguments.push_back(argv[i]);
+    }
+  }
+  // No --scene: the window starts with the registry's first scene.
+  const odelab::SceneEntry* scene = named ? odelab::findScene(name) : &odelab::sceneRegistry().front();
+  if (!scene) return usageError("--scene: no scene '" + name + "'; odelab --list names them");
+  // The window switches scenes (Page Down / Page Up); a headless run is one scene's.
+  bool headless = false;
+  for (const char* argument : arguments) headless = headless || std::strcmp(argument, "--headless") == 0;
+  if (headless && !named) return usageError("--headless: needs --scene NAME");
+  RegistrySwitching switching(*scene);
+  return odelab::runEntry(*scene, static_cast<int>(arguments.size()), arguments.data(),
+                          headless ? nullptr : &switching);
+}
