@@ -41,7 +41,7 @@ cp "$root"/web/*.html "$root"/web/*.js "$root"/web/*.css "$site/"
 {
   printf '['
   first=1
-  for source in "$root"/tests/test*.cpp; do
+  for source in "$root"/tests/scenes/test*.cpp; do
     name=$(basename "$source" | grep -o '^test[0-9]*')
     title=$(grep -o '"test[0-9]* - [^"]*"' "$source" | head -n 1)
     [ -n "$title" ] || title="\"$name\""
