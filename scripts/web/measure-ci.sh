@@ -3,7 +3,7 @@
 # (fetched and built in an empty cache), the site (in a scratch folder), and
 # the checks labelled web (run from BUILD_DIR, default build/, against the
 # site its configuration names, build-web/site). Appends one
-# row per stage to CSV (doc/results/web-ci-times.csv), after a header
+# row per stage to CSV (doc/measurements/web-ci-times.csv), after a header
 # naming the machine, with the load average at the start, since the machine
 # may be shared.
 #
