@@ -53,7 +53,7 @@ rate() {
        END { if (sb > sa) printf "%.2f\n", (fb - fa) / (sb - sa); else print "nan" }' "$1"
 }
 
-programs=(test0 test1 test2 test3 test4 test5 test6 test7 test8 test9 test10)
+mapfile -t programs < <("${builds[0]}/tests/odelab" --list | cut -f1)  # the registry
 sizes=(1280x720 640x360)
 declare -A runs
 for program in "${programs[@]}"; do
