@@ -1,7 +1,7 @@
 'use strict';
 // The scene constants as the C++ programs see them: read from the C++
 // headers themselves (tests/shared/SceneConstants.h, utils/WorldSettings.h,
-// peers/Test10Scene.h),
+// tests/shared/LaunchOutcome.h, tests/shared/VelocityScan.h, peers/Test10Scene.h),
 // never copied. A constant is `constexpr double NAME = expression;` inside a
 // scene's namespace; the expression may use numbers, + - * / ( ) and names
 // defined before it in the same namespace or at the top. A constant this
@@ -15,6 +15,8 @@ const ROOT = path.resolve(__dirname, '..', '..', '..');
 const HEADERS = [
   path.join(ROOT, 'utils', 'WorldSettings.h'),
   path.join(ROOT, 'tests', 'shared', 'SceneConstants.h'),
+  path.join(ROOT, 'tests', 'shared', 'LaunchOutcome.h'),  // test10's settling time, beside its outcome rule
+  path.join(ROOT, 'tests', 'shared', 'VelocityScan.h'),  // test10's scan steps
   path.join(ROOT, 'peers', 'Test10Scene.h'),  // test10's launch rule and scan, as the C++ peers run them
 ];
 const DECLARATION = /constexpr\s+(?:double|int|long)\s+([^;]+);/g;

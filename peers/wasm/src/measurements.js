@@ -5,6 +5,8 @@
 // checks/ runs both on the same recorded trajectories (peers/wasm/parity).
 const { scene, SURFACE_GRAVITY } = require('./constants');
 const { ApexTracker } = require('./apex');
+// test10's scan steps, VelocityScan's own (tests/shared/VelocityScan.h).
+const scan = scene.top;
 
 const finite = (v) => v.every(Number.isFinite);
 const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
@@ -190,8 +192,8 @@ function measureWall(makeLaunch, options, metrics) {
     run(options.velocity);
   } else {
     let maxVelocity = 0, firstFailure = 0, tested = 0;
-    for (let v = t.SCAN_FINE_STEP; v <= t.SCAN_LIMIT * (1 + 1e-12);
-      v = v < t.SCAN_FINE_LIMIT ? v + t.SCAN_FINE_STEP : v * (1 + t.SCAN_COARSE_RATIO)) {
+    for (let v = scan.FINE_STEP; v <= t.SCAN_LIMIT * (1 + 1e-12);
+      v = v < scan.FINE_LIMIT ? v + scan.FINE_STEP : v * (1 + scan.COARSE_RATIO)) {
       const outcome = run(v);
       if (outcome === 'blew-up') break;
       ++tested;
@@ -202,7 +204,7 @@ function measureWall(makeLaunch, options, metrics) {
       maxVelocity = v;
     }
     metrics.set('max_velocity', maxVelocity);
-    metrics.set('max_velocity_resolution', maxVelocity < t.SCAN_FINE_LIMIT ? t.SCAN_FINE_STEP : maxVelocity * t.SCAN_COARSE_RATIO);
+    metrics.set('max_velocity_resolution', maxVelocity < scan.FINE_LIMIT ? scan.FINE_STEP : maxVelocity * scan.COARSE_RATIO);
     metrics.set('first_failure_velocity', firstFailure);
     metrics.set('tested_velocities', tested);
   }
