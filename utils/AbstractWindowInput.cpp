@@ -152,8 +152,10 @@ void AbstractWindow::bindSetting(const SettingSpec& spec) {
 
 void AbstractWindow::bindSharedKeys() {
   bindKey(SDLK_r, "R", "reset the scene to its initial state", [this](int) {
+    // Named with the moment it left, as every change the run log records.
+    const std::string at = timeStamp(simulatedTime_);
     reset();
-    notify("scene reset");
+    notify(at + ": scene reset");
   });
   bindViewKey(SDLK_F1, "F1", "HUD: compact / full / off", [this](int) {
     hudMode_ = hudMode_ == HudMode::Compact ? HudMode::Full
@@ -227,8 +229,9 @@ void AbstractWindow::bindTimeAndViewKeys() {
               [this](int) { time_.faster(); });
   bindViewKey(SDLK_COMMA, ",", "rewind to the previous snapshot (every 0.25 s of simulated time) and pause", [this](int) {
     const long long target = std::max(0LL, rewind_.timeline().previousSnapshot(steps_));
+    const std::string at = timeStamp(simulatedTime_);
     replayTo(target);
-    notify("rewound to t=" + formatValue(simulatedTime_) + " s");
+    notify(at + ": rewound to " + timeStamp(simulatedTime_));
   });
   bindViewKey(SDLK_PERIOD, ".", "forward to the next snapshot, replaying what was recorded, and pause", [this](int) {
     const long long target = rewind_.timeline().nextSnapshot(steps_);
@@ -237,9 +240,10 @@ void AbstractWindow::bindTimeAndViewKeys() {
       notify("no later snapshot: press P to run on");
       return;
     }
+    const std::string at = timeStamp(simulatedTime_);
     while (steps_ < target && stepOnce()) {
     }
-    notify("forward to t=" + formatValue(simulatedTime_) + " s");
+    notify(at + ": forward to " + timeStamp(simulatedTime_));
   });
   bindViewKey(SDLK_RETURN, "Enter", "dismiss the error message", [this](int) { dismissFailure(); });
   bindViewKey(SDLK_h, "H", "help: this key list on / off", [this](int) { viewFlags_.help = !viewFlags_.help; });

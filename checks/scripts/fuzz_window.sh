@@ -25,8 +25,8 @@ timeout -k 10 300 "$xvfb" -a -s "-screen 0 1280x800x24" "$expect" mark_fuzz_end_
 status=$?
 grep -E '^(window|mark fuzz_end)|mark_fuzz_end_steps|^error' "$out/output.txt" | head -20
 count() { grep -c -E "$1" "$out/output.txt"; }
-echo "seen: $(count '^scene reset') resets by R, $(count 'ODE error: .*scene reset') after an ODE error," \
-  "$(count 'blew up.*scene reset') after a blow-up; $(count '^rewound') rewinds; $(count '^screenshot:') screenshots"
+echo "seen: $(count '^t=[^:]*: scene reset') resets by R, $(count 'ODE error: .*scene reset') after an ODE error," \
+  "$(count 'blew up.*scene reset') after a blow-up; $(count '^t=[^:]*: rewound') rewinds; $(count '^screenshot:') screenshots"
 if [ "$status" -ne 0 ]; then
   tail -n 30 "$out/output.txt"
   case $status in
