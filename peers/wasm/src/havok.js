@@ -15,7 +15,7 @@
 // (default 0.1).
 const fs = require('fs');
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout } = require('./rigs');
+const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;  // m/s and rad/s: far beyond the scan's 100 000 m/s
@@ -209,12 +209,7 @@ function launch(HK, velocity, options) {
   world.body(world.box([t.WALL_THICKNESS, t.WALL_HEIGHT, t.WALL_WIDTH]), 0, [t.WALL_X, t.WALL_HEIGHT / 2, 0]);
   const cube = world.body(world.box([t.CUBE_SIDE, t.CUBE_SIDE, t.CUBE_SIDE]), t.CUBE_MASS, [t.LAUNCH_X, t.LAUNCH_Y, t.LAUNCH_Z]);
   HK.HP_Body_SetLinearVelocity(cube, [velocity, 0, 0]);
-  return {
-    step: () => world.step(),
-    cubeCentre: () => world.position(cube),
-    cubeVelocityX: () => world.velocity(cube)[0],
-    dispose: () => world.dispose(),
-  };
+  return launchedCube(world, cube);
 }
 
 function settingText(options) {

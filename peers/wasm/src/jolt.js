@@ -14,7 +14,7 @@
 // 1 m/s) and, on test10, sweeps the cube (motion quality LinearCast, Jolt's
 // continuous collision; also --ccd).
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout } = require('./rigs');
+const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;
@@ -208,12 +208,7 @@ function launch(Jolt, velocity, options) {
   const cube = world.body(world.box([t.CUBE_SIDE, t.CUBE_SIDE, t.CUBE_SIDE]), t.CUBE_MASS,
     [t.LAUNCH_X, t.LAUNCH_Y, t.LAUNCH_Z], { sweep });
   world.bodies.SetLinearVelocity(cube.GetID(), new Jolt.Vec3(velocity, 0, 0));
-  return {
-    step: () => world.step(),
-    cubeCentre: () => world.position(cube),
-    cubeVelocityX: () => world.velocity(cube)[0],
-    dispose: () => world.dispose(),
-  };
+  return launchedCube(world, cube);
 }
 
 function settingText(options) {

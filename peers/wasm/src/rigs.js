@@ -81,4 +81,15 @@ function uprightReadout(world, small, big) {
   };
 }
 
-module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout };
+// test10's launch, as the measurement reads it, for an engine whose world
+// wrapper has step(), position(body), velocity(body) and dispose().
+function launchedCube(world, cube) {
+  return {
+    step: () => world.step(),
+    cubeCentre: () => world.position(cube),
+    cubeVelocityX: () => world.velocity(cube)[0],
+    dispose: () => world.dispose(),
+  };
+}
+
+module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube };
