@@ -42,31 +42,12 @@ namespace {
 
 using namespace odelab;
 
-constexpr double PLATFORM_SIDE = 10.0;
-constexpr double PLATFORM_THICKNESS = 0.2;  // top face at y = 0
-using scene::test5::PLATE_MASS;  // the plate: SceneConstants.h (shared with peers/)
-using scene::test5::PLATE_THICKNESS;
-using scene::test5::PLATE_WIDTH;
-constexpr double SPAWN_HEIGHT = 6.0;       // plate centre when dropped
-constexpr double SPAWN_ABOVE_STACK = 1.0;  // (proposed) once the stack nears 6 m, drop this far above its top
-constexpr double DEFAULT_SPAWN_INTERVAL = 0.3;  // s, headless (proposed): 50 plates land within 20 s
-constexpr int DEFAULT_PLATES = 50;              // headless plate count (proposed)
-// A plate has landed once it is older than LANDING_MIN_AGE (so it had time to
-// start falling) and slower than LANDED_SPEED; from then on it is part of the stack.
-constexpr double LANDING_MIN_AGE = 0.1;  // s
-constexpr double LANDED_SPEED = 0.05;    // m/s
+using namespace scene::test5;  // the platform, the plates and their drops: SceneConstants.h (shared with peers/)
 constexpr double COST_WINDOW = 1.0;      // simulated seconds averaged by ms_per_step
-// Plates dropped in quick succession (N held down) start at least this far
-// apart, centre to centre, so a new plate never overlaps one still falling.
-constexpr double MIN_SPAWN_SEPARATION = 2 * PLATE_THICKNESS;
 // ODE's default auto-disable thresholds (m/s and rad/s); the thesis tried
 // raising the linear one to 0.3.
 constexpr double ODE_DEFAULT_DISABLE_THRESHOLD = 0.01;
 constexpr int MAX_THREADS = 64;
-// A disabled plate whose bottom face is this far above the top of the plate
-// (or platform) below it is not resting on the stack: auto-disable froze it
-// in the air.
-constexpr double FROZEN_GAP = 0.01;  // m
 
 struct Plate {
   Box* box;
