@@ -42,7 +42,7 @@ std::string firstBlowUp(double speed, double spin, int steps) {
   scene.initialize(options);
   std::string reason;
   for (int i = 0; i < steps && reason.empty(); ++i)
-    if (!scene.stepOnce()) reason = scene.blowUpReason();
+    if (!scene.stepOnce()) reason = scene.run().blowUpReason();
   scene.shutdown();
   return reason;
 }
