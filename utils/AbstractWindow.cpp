@@ -386,12 +386,10 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
       {"test", title_},
       {"ode_version", dODE_VERSION},
       {"ode_precision", dCheckConfiguration("ODE_double_precision") ? "double" : "single"},
-      {"step_seconds", formatValue(settings_.step)},
-      {"erp", formatValue(settings_.erp)},
-      {"cfm", formatValue(settings_.cfm)},
-      {"solver", settings_.solver == Solver::QuickStep ? "quick (dWorldQuickStep)" : "step (dWorldStep)"},
-      {"iterations", std::to_string(settings_.iterations)},
-      {"sor_w", formatValue(settings_.sor)},
+  };
+  // Every setting of the table (SettingsTable.h), then what the table does not tune.
+  for (auto& setting : settingsHeader(settings_)) description.push_back(std::move(setting));
+  const std::vector<std::pair<std::string, std::string>> rest{
       {"gravity", formatValue(settings_.gravity)},
       {"space", spaceKindName(spaceKind_)},
       {"seed", std::to_string(options_.seed)},
@@ -401,6 +399,7 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
        : options_.headless  ? formatValue(defaultHeadlessSeconds())
                             : std::string("until the window is closed")},
   };
+  description.insert(description.end(), rest.begin(), rest.end());
   if (contactChoicesUsed_) {
     description.push_back({"contact_mu", ContactChoices::muText(contact_.mu)});
     description.push_back({"max_contacts_per_pair", std::to_string(contact_.contactLimit())});
