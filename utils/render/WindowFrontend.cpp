@@ -372,7 +372,7 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
 #ifdef __EMSCRIPTEN__
     // Built only now that the window can run, so that a refused window run
     // (no display, unusable shaders or font) leaves no output file behind.
-    if (!scene->world()) scene->initialize(options);
+    if (!scene->run().world()) scene->initialize(options);
     // The frames outlive this call and the caller's options: they keep a
     // copy for the page's life. A page runs one scene (no switching).
     const RunOptions& frameOptions = *new RunOptions(options);
