@@ -83,7 +83,7 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   void endDrag();
   const AbstractObject* draggedObject() const;
   void replayTo(long long step);  // resets and replays up to `step`; leaves it paused
-  void offerSceneSwitch(const std::string& sceneList);  // the launcher's Page Down / Up (switchRequest())
+  void offerSceneSwitch(std::vector<SceneChoice> scenes, int current);  // the launcher's Page Down / Up
   void mark(const std::string& label);  // step, time and state hash as metrics mark_<label>_*
   void applySettings(const std::string& change);  // settings() to the world now; reports `change`
   void setSpaceKind(SpaceKind kind);  // moves every geom into a new space of that kind

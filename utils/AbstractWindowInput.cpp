@@ -173,13 +173,12 @@ void AbstractWindow::bindSharedKeys() {
   }
 }
 
-void AbstractWindow::offerSceneSwitch(const std::string& sceneList) {
-  const auto ask = [this](int direction) {
-    switchRequest_ = direction;
-    quitRequested_ = true;
-  };
-  bindViewKey(SDLK_PAGEDOWN, "PageDown", "next scene of " + sceneList, [ask](int) { ask(+1); });
-  bindViewKey(SDLK_PAGEUP, "PageUp", "previous scene", [ask](int) { ask(-1); });
+void AbstractWindow::offerSceneSwitch(std::vector<SceneChoice> scenes, int current) {
+  const std::string list = scenes.front().name + " ... " + scenes.back().name + " (odelab --list)";
+  sceneChoices_ = std::move(scenes);
+  currentScene_ = current;
+  bindViewKey(SDLK_PAGEDOWN, "PageDown", "next scene of " + list, [this](int) { requestSceneSwitch(+1); });
+  bindViewKey(SDLK_PAGEUP, "PageUp", "previous scene", [this](int) { requestSceneSwitch(-1); });
 }
 
 void AbstractWindow::beginDrag(const PickHit& hit, const double target[3]) {

@@ -22,6 +22,11 @@ namespace odelab {
 // screenshot). Headless runs carry it too, idle. AbstractWindow feeds it
 // from its step and its keys; the front end reads it through
 // AbstractWindow::session().
+// A scene the launcher offers: "test4" and its one-line description.
+struct SceneChoice {
+  std::string name, description;
+};
+
 class SessionTools {
  public:
   TimeControl& time() { return time_; }
@@ -33,7 +38,17 @@ class SessionTools {
   HudMode hudMode() const { return hudMode_; }
   bool quitRequested() const { return quitRequested_; }
   void requestQuit() { quitRequested_ = true; }
-  int switchRequest() const { return switchRequest_; }  // +1 next scene, -1 previous, 0 none
+  // The launcher's window: its scenes (none in a program of its own), the
+  // one on screen, and a request that ends this scene's frame loop asking
+  // for the scene `offset` places on in the list, wrapping (0: none).
+  const std::vector<SceneChoice>& sceneChoices() const { return sceneChoices_; }
+  int currentScene() const { return currentScene_; }
+  void requestSceneSwitch(int offset) {
+    if (offset == 0) return;
+    switchRequest_ = offset;
+    quitRequested_ = true;
+  }
+  int switchRequest() const { return switchRequest_; }
   bool mouseLook() const { return mouseLook_; }
   void toggleMouseLook() { mouseLook_ = !mouseLook_; }
   bool takeScreenshotRequest();  // true once per F12 press
@@ -58,6 +73,8 @@ class SessionTools {
   HudMode hudMode_ = HudMode::Compact;
   bool quitRequested_ = false;
   int switchRequest_ = 0;
+  std::vector<SceneChoice> sceneChoices_;
+  int currentScene_ = -1;
   bool mouseLook_ = false;
   bool screenshotRequested_ = false;
   std::string notice_, failure_;

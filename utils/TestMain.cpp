@@ -115,7 +115,7 @@ int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* swi
   std::unique_ptr<AbstractWindow> scene;
   try {
     scene = entry.make();
-    if (switching) scene->offerSceneSwitch(switching->sceneList());
+    if (switching) scene->offerSceneSwitch(switching->scenes(), switching->current());
   } catch (const std::logic_error& error) {
     std::cerr << "error: scene declaration: " << error.what() << '\n';
     return exit_code::RUNTIME_ERROR;

@@ -202,6 +202,21 @@ bool ControlPanel::edit(const std::string& label, double& value, double min, dou
   return true;
 }
 
+void ControlPanel::sceneList(AbstractWindow& scene) {
+  SessionTools& session = scene.session();
+  const std::vector<SceneChoice>& choices = session.sceneChoices();
+  if (choices.empty()) return;
+  // Open at first: choosing a scene is what the launcher is for.
+  if (!ImGui::CollapsingHeader("Scenes (Page Down / Up)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  for (int i = 0; i < static_cast<int>(choices.size()); ++i) {
+    const bool current = i == session.currentScene();
+    const std::string row = choices[i].name + (current ? "   (on screen)" : "");
+    if (ImGui::Selectable(row.c_str(), current)) session.requestSceneSwitch(i - session.currentScene());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choices[i].description.c_str());
+  }
+  ImGui::Separator();
+}
+
 void ControlPanel::timeButtons(AbstractWindow& scene) {
   auto press = [&scene](SDL_Keycode key) { scene.handleKey(key, false); };
   if (ImGui::Button(scene.session().time().paused() ? "Run (P)" : "Pause (P)")) press(SDLK_p);
@@ -348,7 +363,9 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
     ImGui::Begin("Controls (Tab hides)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                                       ImGuiWindowFlags_NoCollapse);
     // The world settings come first, where every scene has them at the
-    // same place; then the scene's own keys, the drawing and its values.
+    // same place (after the launcher's scene list); then the scene's own
+    // keys, the drawing and its values.
+    sceneList(scene);
     timeButtons(scene);
     ImGui::Separator();
     settings(scene);
