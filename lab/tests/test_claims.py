@@ -10,7 +10,9 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import check_docs  # noqa: E402
-from odelab_report.claims import Claim, Data, Sentences, q, read_rows, recheck  # noqa: E402
+import check_report  # noqa: E402
+from odelab_report import csvout  # noqa: E402
+from odelab_report.claims import HEADLINE, Claim, Data, Sentences, q, read_rows, recheck, slot  # noqa: E402
 
 CSV = "# ODE: test\nsolver,step_s,error\nQuickStep 20,0.001,0.25\nQuickStep 20,0.01,0.5\ndWorldStep,0.001,1e-9\n"
 
@@ -52,6 +54,60 @@ class Claims(unittest.TestCase):
         self.assertEqual(data.lookup(q("speed.csv", "error", "median", solver="QuickStep 20")), 0.375)
         self.assertEqual(data.lookup(q("speed.csv", "solver", "texts", step_s=0.001)), ["QuickStep 20", "dWorldStep"])
         self.assertEqual(len(read_rows(self.folder / "speed.csv")), 3)
+
+
+class SectionSentences(unittest.TestCase):
+    """A conclusion in a section's prose or the headline findings is a claim
+    like a cell of the first table: shown when its rule holds, recorded with
+    where it stands, and checked there by check_report.py."""
+
+    def setUp(self):
+        self.folder = Path(tempfile.mkdtemp())
+        (self.folder / "speed.csv").write_text(CSV)
+        self.smaller = Claim("speed.smaller", "A smaller step lowers the error: {c:n2} at 0.01, {f:n2} at 0.001.",
+                             {"c": q("speed.csv", "error", solver="QuickStep 20", step_s=0.01),
+                              "f": q("speed.csv", "error", solver="QuickStep 20", step_s=0.001)}, "f < c")
+        self.larger = Claim("speed.larger", "A smaller step does not lower the error.", dict(self.smaller.values),
+                            "f >= c")
+
+    def report(self, prose, headline):
+        """RESULTS.md and claims.csv as results_md writes them."""
+        sentences = Sentences(Data(self.folder))
+        body = sentences.fill(prose, {"step": [self.larger, self.smaller]}, "speed")
+        found = sentences.say(headline, place=HEADLINE)
+        text = "\n".join(["# report", "", "## Headline findings", "", f"- {found}", "",
+                           "### speed (`--only speed`)", "", body, ""])
+        (self.folder / "RESULTS.md").write_text(text)
+        csvout.write_csv(self.folder / "claims.csv", [("ODE", "test")], Sentences.COLUMNS, sentences.shown)
+        return text
+
+    def test_the_slot_takes_the_sentence_whose_rule_holds(self):
+        sentences = Sentences(Data(self.folder))
+        text = sentences.fill(f"How to read it: {slot('step')}", {"step": [self.larger, self.smaller]}, "speed")
+        self.assertEqual(text, "How to read it: A smaller step lowers the error: 0.5 at 0.01, 0.25 at 0.001.")
+        self.assertEqual([(row["key"], row["place"]) for row in sentences.shown], [("speed.smaller", "speed")])
+
+    def test_no_sentence_when_no_rule_holds(self):
+        sentences = Sentences(Data(self.folder))
+        self.assertEqual(sentences.fill(f"[{slot('step')}]", {"step": self.larger}, "speed"), "[]")
+
+    def test_the_check_passes_a_true_report(self):
+        text = self.report(f"How to read it: {slot('step')}", self.smaller)
+        self.assertEqual(check_report.check_sentences(self.folder, text), [])
+        self.assertEqual(recheck(self.folder, read_rows(self.folder / "claims.csv")), [])
+
+    def test_the_check_fails_a_sentence_whose_data_changed(self):
+        self.report(f"How to read it: {slot('step')}", self.smaller)
+        (self.folder / "speed.csv").write_text(CSV.replace("0.25", "0.75"))  # the step no longer helps
+        problems = recheck(self.folder, read_rows(self.folder / "claims.csv"))
+        self.assertTrue(any("does not hold" in p for p in problems), problems)
+
+    def test_the_check_fails_a_typed_headline_or_an_edited_sentence(self):
+        text = self.report(f"How to read it: {slot('step')}", self.smaller)
+        typed = text.replace("## Headline findings\n\n", "## Headline findings\n\n- test2: exact, whatever.\n")
+        self.assertTrue(any("no claim" in p for p in check_report.check_sentences(self.folder, typed)))
+        edited = text.replace("0.25 at 0.001", "0.2 at 0.001")
+        self.assertTrue(any("not in RESULTS.md's speed" in p for p in check_report.check_sentences(self.folder, edited)))
 
 
 class DocsFigures(unittest.TestCase):

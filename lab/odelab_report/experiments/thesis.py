@@ -7,6 +7,7 @@ import csv
 from pathlib import Path
 
 from .. import markdown as md
+from ..claims import Claim, q
 from ..header import ode_version
 from ..runner import LabError, RunSpec, median
 from .base import Experiment, Outcome
@@ -17,6 +18,13 @@ from . import thesis_choices as choices
 
 REFERENCE = Path(__file__).resolve().parents[2] / "reference" / "thesis-figures.csv"
 CLOSE = 1.5  # "about X" is reproduced when this build's figure is within a factor 1.5 of X
+_VERDICTS = {"v": q("thesis.csv", "verdict", "texts"), "first": "[x.split(';')[0] for x in v]",
+             "n": "len(v)", "ok": "first.count('reproduced')", "partly": "first.count('partly')",
+             "differs": "first.count('differs')", "untested": "first.count('not tested')",
+             "choice": "sum('; reproduced with' in x for x in v)"}
+HEADLINE = Claim("headline.thesis", "The thesis: {ok} of {n} claims reproduced, {partly} partly, {differs} differ at "
+                 "the scenes' defaults, {untested} not tested; {choice} of the others reproduced with another value "
+                 "of a choice the thesis does not state (details in section 1).", _VERDICTS, "n > 0")
 
 
 def about(measured, thesis):
@@ -216,10 +224,7 @@ Rules and commands (every command adds `--headless`):
 {commands}
 
 {md.files_line([csv_name, values_name])}"""
-        headline = [f"The thesis: {counts['reproduced']} of {len(rows)} claims reproduced, {counts['partly']} partly, "
-                    f"{counts['differs']} differ at the scenes' defaults, {counts['not tested']} not tested; {with_choice} of the others reproduced with another value of a "
-                    f"choice the thesis does not state (details in section 1)."]
-        return Outcome(text, headline)
+        return Outcome(text, [HEADLINE])
 
     def second_build(self, ctx, specs, timed, keys):
         """The rows measured again with the programs of --second-build: the
