@@ -7,7 +7,7 @@ import csv
 from pathlib import Path
 
 from .. import markdown as md
-from ..claims import Claim, q
+from ..claims import Claim, q, slot
 from ..header import ode_version
 from ..runner import LabError, RunSpec, median
 from .base import Experiment, Outcome
@@ -22,6 +22,10 @@ _VERDICTS = {"v": q("thesis.csv", "verdict", "texts"), "first": "[x.split(';')[0
              "n": "len(v)", "ok": "first.count('reproduced')", "partly": "first.count('partly')",
              "differs": "first.count('differs')", "untested": "first.count('not tested')",
              "choice": "sum('; reproduced with' in x for x in v)"}
+COUNTS = Claim("thesis.counts", "{ok} reproduced, {partly} partly, {differs} differ at the scenes' defaults, "
+               "{untested} not tested (no metric shows them); {choice} of those not reproduced are reproduced with "
+               "another value of a choice the thesis does not state (the last column: what was varied, over which "
+               "values, and what it gave).", _VERDICTS, "n > 0")
 HEADLINE = Claim("headline.thesis", "The thesis: {ok} of {n} claims reproduced, {partly} partly, {differs} differ at "
                  "the scenes' defaults, {untested} not tested; {choice} of the others reproduced with another value "
                  "of a choice the thesis does not state (details in section 1).", _VERDICTS, "n > 0")
@@ -206,15 +210,10 @@ class Thesis(Experiment):
                           for r in rows])
         commands = md.table(["test", "conditions", "rule for the verdict", "command (build/tests/...)"],
                             [[r["test"], r["conditions"], r["rule"], f"`{r['command']}`"] for r in rows])
-        counts = {v: sum(r["verdict"].split(";")[0] == v for r in rows) for v in ("reproduced", "partly", "differs", "not tested")}
-        with_choice = sum("; reproduced with" in r["verdict"] for r in rows)
         text = f"""Each row of the thesis's figures, measured at the thesis's settings{" (quick: shorter runs)" if q else ""}.
 A verdict is computed from the measurement by the rule in the second table: a figure the thesis gives as
 "about X" is reproduced within a factor {CLOSE}; a yes/no observation by the stated check.
-{counts['reproduced']} reproduced, {counts['partly']} partly, {counts['differs']} differ at the scenes' defaults,
-{counts['not tested']} not tested (no metric shows them);
-{with_choice} of those not reproduced are reproduced with another value of a choice the thesis does not state
-(the last column: what was varied, over which values, and what it gave). The "ODE 0.11.1 rebuilt" column is
+{slot("counts")} The "ODE 0.11.1 rebuilt" column is
 the programs of commit {rebuild_commit} built against the thesis's ODE version (lab/reference/ode-0.11.1-rebuild.csv){', and the "--second-build" column these programs built against another ODE' if second else ''}.
 
 {table}
@@ -224,7 +223,7 @@ Rules and commands (every command adds `--headless`):
 {commands}
 
 {md.files_line([csv_name, values_name])}"""
-        return Outcome(text, [HEADLINE])
+        return Outcome(text, [HEADLINE], claims={"counts": COUNTS})
 
     def second_build(self, ctx, specs, timed, keys):
         """The rows measured again with the programs of --second-build: the
