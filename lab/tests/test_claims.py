@@ -168,6 +168,16 @@ class DocsShortFigures(unittest.TestCase):
         self.assertEqual(self.problems("test9.md", text), [])
         self.assertEqual(len(self.problems("test9.md", "a share of 0.2.\n")), 1)
 
+    def test_pending_lines_hold_back_a_page_its_short_figures_or_one_figure(self):
+        (self.root / "lab" / "reference").mkdir(parents=True)
+        pending = self.root / "lab" / "reference" / "docs-pending.txt"
+        text = "the error is 0.003 after 20 bounces; the build took 366 s.\n"
+        self.assertEqual(len(self.problems("test4.md", text)), 2)
+        pending.write_text('doc/tests/test4.md short  # why\ndoc/tests/test4.md "366 s"  # too long to redo\n')
+        self.assertEqual(self.problems("test4.md", text), [])
+        pending.write_text('doc/tests/test4.md "366 s"  # too long to redo\n')
+        self.assertEqual(len(self.problems("test4.md", text)), 1)
+
     def test_the_committed_tree_passes(self):
         root = Path(__file__).resolve().parents[2]
         failing = [p for waiting, p in check_docs.check(root)[0] if not waiting]
