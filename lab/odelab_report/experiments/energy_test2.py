@@ -97,7 +97,8 @@ class EnergyTest2(Experiment):
                 thesis_min_J=thesis_min, thesis_max_J=thesis_max, thesis_variation=thesis_variation)],
             notes=["test2's metrics over every step of the run above: variation = (max - min) / max of the total "
                    "energy (the thesis's definition), max_deviation = largest |E - E0| / E0, drift = (last - first) / "
-                   "first; period_exact_s: the metric period_exact_seconds; thesis_*: lab/reference/thesis-figures.csv"])
+                   "first; period_exact_s: the metric period_exact_seconds; thesis_*: "
+                   "lab/reference/thesis-figures.csv"])
         ctx.register_files(plots.energy_curves(ctx.out_dir, "energy-test2", rows, start,
                                                (thesis_min, thesis_max), FAILURE_FRACTION))
         table = md.table(["quantity", "thesis (ODE 0.11.1)", "this build"], [

@@ -43,7 +43,8 @@ READING = {
                      _BY_CFM, "len(decades) > 0"),
     "zero": Claim("limit-test9.zero", "CFM 0 loses {zero:n2} of the drop per bounce.", _BY_CFM, "zero is not None"),
 }
-_LOST = {"z": _apex("relative_error", "one", cfm=0, bounce=20), "m6": _apex("relative_error", "one", cfm=1e-6, bounce=20),
+_LOST = {"z": _apex("relative_error", "one", cfm=0, bounce=20),
+         "m6": _apex("relative_error", "one", cfm=1e-6, bounce=20),
          "m5": _apex("relative_error", "one", cfm=1e-5, bounce=20)}
 _LOSSES = "; CFM 1e-6 loses {m6:p} of the height after 20 bounces, CFM 1e-5 {m5:p}."
 # Exact as the thesis has it: to six decimals of the drop.

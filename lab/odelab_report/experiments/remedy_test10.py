@@ -67,6 +67,7 @@ HEADLINE = [_ccd_headline(),
             Claim("headline.test10.no-ccd", "test10: no --ccd option in this build; remedy not measured.",
                   {"n": q("remedy-test10.csv", "setting", "count", setting="--ccd")}, "n == 0")]
 
+
 class RemedyTest10(Experiment):
     name = "remedy-test10"
     title = "test10 remedy: continuous collision (--ccd)"

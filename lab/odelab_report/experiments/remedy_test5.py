@@ -40,6 +40,7 @@ HEADLINE = [Claim("headline.test5.remedy.auto", _HEADLINE + " (auto-disable: the
                   "building it costs {whole:n} ms per step over the run).", _BEST, "auto"),
             Claim("headline.test5.remedy", _HEADLINE + ".", _BEST, "not auto")]
 
+
 class RemedyTest5(Experiment):
     name = "remedy-test5"
     title = "test5 remedy: settings for the tallest stack in real time"
@@ -122,6 +123,7 @@ class RemedyTest5(Experiment):
               f"{md.num(r['first_failing_plates'])}: {r['failure']}" if r["first_failing_plates"] else "-"]
              for r in rows])
         best = max(rows, key=lambda r: r["tallest_plates"] or 0)
+        why_text, why_claims = stack_tuning.why_it_wins(descent, search_csv)
         text = f"""Each setting is searched with limit-test5's rule (real time: the program's CPU time per
 step over the last simulated second, `cpu_ms_per_step`, at most the step; aligned: every plate in the stack, no plate centre more than
 0.1 m off the axis or turned more than 2 degrees). The spaces and iteration
@@ -179,9 +181,9 @@ within that scatter unless they change the stack itself (its height or offset).
 Why it wins, coordinate by coordinate (the margin at {stack_tuning.TARGET[quick]} plates of the
 value kept and of the others):
 
-{stack_tuning.why_it_wins(descent)}
+{why_text}
 
 {stack_tuning.descent_table(descent)}
 
 {md.files_line([csv, search_csv])}"""
-        return Outcome(text, [HEADLINE])
+        return Outcome(text, [HEADLINE], claims=why_claims)
