@@ -5,7 +5,7 @@ steps log-spaced from 1e-2 to 1e-4. The cheapest setting reaching 1%, 0.1%
 and 0.01% is marked and tabulated."""
 
 from .. import markdown as md
-from ..claims import Claim
+from ..claims import Claim, q, slot
 from ..first_screen import speed_lookups
 from ..plots import speed as plots
 from ..runner import RunSpec, median
@@ -108,14 +108,11 @@ class SpeedAccuracy(Experiment):
             else:
                 table_rows.append([md.pct(threshold), best["solver"], md.num(best["step_s"]),
                                    md.num(best["error"], 2), md.num(best["wall_per_sim_second"], 3)])
-        blown = [r for r in rows if r["exit_status"] != 0]
-        blown_text = ("Runs that blew up (not plotted): " + ", ".join(
-            f"{r['solver']} at step {md.num(r['step_s'])}" for r in blown) + ".") if blown else ""
         text = f"""Error: {self.error_name}; the exact answer is {self.exact}. {self.settings_text(ctx.quick)}
 One point per solver setting and step. The error comes from one run of the
 length above; x is the program's own `wall_seconds` per simulated second, from
 {"the same run" if ctx.quick else f"runs of at least {MIN_TIMED_STEPS} steps (longer than the accuracy run at large steps; the median of {REPEATS} interleaved runs where a run is under 100 000 steps, else 1)"}.
-{blown_text}
+{slot("blown")}
 
 {md.table(["error at most", "cheapest setting", "step (s)", "its error", "wall s per simulated s"], table_rows)}
 
@@ -131,7 +128,16 @@ smaller step does not)."""
         summary = [[f"{self.program}: {self.error_name}", md.pct(t)] +
                    ([b["solver"], md.num(b["step_s"]), md.num(b["error"], 2), md.num(b["wall_per_sim_second"], 3)]
                     if b else ["not reached", "-", "-", "-"]) for t, b in cheapest]
-        return Outcome(text, [self.headline()], summary=summary)
+        return Outcome(text, [self.headline()], summary=summary, claims={"blown": self.blown()})
+
+    def blown(self):
+        """The runs that ended with a non-zero status (not plotted), from the CSV."""
+        f = f"speed-{self.program}.csv"
+        return Claim(f"{self.name}.blown", "Runs that blew up (not plotted): {which}.",
+                     {"solvers": q(f, "solver", "texts"), "steps": q(f, "step_s", "list"),
+                      "status": q(f, "exit_status", "list"),
+                      "which": "', '.join(s + ' at step ' + num(h) for s, h, x in zip(solvers, steps, status) if x)"},
+                     "any(status)")
 
     def headline(self):
         """The cheapest settings per error level, ties within the timing's
