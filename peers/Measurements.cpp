@@ -34,6 +34,7 @@ double defaultSeconds(const std::string& scene) {
   if (scene == "test8") return scene::test8::RUN_SECONDS;
   if (scene == "test9") return scene::test9::RUN_SECONDS;
   if (scene == "test4") return scene::test4::RUN_SECONDS;
+  if (scene == "test7") return scene::test7::DEFAULT_THROWS * scene::test7::DEFAULT_THROW_INTERVAL;
   return 0.0;  // test10 runs launches until each is resolved
 }
 
@@ -160,6 +161,55 @@ Tally measureHold(Engine& engine, const RunOptions& options, Metrics& metrics) {
   metrics.set("held", held ? 1 : 0);
   metrics.set("max_tilt_degrees", maxTilt);
   metrics.set("max_penetration", maxPenetration);
+  return tally;
+}
+
+namespace {
+
+// The test cube is past the pivot, level with it: beyond the pivot's far
+// face in x while its outline overlaps the pivot's in y and z. A cube thrown
+// at the pivot gets there only through it (a contact too soft to stop it).
+bool beyondPivot(const Vec3& pivot, const Vec3& cube) {
+  using namespace scene::test7;
+  const double touching = (PIVOT_SIDE + TEST_CUBE_SIDE) / 2;
+  return cube.x - pivot.x > touching && std::fabs(cube.y - pivot.y) < touching && std::fabs(cube.z - pivot.z) < touching;
+}
+
+}  // namespace
+
+// test7: the largest ball-joint error and the pivot's largest spin while the
+// test cube is thrown at 0, S, 2S, ... (test7's headless run: DEFAULT_THROWS
+// throws DEFAULT_THROW_INTERVAL apart; a longer --seconds runs on after them).
+Tally measureJoints(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  using namespace scene::test7;
+  auto pair = engine.hangingPair(options);  // built with the first throw made
+  const long throwEvery = std::lround(DEFAULT_THROW_INTERVAL / options.step);
+  int throws = 1;
+  double maxError = 0.0, maxSpin = 0.0;
+  bool passed = false;
+  Tally tally;
+  for (long i = 0, n = stepsFor(options); i < n; ++i) {
+    if (i > 0 && i % throwEvery == 0 && throws < DEFAULT_THROWS) {
+      pair->throwCube();
+      ++throws;
+    }
+    pair->step();
+    const double error = pair->jointError(), spin = pair->pivotAngularSpeed();
+    if (!std::isfinite(error) || !std::isfinite(spin)) {
+      tally.finite = false;
+      break;
+    }
+    ++tally.steps;
+    maxError = std::max(maxError, error);
+    maxSpin = std::max(maxSpin, spin);
+    passed = passed || beyondPivot(pair->pivotCentre(), pair->testCubeCentre());
+  }
+  tally.simSeconds = tally.steps * options.step;
+  metrics.set("max_joint_error", maxError);
+  metrics.set("max_angular_speed", maxSpin);
+  metrics.set("max_angular_speed_limit", 0);  // no peer caps the spin (test7's --max-angular-speed 0)
+  metrics.set("throws", throws);
+  metrics.set("cube_passed_pivot", passed ? 1 : 0);
   return tally;
 }
 

@@ -23,5 +23,6 @@ Tally measureElongation(Engine& engine, const RunOptions& options, Metrics& metr
 Tally measureBounces(Engine& engine, const RunOptions& options, Metrics& metrics);     // test9
 Tally measureHold(Engine& engine, const RunOptions& options, Metrics& metrics);        // test4
 Tally measureWall(Engine& engine, const RunOptions& options, Metrics& metrics);        // test10
+Tally measureJoints(Engine& engine, const RunOptions& options, Metrics& metrics);      // test7
 
 }  // namespace odelab::peers

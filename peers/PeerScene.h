@@ -72,6 +72,23 @@ class LaunchModel {
   virtual double cubeVelocityX() const = 0;
 };
 
+// test7: the pivot hanging from the world on a ball joint, the big cube
+// hanging from the pivot on another, and the test cube thrown at the pivot
+// (built with the first throw made).
+class HangingPairModel {
+ public:
+  virtual ~HangingPairModel() = default;
+  virtual void step() = 0;
+  // The test cube back where it is thrown from, unturned, at the throw's velocity.
+  virtual void throwCube() = 0;
+  // The larger of the two joints' errors: the distance between where each of
+  // the two joined bodies (or the fixed point) holds the joint's anchor, m.
+  virtual double jointError() const = 0;
+  virtual double pivotAngularSpeed() const = 0;  // rad/s
+  virtual Vec3 pivotCentre() const = 0;
+  virtual Vec3 testCubeCentre() const = 0;
+};
+
 class Engine {
  public:
   virtual ~Engine() = default;
@@ -83,10 +100,11 @@ class Engine {
   virtual std::unique_ptr<BallModel> ball(const RunOptions& options) = 0;
   virtual std::unique_ptr<StackModel> stack(double bigMass, const RunOptions& options) = 0;
   virtual std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& options) = 0;
+  virtual std::unique_ptr<HangingPairModel> hangingPair(const RunOptions& options) = 0;
 };
 
-// An engine made of its four scene models: the factories written once.
-template <class Pendulum, class Ball, class Stack, class Launch>
+// An engine made of its scene models: the factories written once.
+template <class Pendulum, class Ball, class Stack, class Launch, class HangingPair>
 class EngineOf : public Engine {
  public:
   std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& o) override {
@@ -98,6 +116,9 @@ class EngineOf : public Engine {
   }
   std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& o) override {
     return std::make_unique<Launch>(velocity, o);
+  }
+  std::unique_ptr<HangingPairModel> hangingPair(const RunOptions& o) override {
+    return std::make_unique<HangingPair>(o);
   }
 };
 

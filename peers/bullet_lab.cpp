@@ -10,6 +10,7 @@
 
 #include "PeerScene.h"
 #include "Test10Scene.h"
+#include "Test7Scene.h"
 #include "WorldSettings.h"
 #include "shared/SceneConstants.h"
 
@@ -53,9 +54,11 @@ class BulletWorld {
     return body;
   }
 
+  // Bodies a constraint joins do not collide with each other, as in the
+  // ODE programs (their near callback skips connected bodies).
   void keep(btTypedConstraint* constraint) {
     constraints_.emplace_back(constraint);
-    world_.addConstraint(constraint);
+    world_.addConstraint(constraint, true);
   }
 
   // Fixed step, no substeps or interpolation (Bullet's default of
@@ -244,7 +247,65 @@ class BulletLaunch : public LaunchModel {
   btRigidBody* cube_ = nullptr;
 };
 
-class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLaunch> {
+// ---- test7 -------------------------------------------------------------------
+// Best for the hanging pair: as the pendulum's, joint ERP 1.0 and 100 solver
+// iterations (the 1000:1 mass ratio along the chain is what the sequential
+// impulses converge slowly on).
+class BulletHangingPair : public HangingPairModel {
+ public:
+  explicit BulletHangingPair(const RunOptions& options) : world_(SURFACE_GRAVITY), step_(options.step) {
+    using namespace odelab::peers::test7;
+    auto box = [](double side) { return new btBoxShape(btVector3(side / 2, side / 2, side / 2)); };
+    world_.add(new btStaticPlaneShape(btVector3(0, 1, 0), 0), 0.0, btVector3(0, 0, 0));
+    pivot_ = world_.add(box(PIVOT_SIDE), PIVOT_MASS, btVector3(0, PIVOT_CENTRE_Y, 0));
+    big_ = world_.add(box(BIG_SIDE), BIG_MASS, btVector3(0, BIG_CENTRE_Y, 0));
+    cube_ = world_.add(box(TEST_CUBE_SIDE), TEST_CUBE_MASS, btVector3(-THROW_DISTANCE, PIVOT_CENTRE_Y, 0));
+    for (int i = 0; i < world_.world().getNumCollisionObjects(); ++i)
+      world_.world().getCollisionObjectArray()[i]->setFriction(NO_SLIP_FRICTION);
+    top_ = new btPoint2PointConstraint(*pivot_, pivotTop_);
+    middle_ = new btPoint2PointConstraint(*pivot_, *big_, pivotBottom_, bigTop_);
+    world_.keep(top_);
+    world_.keep(middle_);
+    if (options.setting == Setting::Best) {
+      world_.solverInfo().m_erp = BEST_JOINT_ERP;
+      world_.solverInfo().m_numIterations = BEST_ITERATIONS;
+    }
+    throwCube();
+  }
+  void step() override { world_.step(step_); }
+  void throwCube() override {
+    using namespace odelab::peers::test7;
+    btTransform start;
+    start.setIdentity();
+    start.setOrigin(btVector3(-THROW_DISTANCE, PIVOT_CENTRE_Y, 0));
+    cube_->setCenterOfMassTransform(start);
+    cube_->getMotionState()->setWorldTransform(start);
+    const double a = throwElevation();
+    cube_->setLinearVelocity(btVector3(THROW_SPEED * std::cos(a), THROW_SPEED * std::sin(a), 0));
+    cube_->setAngularVelocity(btVector3(0, 0, 0));
+  }
+  double jointError() const override {
+    const btVector3 fixed(0, scene::test7::ANCHOR_HEIGHT, 0);
+    const double top = (pivot_->getCenterOfMassTransform() * pivotTop_ - fixed).length();
+    const double middle =
+        (pivot_->getCenterOfMassTransform() * pivotBottom_ - big_->getCenterOfMassTransform() * bigTop_).length();
+    return std::max(top, middle);
+  }
+  double pivotAngularSpeed() const override { return pivot_->getAngularVelocity().length(); }
+  Vec3 pivotCentre() const override { return toVec3(pivot_->getCenterOfMassPosition()); }
+  Vec3 testCubeCentre() const override { return toVec3(cube_->getCenterOfMassPosition()); }
+
+ private:
+  BulletWorld world_;
+  double step_;
+  btRigidBody *pivot_ = nullptr, *big_ = nullptr, *cube_ = nullptr;
+  btTypedConstraint *top_ = nullptr, *middle_ = nullptr;
+  // Each joint's anchor on each body, in the body's own frame.
+  const btVector3 pivotTop_{0, scene::test7::PIVOT_SIDE / 2, 0}, pivotBottom_{0, -scene::test7::PIVOT_SIDE / 2, 0};
+  const btVector3 bigTop_{0, scene::test7::BIG_SIDE / 2, 0};
+};
+
+class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLaunch, BulletHangingPair> {
  public:
   std::string name() const override { return "bullet"; }
   bool hasContinuousCollision() const override { return true; }
@@ -259,6 +320,10 @@ class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLa
                      "no restitution below 0.2 m/s)";
     else if (o.scene == "test4")
       text += best ? "100 iterations" : "Bullet's defaults (10 iterations, ERP 0.2, split impulse)";
+    else if (o.scene == "test7")
+      text += std::string(best ? "joint ERP 1.0, 100 iterations" : "joint ERP 0.2, 10 iterations (Bullet's defaults)") +
+              "; btPoint2PointConstraint ball joints, friction 100 on every shape (test7's never-sliding contacts), "
+              "no angular speed cap";
     else
       text += best ? "continuous collision on" : "Bullet's defaults (no continuous collision)";
     if (o.ccd || (best && o.scene == "test10")) text += "; CCD: motion threshold 0.1 m, swept sphere radius 0.18 m";

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <sstream>
@@ -16,6 +17,7 @@
 
 #include "PeerScene.h"
 #include "Test10Scene.h"
+#include "Test7Scene.h"
 #include "WorldSettings.h"
 #include "shared/SceneConstants.h"
 
@@ -246,7 +248,87 @@ class MujocoLaunch : public LaunchModel {
   MujocoScene scene_;
 };
 
-class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLaunch> {
+// ---- test7 -------------------------------------------------------------------
+// The pair is a chain of bodies in generalized coordinates: the pivot on a
+// ball joint to the world, the big cube on a ball joint to the pivot; the
+// joints cannot come apart, so their error is the rounding of the forward
+// kinematics. Best: as test4's, the stiffest contact at this step and
+// elliptic cones (the hit is a contact).
+class MujocoHangingPair : public HangingPairModel {
+ public:
+  explicit MujocoHangingPair(const RunOptions& o) : scene_(xml(o)) { throwCube(); }
+  void step() override {
+    scene_.step();
+    mj_kinematics(scene_.m(), scene_.d());  // the new state's poses (mj_step leaves the old ones)
+  }
+  void throwCube() override {
+    using namespace odelab::peers::test7;
+    double* q = scene_.d()->qpos + CUBE_QPOS;  // free joint: position, then quaternion w, x, y, z
+    const double position[7] = {-THROW_DISTANCE, PIVOT_CENTRE_Y, 0, 1, 0, 0, 0};
+    std::copy(position, position + 7, q);
+    double* v = scene_.d()->qvel + CUBE_QVEL;
+    const double a = throwElevation();
+    const double velocity[6] = {THROW_SPEED * std::cos(a), THROW_SPEED * std::sin(a), 0, 0, 0, 0};
+    std::copy(velocity, velocity + 6, v);
+    mj_kinematics(scene_.m(), scene_.d());
+  }
+  double jointError() const override {
+    using namespace odelab::scene::test7;
+    const Vec3 fixed{0, ANCHOR_HEIGHT, 0};
+    const double top = distanceBetween(pointOn(PIVOT, PIVOT_SIDE / 2), fixed);
+    const double middle = distanceBetween(pointOn(PIVOT, -PIVOT_SIDE / 2), pointOn(BIG, BIG_SIDE / 2));
+    return std::max(top, middle);
+  }
+  double pivotAngularSpeed() const override {
+    const double* w = scene_.d()->qvel;  // the pivot's ball joint: its angular velocity (in its own axes)
+    return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+  }
+  Vec3 pivotCentre() const override { return pointOn(PIVOT, 0); }
+  Vec3 testCubeCentre() const override {
+    const double* q = scene_.d()->qpos + CUBE_QPOS;
+    return {q[0], q[1], q[2]};
+  }
+
+ private:
+  static constexpr int PIVOT = 1, BIG = 2;            // bodies, in the order of the MJCF
+  static constexpr int CUBE_QPOS = 8, CUBE_QVEL = 6;  // after the two ball joints (4 + 4 and 3 + 3)
+  // The point at height `y` on a body's local y axis, in world coordinates.
+  Vec3 pointOn(int body, double y) const {
+    const double* p = scene_.d()->xpos + 3 * body;
+    const double* r = scene_.d()->xmat + 9 * body;  // row-major
+    return {p[0] + r[1] * y, p[1] + r[4] * y, p[2] + r[7] * y};
+  }
+  static double distanceBetween(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z); }
+  static std::string xml(const RunOptions& o) {
+    using namespace odelab::peers::test7;
+    const bool best = o.setting == Setting::Best;
+    auto box = [](double side, double mass) {
+      std::ostringstream g;
+      g.precision(17);
+      g << "<geom type=\"box\" size=\"" << side / 2 << ' ' << side / 2 << ' ' << side / 2 << "\" mass=\"" << mass
+        << "\"/>";
+      return g.str();
+    };
+    std::ostringstream s;
+    s.precision(17);
+    s << header("odelab-test7", o.step, SURFACE_GRAVITY, "Euler", best ? "cone=\"elliptic\"" : "")
+      << "  <default><geom friction=\"" << NO_SLIP_FRICTION << " 0.005 0.0001\"";
+    if (best) s << " solref=\"" << 2 * o.step << " 1\"";
+    s << "/></default>\n  <worldbody>\n" << GROUND
+      << "    <body pos=\"0 " << PIVOT_CENTRE_Y << " 0\">\n"
+      << "      <joint type=\"ball\" pos=\"0 " << PIVOT_SIDE / 2 << " 0\"/>\n      " << box(PIVOT_SIDE, PIVOT_MASS) << '\n'
+      << "      <body pos=\"0 " << BIG_CENTRE_Y - PIVOT_CENTRE_Y << " 0\">\n"
+      << "        <joint type=\"ball\" pos=\"0 " << BIG_SIDE / 2 << " 0\"/>\n        " << box(BIG_SIDE, BIG_MASS) << '\n'
+      << "      </body>\n    </body>\n"
+      << "    <body pos=\"" << -THROW_DISTANCE << ' ' << PIVOT_CENTRE_Y << " 0\">\n      <freejoint/>\n      "
+      << box(TEST_CUBE_SIDE, TEST_CUBE_MASS) << "\n    </body>\n"
+      << "  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  MujocoScene scene_;
+};
+
+class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLaunch, MujocoHangingPair> {
  public:
   std::string name() const override { return "mujoco"; }
   std::string settingText(const RunOptions& o) const override {
@@ -259,6 +341,10 @@ class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLa
                    : "no restitution in MuJoCo: its default contact (solref 0.02 1, critically damped)";
     else if (o.scene == "test4")
       text += best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones" : "MuJoCo's defaults";
+    else if (o.scene == "test7")
+      text += std::string(best ? "contact time constant 2 steps (solref 2h 1), elliptic cones" : "MuJoCo's defaults") +
+              "; ball joints in generalized coordinates, friction 100 (test7's never-sliding contacts), no angular "
+              "speed cap";
     else
       text += best ? "contact time constant 2 steps (solref 2h 1)" : "MuJoCo's defaults (solref 0.02 1)";
     return text;

@@ -97,6 +97,17 @@ struct ReplayLaunch : LaunchModel {
   Cursor c;
 };
 
+struct ReplayHangingPair : HangingPairModel {
+  explicit ReplayHangingPair(const Trajectory& t) : c(t) {}
+  void step() override { c.step(); }
+  void throwCube() override {}  // the throws are in the recording
+  double jointError() const override { return c.at(0); }
+  double pivotAngularSpeed() const override { return c.at(1); }
+  Vec3 pivotCentre() const override { return {c.at(2), c.at(3), c.at(4)}; }
+  Vec3 testCubeCentre() const override { return {c.at(5), c.at(6), c.at(7)}; }
+  Cursor c;
+};
+
 class Replay : public Engine {
  public:
   explicit Replay(const Trajectory& t) : t_(t) {}
@@ -109,6 +120,9 @@ class Replay : public Engine {
   std::unique_ptr<StackModel> stack(double, const RunOptions&) override { return std::make_unique<ReplayStack>(t_); }
   std::unique_ptr<LaunchModel> launch(double, const RunOptions&) override {
     return std::make_unique<ReplayLaunch>(t_);
+  }
+  std::unique_ptr<HangingPairModel> hangingPair(const RunOptions&) override {
+    return std::make_unique<ReplayHangingPair>(t_);
   }
 
  private:
@@ -137,6 +151,7 @@ int main(int argc, char** argv) {
     else if (options.scene == "test9") measureBounces(replay, options, metrics);
     else if (options.scene == "test4") measureHold(replay, options, metrics);
     else if (options.scene == "test10") measureWall(replay, options, metrics);
+    else if (options.scene == "test7") measureJoints(replay, options, metrics);
     else throw std::runtime_error("unknown scene " + options.scene);
     std::cout << metrics.toJson();
   } catch (const std::exception& error) {

@@ -17,11 +17,12 @@ const ROWS = {
   test9: (m) => m.centre(),
   test4: (m) => [...m.bigCentre(), m.bigTiltDegrees(), m.deepestPenetration()],
   test10: (m) => [...m.cubeCentre(), m.cubeVelocityX()],
+  test7: (m) => [m.jointError(), m.pivotAngularSpeed(), ...m.pivotCentre(), ...m.testCubeCentre()],
 };
 
 async function main([engineName, sceneName, setting, stepText, secondsText, velocityText]) {
   if (!ROWS[sceneName] || !['havok', 'jolt', 'rapier'].includes(engineName)) {
-    process.stderr.write('usage: record.js havok|jolt|rapier test2|test4|test8|test9|test10 SETTING STEP SECONDS [VELOCITY]\n');
+    process.stderr.write('usage: record.js havok|jolt|rapier test2|test4|test7|test8|test9|test10 SETTING STEP SECONDS [VELOCITY]\n');
     return 2;
   }
   const engine = require(`../src/${engineName}`);
@@ -34,6 +35,8 @@ async function main([engineName, sceneName, setting, stepText, secondsText, velo
     mass = model.mass();
   } else if (sceneName === 'test9') {
     model = engine.ball(lib, options);
+  } else if (sceneName === 'test7') {
+    model = engine.hangingPair(lib, options);
   } else if (sceneName === 'test4') {
     mass = scene.test4.DEFAULT_BIG_MASS;
     model = engine.stack(lib, mass, options);

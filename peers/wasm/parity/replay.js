@@ -42,6 +42,11 @@ function main([file]) {
       m.measureHold(replayModel(rows, (row) => ({ bigCentre: () => row().slice(0, 3), bigTiltDegrees: () => row()[3],
         deepestPenetration: () => row()[4] })), header.mass, options, metrics);
       break;
+    case 'test7':
+      m.measureJoints(replayModel(rows, (row) => ({ throwCube: () => {}, jointError: () => row()[0],
+        pivotAngularSpeed: () => row()[1], pivotCentre: () => row().slice(2, 5), testCubeCentre: () => row().slice(5, 8) })),
+      options, metrics);
+      break;
     default:
       m.measureWall(() => replayModel(rows, (row) => ({ cubeCentre: () => row().slice(0, 3), cubeVelocityX: () => row()[3] })),
         options, metrics);

@@ -5,7 +5,7 @@
 
 class UsageError extends Error {}
 
-const SCENES = ['test1', 'test2', 'test4', 'test6', 'test8', 'test9', 'test10'];
+const SCENES = ['test1', 'test2', 'test4', 'test6', 'test7', 'test8', 'test9', 'test10'];
 
 // name -> {kind: 'number'|'choice'|'text'|'flag', key, min, max, choices, help}
 const OPTIONS = {

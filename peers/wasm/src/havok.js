@@ -15,7 +15,7 @@
 // (default 0.1).
 const fs = require('fs');
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube } = require('./rigs');
+const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;  // m/s and rad/s: far beyond the scan's 100 000 m/s
@@ -77,6 +77,13 @@ class World {
     const HK = this.HK;
     check(HK.HP_Shape_SetMaterial(shape, [0.5, 0.5, value, HK.MaterialCombine.GEOMETRIC_MEAN,
       HK.MaterialCombine[combine]]), 'HP_Shape_SetMaterial');
+  }
+  // Friction `value` (static and dynamic), restitution 0; combined by geometric mean.
+  friction(shape, value) {
+    const HK = this.HK;
+    check(HK.HP_Shape_SetMaterial(shape, [value, value, 0, HK.MaterialCombine.GEOMETRIC_MEAN,
+      HK.MaterialCombine.GEOMETRIC_MEAN]), 'HP_Shape_SetMaterial');
+    return shape;
   }
   ground() {
     return this.body(this.box([GROUND_SIZE, 10, GROUND_SIZE]), 0, [0, -5, 0]);
@@ -191,6 +198,47 @@ function axisSystem(HK, options) {
     rotation: (b) => world.transform(b)[1] }, small, big);
 }
 
+// A ball joint: every linear axis locked, every angular one free; the two
+// bodies do not collide with each other (as in the ODE programs).
+function ballJoint(HK, parent, child, inParent, inChild) {
+  const joint = check(HK.HP_Constraint_Create(), 'HP_Constraint_Create');
+  HK.HP_Constraint_SetParentBody(joint, parent);
+  HK.HP_Constraint_SetChildBody(joint, child);
+  HK.HP_Constraint_SetAnchorInParent(joint, inParent, [1, 0, 0], [0, 1, 0]);
+  HK.HP_Constraint_SetAnchorInChild(joint, inChild, [1, 0, 0], [0, 1, 0]);
+  const A = HK.ConstraintAxis;
+  for (const axis of [A.LINEAR_X, A.LINEAR_Y, A.LINEAR_Z]) HK.HP_Constraint_SetAxisMode(joint, axis, HK.ConstraintAxisLimitMode.LOCKED);
+  for (const axis of [A.ANGULAR_X, A.ANGULAR_Y, A.ANGULAR_Z]) HK.HP_Constraint_SetAxisMode(joint, axis, HK.ConstraintAxisLimitMode.FREE);
+  HK.HP_Constraint_SetCollisionsEnabled(joint, false);
+  HK.HP_Constraint_SetEnabled(joint, true);
+  return joint;
+}
+
+// test7: the pivot on a ball joint to a static body at the anchor, the big
+// cube on a ball joint to the pivot, the test cube thrown at the pivot;
+// every shape with test7's no-slip friction.
+function hangingPair(HK, options) {
+  const t = scene.test7;
+  const world = new World(HK, SURFACE_GRAVITY, options);
+  const box = (side) => world.friction(world.box([side, side, side]), t.NO_SLIP_FRICTION);
+  world.body(world.friction(world.box([GROUND_SIZE, 10, GROUND_SIZE]), t.NO_SLIP_FRICTION), 0, [0, -5, 0]);
+  const pivot = world.body(box(t.PIVOT_SIDE), t.PIVOT_MASS, [0, t.PIVOT_CENTRE_Y, 0]);
+  const big = world.body(box(t.BIG_SIDE), t.BIG_MASS, [0, t.BIG_CENTRE_Y, 0]);
+  const cube = world.body(box(t.TEST_CUBE_SIDE), t.TEST_CUBE_MASS, throwState().position);
+  const anchor = world.body(null, 0, [0, t.ANCHOR_HEIGHT, 0]);
+  ballJoint(HK, anchor, pivot, [0, 0, 0], [0, t.PIVOT_SIDE / 2, 0]);
+  ballJoint(HK, pivot, big, [0, -t.PIVOT_SIDE / 2, 0], [0, t.BIG_SIDE / 2, 0]);
+  const throwCube = () => {
+    const { position, velocity } = throwState();
+    HK.HP_Body_SetQTransform(cube, [position, IDENTITY]);
+    HK.HP_Body_SetLinearVelocity(cube, velocity);
+    HK.HP_Body_SetAngularVelocity(cube, [0, 0, 0]);
+  };
+  throwCube();
+  return hangingPairReadout({ step: () => world.step(), position: (b) => world.position(b),
+    rotation: (b) => world.transform(b)[1], spin: (b) => world.spin(b) }, pivot, big, cube, throwCube);
+}
+
 // test4: the big cube on the small cube on the platform.
 function stack(HK, bigMass, options) {
   const t = scene.test4;
@@ -219,7 +267,8 @@ function settingText(options) {
   if (options.scene === 'test9') text += '; restitution 1.0 on both shapes (geometric mean: 1.0), ground a 200 m box';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 1.0, combined by minimum; ground a 200 m box";
   if (options.scene === 'test10') text += '; ground a 200 m box';
+  if (options.scene === 'test7') text += '; ball joints (6-DOF, linear axes locked), friction 100 on every shape, ground a 200 m box';
   return text;
 }
 
-module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };
+module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

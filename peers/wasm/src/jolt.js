@@ -14,7 +14,7 @@
 // 1 m/s) and, on test10, sweeps the cube (motion quality LinearCast, Jolt's
 // continuous collision; also --ccd).
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube } = require('./rigs');
+const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;
@@ -67,7 +67,7 @@ class World {
     return new this.Jolt.PlaneShape(new this.Jolt.Plane(new this.Jolt.Vec3(0, 1, 0), 0));
   }
   // mass 0: static. inertia: principal moments about the centre, else Jolt's from the shape.
-  body(shape, mass, position, { inertia, restitution, sweep } = {}) {
+  body(shape, mass, position, { inertia, restitution, sweep, friction, group } = {}) {
     const J = this.Jolt;
     const s = new J.BodyCreationSettings(shape, new J.RVec3(...position), J.Quat.prototype.sIdentity(),
       mass > 0 ? J.EMotionType_Dynamic : J.EMotionType_Static, mass > 0 ? MOVING : STATIC);
@@ -75,6 +75,8 @@ class World {
     s.mMaxLinearVelocity = NO_SPEED_LIMIT;
     s.mMaxAngularVelocity = NO_SPEED_LIMIT;
     if (restitution !== undefined) s.mRestitution = restitution;
+    if (friction !== undefined) s.mFriction = friction;
+    if (group) s.mCollisionGroup = group;
     if (this.best) {
       s.mLinearDamping = 0;
       s.mAngularDamping = 0;
@@ -189,6 +191,42 @@ function axisSystem(Jolt, options) {
     rotation: (b) => world.rotation(b) }, small, big);
 }
 
+// test7: the pivot on a point constraint (a ball joint) to the world, the
+// big cube on another to the pivot, the test cube thrown at the pivot; every
+// body with test7's no-slip friction (Jolt combines by geometric mean). The
+// pivot and the big cube share a collision group that keeps the two from
+// colliding with each other, as the ODE programs do for joined bodies.
+function hangingPair(Jolt, options) {
+  const t = scene.test7;
+  const world = new World(Jolt, SURFACE_GRAVITY, options);
+  const friction = t.NO_SLIP_FRICTION;
+  const pairFilter = new Jolt.GroupFilterTable(2);
+  pairFilter.DisableCollision(0, 1);
+  const cube = (side) => world.box([side, side, side]);
+  world.body(world.plane(), 0, [0, 0, 0], { friction });
+  const pivot = world.body(cube(t.PIVOT_SIDE), t.PIVOT_MASS, [0, t.PIVOT_CENTRE_Y, 0],
+    { friction, group: new Jolt.CollisionGroup(pairFilter, 0, 0) });
+  const big = world.body(cube(t.BIG_SIDE), t.BIG_MASS, [0, t.BIG_CENTRE_Y, 0],
+    { friction, group: new Jolt.CollisionGroup(pairFilter, 0, 1) });
+  const thrown = world.body(cube(t.TEST_CUBE_SIDE), t.TEST_CUBE_MASS, throwState().position, { friction });
+  const top = new Jolt.PointConstraintSettings();
+  top.mPoint1 = top.mPoint2 = new Jolt.RVec3(0, t.ANCHOR_HEIGHT, 0);
+  world.system.AddConstraint(top.Create(Jolt.Body.prototype.sFixedToWorld, pivot));
+  const middle = new Jolt.PointConstraintSettings();
+  middle.mPoint1 = middle.mPoint2 = new Jolt.RVec3(0, t.LOWER_ANCHOR_Y, 0);
+  world.system.AddConstraint(middle.Create(pivot, big));
+  const throwCube = () => {
+    const { position, velocity } = throwState();
+    world.bodies.SetPositionAndRotation(thrown.GetID(), new Jolt.RVec3(...position), Jolt.Quat.prototype.sIdentity(),
+      Jolt.EActivation_Activate);
+    world.bodies.SetLinearVelocity(thrown.GetID(), new Jolt.Vec3(...velocity));
+    world.bodies.SetAngularVelocity(thrown.GetID(), new Jolt.Vec3(0, 0, 0));
+  };
+  throwCube();
+  return hangingPairReadout({ step: () => world.step(), position: (b) => world.position(b),
+    rotation: (b) => world.rotation(b), spin: (b) => world.spin(b) }, pivot, big, thrown, throwCube);
+}
+
 function stack(Jolt, bigMass, options) {
   const t = scene.test4;
   const world = new World(Jolt, SURFACE_GRAVITY, options);
@@ -218,8 +256,9 @@ function settingText(options) {
     : "Jolt's defaults (damping 0.05 linear and angular, 10 velocity / 2 position iterations, no restitution below 1 m/s)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both bodies (maximum: 1.0), ground a plane';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 0 (maximum: the ball's), ground a plane";
+  if (options.scene === 'test7') text += '; point constraints (ball joints), friction 100 on every body, ground a plane';
   if (options.scene === 'test10') text += options.ccd || best ? '; cube swept (motion quality LinearCast)' : '; cube not swept (Discrete)';
   return text;
 }
 
-module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };
+module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

@@ -15,7 +15,8 @@ const lround = (x) => Math.sign(x) * Math.round(Math.abs(x));
 
 function defaultSeconds(name) {
   return { test1: scene.test1.RUN_SECONDS, test2: scene.test2.RUN_SECONDS, test8: scene.test8.RUN_SECONDS, test9: scene.test9.RUN_SECONDS,
-    test4: scene.test4.RUN_SECONDS, test6: scene.test6.DEFAULT_SECONDS }[name] ?? 0;
+    test4: scene.test4.RUN_SECONDS, test6: scene.test6.DEFAULT_SECONDS,
+    test7: scene.test7.DEFAULT_THROWS * scene.test7.DEFAULT_THROW_INTERVAL }[name] ?? 0;
 }
 
 function stepsFor(options) {
@@ -214,4 +215,46 @@ function measureWall(makeLaunch, options, metrics) {
   return tally;
 }
 
-module.exports = { measureEnergy, measureElongation, measureBounces, measureHold, measureWall, defaultSeconds, stepsFor };
+// The test cube is past the pivot, level with it: beyond the pivot's far
+// face in x while its outline overlaps the pivot's in y and z. A cube thrown
+// at the pivot gets there only through it (a contact too soft to stop it).
+function beyondPivot(pivot, cube) {
+  const { PIVOT_SIDE, TEST_CUBE_SIDE } = scene.test7;
+  const touching = (PIVOT_SIDE + TEST_CUBE_SIDE) / 2;
+  return cube[0] - pivot[0] > touching && Math.abs(cube[1] - pivot[1]) < touching && Math.abs(cube[2] - pivot[2]) < touching;
+}
+
+// test7: the largest ball-joint error and the pivot's largest spin while the
+// test cube is thrown at 0, S, 2S, ... (test7's headless run).
+// `pair`: {step(), throwCube(), jointError(), pivotAngularSpeed(), pivotCentre(), testCubeCentre()},
+// built with the first throw made.
+function measureJoints(pair, options, metrics) {
+  const { DEFAULT_THROWS, DEFAULT_THROW_INTERVAL } = scene.test7;
+  const throwEvery = lround(DEFAULT_THROW_INTERVAL / options.step);
+  let throws = 1, maxError = 0, maxSpin = 0, passed = false;
+  const tally = { steps: 0, finite: true };
+  for (let i = 0, n = stepsFor(options); i < n; ++i) {
+    if (i > 0 && i % throwEvery === 0 && throws < DEFAULT_THROWS) {
+      pair.throwCube();
+      ++throws;
+    }
+    pair.step();
+    const error = pair.jointError(), spin = pair.pivotAngularSpeed();
+    if (!Number.isFinite(error) || !Number.isFinite(spin)) {
+      tally.finite = false;
+      break;
+    }
+    ++tally.steps;
+    maxError = Math.max(maxError, error);
+    maxSpin = Math.max(maxSpin, spin);
+    passed = passed || beyondPivot(pair.pivotCentre(), pair.testCubeCentre());
+  }
+  metrics.set('max_joint_error', maxError);
+  metrics.set('max_angular_speed', maxSpin);
+  metrics.set('max_angular_speed_limit', 0);  // no peer caps the spin (test7's --max-angular-speed 0)
+  metrics.set('throws', throws);
+  metrics.set('cube_passed_pivot', passed ? 1 : 0);
+  return tally;
+}
+
+module.exports = { measureJoints, measureEnergy, measureElongation, measureBounces, measureHold, measureWall, defaultSeconds, stepsFor };

@@ -15,7 +15,7 @@
 // a soft-CCD prediction of twice its travel in a step: the swept CCD alone
 // does not stop it at a thin static wall, the predictive contact does.
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout } = require('./rigs');
+const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const BEST_ITERATIONS = 50;
@@ -46,7 +46,7 @@ class World {
   }
   // mass 0: fixed. `mass` {mass, inertia, centre} sets the body's mass
   // properties and makes its colliders massless; a number gives the collider that mass.
-  body(colliders, mass, position, { restitution, combine, configure } = {}) {
+  body(colliders, mass, position, { restitution, combine, friction, configure } = {}) {
     const R = this.R;
     let desc = (mass ? R.RigidBodyDesc.dynamic() : R.RigidBodyDesc.fixed())
       .setTranslation(...position).setCanSleep(false);
@@ -63,6 +63,7 @@ class World {
       else if (mass) c = c.setDensity(0);
       if (restitution !== undefined) c = c.setRestitution(restitution);
       if (combine !== undefined) c = c.setRestitutionCombineRule(combine);
+      if (friction !== undefined) c = c.setFriction(friction);
       this.world.createCollider(c, body);
     }
     return body;
@@ -150,6 +151,40 @@ function axisSystem(R, options) {
   return uprightReadout({ step: () => world.step(), position: (b) => vec(b.translation()), rotation }, small, big);
 }
 
+// test7: the pivot on a spherical impulse joint to a fixed body at the
+// anchor, the big cube on another to the pivot (contacts between the joined
+// bodies off, as in the ODE programs), the test cube thrown at the pivot;
+// every collider with test7's no-slip friction (Rapier averages: 100).
+function hangingPair(R, options) {
+  const t = scene.test7;
+  const world = new World(R, SURFACE_GRAVITY, options);
+  const friction = t.NO_SLIP_FRICTION;
+  const cube = (side) => R.ColliderDesc.cuboid(side / 2, side / 2, side / 2);
+  world.body([[R.ColliderDesc.cuboid(GROUND_SIZE / 2, 5, GROUND_SIZE / 2)]], 0, [0, -5, 0], { friction });
+  const pivot = world.body([[cube(t.PIVOT_SIDE)]], t.PIVOT_MASS, [0, t.PIVOT_CENTRE_Y, 0], { friction });
+  const big = world.body([[cube(t.BIG_SIDE)]], t.BIG_MASS, [0, t.BIG_CENTRE_Y, 0], { friction });
+  const thrown = world.body([[cube(t.TEST_CUBE_SIDE)]], t.TEST_CUBE_MASS, throwState().position, { friction });
+  const anchor = world.body([], 0, [0, t.ANCHOR_HEIGHT, 0]);
+  const joint = (a, b, inA, inB) => world.world.createImpulseJoint(R.JointData.spherical(
+    { x: inA[0], y: inA[1], z: inA[2] }, { x: inB[0], y: inB[1], z: inB[2] }), a, b, true).setContactsEnabled(false);
+  joint(anchor, pivot, [0, 0, 0], [0, t.PIVOT_SIDE / 2, 0]);
+  joint(pivot, big, [0, -t.PIVOT_SIDE / 2, 0], [0, t.BIG_SIDE / 2, 0]);
+  const throwCube = () => {
+    const { position, velocity } = throwState();
+    thrown.setTranslation({ x: position[0], y: position[1], z: position[2] }, true);
+    thrown.setRotation({ x: 0, y: 0, z: 0, w: 1 }, true);
+    thrown.setLinvel({ x: velocity[0], y: velocity[1], z: velocity[2] }, true);
+    thrown.setAngvel({ x: 0, y: 0, z: 0 }, true);
+  };
+  throwCube();
+  const rotation = (b) => {
+    const q = b.rotation();
+    return [q.x, q.y, q.z, q.w];
+  };
+  return hangingPairReadout({ step: () => world.step(), position: (b) => vec(b.translation()), rotation,
+    spin: (b) => vec(b.angvel()) }, pivot, big, thrown, throwCube);
+}
+
 function stack(R, bigMass, options) {
   const t = scene.test4;
   const world = new World(R, SURFACE_GRAVITY, options);
@@ -193,6 +228,7 @@ function settingText(options) {
   if (options.scene === 'test2' || options.scene === 'test8') text += ', impulse revolute joint';
   if (options.scene === 'test9') text += '; restitution 1.0 on both colliders (average: 1.0), ground a 200 m cuboid';
   if (options.scene === 'test1') text += "; each ball's restitution combined by maximum with the ground's 0, ground a 200 m cuboid";
+  if (options.scene === 'test7') text += '; spherical impulse joints, friction 100 on every collider, ground a 200 m cuboid';
   if (options.scene === 'test10') {
     text += '; lengthUnit 1000 with the length tolerances divided by 1000 (speed cap 400 km/s)';
     text += options.ccd || best ? '; cube: CCD on, soft-CCD prediction 2 v h' : '; no CCD';
@@ -200,4 +236,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };
+module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

@@ -2,7 +2,7 @@
 // What every web peer builds the same way: the composite pendulum's mass
 // properties (as peers/bullet_lab.cpp works them out), and the kinetic energy
 // and tilt of a body from its velocity, spin and orientation.
-const { scene } = require('./constants');
+const { scene, SURFACE_GRAVITY } = require('./constants');
 
 // The rod and the bob as one body: its mass, the anchor-to-centre distance
 // along +x and the principal moments about the centre (x along the rod).
@@ -92,4 +92,40 @@ function launchedCube(world, cube) {
   };
 }
 
-module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube };
+// test7's throw (tests/scenes/test7's throwTestCube): from THROW_DISTANCE
+// before the pivot, level with it, unturned, aimed up by a with
+// sin 2a = g d / v^2 so that its arc comes back to that level at the pivot.
+function throwState() {
+  const t = scene.test7;
+  const a = 0.5 * Math.asin((SURFACE_GRAVITY * t.THROW_DISTANCE) / t.THROW_SPEED ** 2);
+  return { position: [-t.THROW_DISTANCE, t.PIVOT_CENTRE_Y, 0],
+    velocity: [t.THROW_SPEED * Math.cos(a), t.THROW_SPEED * Math.sin(a), 0] };
+}
+
+// The point at height y on a body's local y axis, in world coordinates.
+function pointOnY(position, q, y) {
+  const [x, qy, z, w] = q;
+  const column = [2 * (x * qy - w * z), 1 - 2 * (x * x + z * z), 2 * (qy * z + w * x)];
+  return position.map((p, i) => p + y * column[i]);
+}
+
+// test7's readout: each ball joint's error (where the two joined bodies, or
+// the fixed point, hold its anchor), the larger of the two, and the pivot's spin.
+// `world`: {step(), position(body), rotation(body), spin(body)}; `throwCube()`: the engine's.
+function hangingPairReadout(world, pivot, big, cube, throwCube) {
+  const t = scene.test7;
+  const on = (body, y) => pointOnY(world.position(body), world.rotation(body), y);
+  const gap = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+  return {
+    step: () => world.step(),
+    throwCube,
+    jointError: () => Math.max(gap(on(pivot, t.PIVOT_SIDE / 2), [0, t.ANCHOR_HEIGHT, 0]),
+      gap(on(pivot, -t.PIVOT_SIDE / 2), on(big, t.BIG_SIDE / 2))),
+    pivotAngularSpeed: () => Math.hypot(...world.spin(pivot)),
+    pivotCentre: () => world.position(pivot),
+    testCubeCentre: () => world.position(cube),
+  };
+}
+
+module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube, throwState,
+  hangingPairReadout };
