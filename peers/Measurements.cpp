@@ -34,6 +34,8 @@ double defaultSeconds(const std::string& scene) {
   if (scene == "test8") return scene::test8::RUN_SECONDS;
   if (scene == "test9") return scene::test9::RUN_SECONDS;
   if (scene == "test4") return scene::test4::RUN_SECONDS;
+  if (scene == "test1") return scene::test1::RUN_SECONDS;
+  if (scene == "test6") return scene::test6::DEFAULT_SECONDS;
   if (scene == "test7") return scene::test7::DEFAULT_THROWS * scene::test7::DEFAULT_THROW_INTERVAL;
   return 0.0;  // test10 runs launches until each is resolved
 }
@@ -161,6 +163,105 @@ Tally measureHold(Engine& engine, const RunOptions& options, Metrics& metrics) {
   metrics.set("held", held ? 1 : 0);
   metrics.set("max_tilt_degrees", maxTilt);
   metrics.set("max_penetration", maxPenetration);
+  return tally;
+}
+
+Vec3 ballStart(int ball) {
+  using namespace scene::test1;
+  return {(ball - 0.5 * (BALL_COUNT - 1)) * SPACING, DROP_HEIGHT, 0.0};
+}
+double ballBounce(int ball) { return ball / (scene::test1::BALL_COUNT - 1.0); }
+
+// test1: per ball the first two rebound apexes above the contact height,
+// whose ratio is e^2 for an exact restitution (test1's rule and names).
+Tally measureRebounds(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  using namespace scene::test1;
+  auto balls = engine.balls(options);
+  struct Record {
+    double bounce = 0.0;
+    ApexTracker tracker;
+    double apex[2] = {NaN, NaN};
+    double error() const { return std::fabs(apex[1] / apex[0] - bounce * bounce); }
+    bool measured() const { return bounce >= MEASURED_FROM_BOUNCE && std::isfinite(apex[1]); }
+  };
+  std::vector<Record> records(balls->count());
+  for (int i = 0; i < balls->count(); ++i) {
+    const Vec3 c = balls->centre(i);
+    const double position[3] = {c.x, c.y, c.z};
+    records[i].bounce = balls->bounce(i);
+    records[i].tracker.restart(0.0, position);
+  }
+  Tally tally;
+  for (long n = stepsFor(options); tally.steps < n;) {
+    balls->step();
+    ++tally.steps;
+    for (int i = 0; i < balls->count(); ++i) {
+      const Vec3 c = balls->centre(i);
+      if (!finite(c)) tally.finite = false;
+      const double position[3] = {c.x, c.y, c.z};
+      Apex apex;
+      Record& r = records[i];
+      if (r.tracker.update(tally.steps * options.step, position, apex) && r.tracker.count() <= 2)
+        r.apex[r.tracker.count() - 1] = apex.position[1] - BALL_RADIUS;
+    }
+    if (!tally.finite) break;
+  }
+  tally.simSeconds = tally.steps * options.step;
+  int worst = -1, measured = 0, bounced = 0, resting = 0;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < balls->count(); ++i) {
+    const Record& r = records[i];
+    if (r.measured() && (worst < 0 || r.error() > records[worst].error())) worst = i;
+    measured += r.measured();
+    bounced += r.tracker.count() > 0;
+    const double height = balls->centre(i).y - BALL_RADIUS;
+    if (balls->speed(i) < REST_SPEED && height < REST_CLEARANCE) ++resting;
+    lowest = std::min(lowest, height);
+  }
+  metrics.set("bounce_velocity", balls->bounceVelocity());
+  metrics.set("max_rebound_error", worst >= 0 ? records[worst].error() : NaN);
+  metrics.set("worst_ball", worst >= 0 ? worst : NaN);
+  metrics.set("balls_measured", measured);
+  metrics.set("balls_bounced", bounced);
+  metrics.set("balls_at_rest", resting);
+  metrics.set("lowest_ball_m", lowest);
+  return tally;
+}
+
+// test6: how long the 5000 kg cube stays upright on its ball joint (tilt at
+// most UPRIGHT_TILT_DEGREES, centre within UPRIGHT_SIDEWAYS_METRES of where
+// it was built), with test6's names; no start tilt, no angular speed cap.
+Tally measureUpright(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  using namespace scene::test6;
+  auto model = engine.axisSystem(options);
+  const Vec3 built = model->bigCentre();
+  double tilt = model->bigTiltDegrees(), maxTilt = tilt, maxSideways = 0.0, maxSink = 0.0, uprightUntil = -1.0;
+  Tally tally;
+  for (long n = stepsFor(options); tally.steps < n;) {
+    model->step();
+    const Vec3 p = model->bigCentre();
+    tilt = model->bigTiltDegrees();
+    if (!finite(p) || !std::isfinite(tilt)) {
+      tally.finite = false;
+      break;
+    }
+    ++tally.steps;
+    const double sideways = std::hypot(p.x - built.x, p.z - built.z);
+    maxTilt = std::max(maxTilt, tilt);
+    maxSideways = std::max(maxSideways, sideways);
+    if (uprightUntil < 0) maxSink = std::max(maxSink, model->smallSink());
+    if (uprightUntil < 0 && (tilt > UPRIGHT_TILT_DEGREES || sideways > UPRIGHT_SIDEWAYS_METRES))
+      uprightUntil = tally.steps * options.step;
+  }
+  tally.simSeconds = tally.steps * options.step;
+  metrics.set("seconds_upright", uprightUntil < 0 ? tally.simSeconds : uprightUntil);
+  metrics.set("fell", uprightUntil < 0 ? 0 : 1);
+  metrics.set("max_tilt_degrees", maxTilt);
+  metrics.set("final_tilt_degrees", tilt);
+  metrics.set("max_sideways_metres", maxSideways);
+  metrics.set("sink_while_upright_metres", maxSink);
+  metrics.set("start_tilt_degrees", 0);
+  metrics.set("max_angular_speed_limit", 0);
   return tally;
 }
 

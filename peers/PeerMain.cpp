@@ -21,7 +21,7 @@ using Measurement = Tally (*)(Engine&, const RunOptions&, Metrics&);
 const std::map<std::string, Measurement> MEASUREMENTS = {
     {"test2", measureEnergy}, {"test4", measureHold},  {"test8", measureElongation},
     {"test9", measureBounces}, {"test10", measureWall},
-    {"test7", measureJoints},
+    {"test7", measureJoints},   {"test1", measureRebounds}, {"test6", measureUpright},
 };
 
 double processCpuSeconds() {

@@ -89,6 +89,28 @@ class HangingPairModel {
   virtual Vec3 testCubeCentre() const = 0;
 };
 
+// test1: fifty balls, ball i with restitution i/49, dropped on the ground.
+class BallsModel {
+ public:
+  virtual ~BallsModel() = default;
+  virtual void step() = 0;
+  virtual int count() const = 0;
+  virtual double bounce(int ball) const = 0;  // the restitution the ball was given
+  virtual Vec3 centre(int ball) const = 0;
+  virtual double speed(int ball) const = 0;   // m/s
+  virtual double bounceVelocity() const = 0;  // m/s: slower impacts do not bounce (0: any speed; NaN: unstated)
+};
+
+// test6: the 5000 kg cube on a ball joint 2 m above the 1 kg cube resting on the ground.
+class UprightModel {
+ public:
+  virtual ~UprightModel() = default;
+  virtual void step() = 0;
+  virtual Vec3 bigCentre() const = 0;
+  virtual double bigTiltDegrees() const = 0;  // local y against world y
+  virtual double smallSink() const = 0;       // m the small cube's lowest corner is below the ground (0: not)
+};
+
 class Engine {
  public:
   virtual ~Engine() = default;
@@ -101,10 +123,12 @@ class Engine {
   virtual std::unique_ptr<StackModel> stack(double bigMass, const RunOptions& options) = 0;
   virtual std::unique_ptr<LaunchModel> launch(double velocity, const RunOptions& options) = 0;
   virtual std::unique_ptr<HangingPairModel> hangingPair(const RunOptions& options) = 0;
+  virtual std::unique_ptr<BallsModel> balls(const RunOptions& options) = 0;
+  virtual std::unique_ptr<UprightModel> axisSystem(const RunOptions& options) = 0;
 };
 
 // An engine made of its scene models: the factories written once.
-template <class Pendulum, class Ball, class Stack, class Launch, class HangingPair>
+template <class Pendulum, class Ball, class Stack, class Launch, class HangingPair, class Balls, class Upright>
 class EngineOf : public Engine {
  public:
   std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& o) override {
@@ -120,6 +144,8 @@ class EngineOf : public Engine {
   std::unique_ptr<HangingPairModel> hangingPair(const RunOptions& o) override {
     return std::make_unique<HangingPair>(o);
   }
+  std::unique_ptr<BallsModel> balls(const RunOptions& o) override { return std::make_unique<Balls>(o); }
+  std::unique_ptr<UprightModel> axisSystem(const RunOptions& o) override { return std::make_unique<Upright>(o); }
 };
 
 // The whole program: options, the scene's measurement, metrics. Exit status

@@ -8,7 +8,9 @@
 #include <memory>
 #include <vector>
 
+#include "Measurements.h"
 #include "PeerScene.h"
+#include "Readouts.h"
 #include "Test10Scene.h"
 #include "Test7Scene.h"
 #include "WorldSettings.h"
@@ -65,6 +67,17 @@ class BulletWorld {
   // stepSimulation(h) would run 1/60 s substeps).
   void step(double h) { world_.stepSimulation(h, 0); }
   btContactSolverInfo& solverInfo() { return world_.getSolverInfo(); }
+  // Bullet's exact bounce: no speculative contacts (contact processing
+  // threshold 0 on every body), no positional correction of contacts (ERP 0,
+  // which also drops penetration recovery for every contact) and restitution
+  // at any impact speed (Bullet applies none below 0.2 m/s by default).
+  void exactBounce() {
+    for (int i = 0; i < world_.getNumCollisionObjects(); ++i)
+      world_.getCollisionObjectArray()[i]->setContactProcessingThreshold(0);
+    solverInfo().m_erp = 0;
+    solverInfo().m_erp2 = 0;
+    solverInfo().m_restitutionVelocityThreshold = 0;
+  }
   btDiscreteDynamicsWorld& world() { return world_; }
 
   // Deepest overlap among all contact points, m (0 when none overlaps).
@@ -153,10 +166,7 @@ class BulletPendulum : public PendulumModel {
 };
 
 // ---- test9 -------------------------------------------------------------------
-// Best for the bounce: no speculative contacts (contact processing threshold
-// 0 on both bodies), no positional correction of contacts (ERP 0, which also
-// drops penetration recovery for every contact) and restitution at any impact
-// speed (Bullet applies none below 0.2 m/s by default).
+// Best for the bounce: Bullet's exact bounce (BulletWorld::exactBounce).
 class BulletBall : public BallModel {
  public:
   explicit BulletBall(const RunOptions& options)
@@ -167,13 +177,7 @@ class BulletBall : public BallModel {
     // Restitution 1.0 on both: Bullet multiplies the two bodies' values.
     ground->setRestitution(BOUNCE);
     ball_->setRestitution(BOUNCE);
-    if (options.setting == Setting::Best) {
-      ground->setContactProcessingThreshold(0);
-      ball_->setContactProcessingThreshold(0);
-      world_.solverInfo().m_erp = 0;
-      world_.solverInfo().m_erp2 = 0;
-      world_.solverInfo().m_restitutionVelocityThreshold = 0;
-    }
+    if (options.setting == Setting::Best) world_.exactBounce();
   }
   void step() override { world_.step(step_); }
   Vec3 centre() const override { return toVec3(ball_->getCenterOfMassPosition()); }
@@ -305,7 +309,82 @@ class BulletHangingPair : public HangingPairModel {
   const btVector3 bigTop_{0, scene::test7::BIG_SIDE / 2, 0};
 };
 
-class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLaunch, BulletHangingPair> {
+// The world-y row of a body's rotation.
+void upRow(const btRigidBody* body, double row[3]) {
+  const btMatrix3x3& basis = body->getCenterOfMassTransform().getBasis();
+  for (int i = 0; i < 3; ++i) row[i] = basis[1][i];
+}
+
+// ---- test1 -------------------------------------------------------------------
+// Ball i with restitution i/49 over the ground's 1.0: Bullet multiplies the
+// two, so each contact has the ball's own. Best: as test9's exact bounce (no
+// speculative contacts, contact ERP 0, restitution at any impact speed).
+class BulletBalls : public BallsModel {
+ public:
+  explicit BulletBalls(const RunOptions& options)
+      : world_(scene::test1::GRAVITY_FACTOR * SURFACE_GRAVITY), step_(options.step) {
+    using namespace scene::test1;
+    world_.add(new btStaticPlaneShape(btVector3(0, 1, 0), 0), 0.0, btVector3(0, 0, 0))->setRestitution(1.0);
+    for (int i = 0; i < BALL_COUNT; ++i) {
+      const Vec3 start = ballStart(i);
+      btRigidBody* ball = world_.add(new btSphereShape(BALL_RADIUS), BALL_MASS, btVector3(start.x, start.y, start.z));
+      ball->setRestitution(ballBounce(i));
+      balls_.push_back(ball);
+    }
+    if (options.setting == Setting::Best) world_.exactBounce();
+  }
+  void step() override { world_.step(step_); }
+  int count() const override { return static_cast<int>(balls_.size()); }
+  double bounce(int ball) const override { return balls_[ball]->getRestitution(); }
+  Vec3 centre(int ball) const override { return toVec3(balls_[ball]->getCenterOfMassPosition()); }
+  double speed(int ball) const override { return balls_[ball]->getLinearVelocity().length(); }
+  double bounceVelocity() const override { return world_.solverInfo().m_restitutionVelocityThreshold; }
+
+ private:
+  mutable BulletWorld world_;
+  double step_;
+  std::vector<btRigidBody*> balls_;
+};
+
+// ---- test6 -------------------------------------------------------------------
+// The big cube on a btPoint2PointConstraint 2 m above the small cube's top
+// (the two do not collide with each other), friction 100 on every shape
+// (test6's never-sliding contacts). Best: 100 iterations.
+class BulletUpright : public UprightModel {
+ public:
+  explicit BulletUpright(const RunOptions& options) : world_(SURFACE_GRAVITY), step_(options.step) {
+    using namespace scene::test6;
+    auto box = [](double side) { return new btBoxShape(btVector3(side / 2, side / 2, side / 2)); };
+    world_.add(new btStaticPlaneShape(btVector3(0, 1, 0), 0), 0.0, btVector3(0, 0, 0));
+    small_ = world_.add(box(SMALL_SIDE), SMALL_MASS, btVector3(0, SMALL_SIDE / 2, 0));
+    big_ = world_.add(box(BIG_SIDE), BIG_MASS, btVector3(0, ANCHOR_HEIGHT + BIG_SIDE / 2, 0));
+    for (int i = 0; i < world_.world().getNumCollisionObjects(); ++i)
+      world_.world().getCollisionObjectArray()[i]->setFriction(NO_SLIP_FRICTION);
+    world_.keep(new btPoint2PointConstraint(*small_, *big_, btVector3(0, ANCHOR_HEIGHT - SMALL_SIDE / 2, 0),
+                                            btVector3(0, -BIG_SIDE / 2, 0)));
+    if (options.setting == Setting::Best) world_.solverInfo().m_numIterations = BEST_ITERATIONS;
+  }
+  void step() override { world_.step(step_); }
+  Vec3 bigCentre() const override { return toVec3(big_->getCenterOfMassPosition()); }
+  double bigTiltDegrees() const override {
+    double row[3];
+    upRow(big_, row);
+    return tiltDegrees(row);
+  }
+  double smallSink() const override {
+    double row[3];
+    upRow(small_, row);
+    return depthBelowGround(toVec3(small_->getCenterOfMassPosition()), row, scene::test6::SMALL_SIDE);
+  }
+
+ private:
+  BulletWorld world_;
+  double step_;
+  btRigidBody *small_ = nullptr, *big_ = nullptr;
+};
+
+class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLaunch, BulletHangingPair, BulletBalls,
+                               BulletUpright> {
  public:
   std::string name() const override { return "bullet"; }
   bool hasContinuousCollision() const override { return true; }
@@ -320,6 +399,14 @@ class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLa
                      "no restitution below 0.2 m/s)";
     else if (o.scene == "test4")
       text += best ? "100 iterations" : "Bullet's defaults (10 iterations, ERP 0.2, split impulse)";
+    else if (o.scene == "test1")
+      text += best ? "each ball's restitution x the ground's 1.0, contact processing threshold 0, contact ERP 0, "
+                     "restitution at any speed"
+                   : "each ball's restitution x the ground's 1.0, otherwise Bullet's defaults (speculative contacts, "
+                     "ERP 0.2, no restitution below 0.2 m/s)";
+    else if (o.scene == "test6")
+      text += std::string(best ? "100 iterations" : "Bullet's defaults (10 iterations, ERP 0.2)") +
+              "; btPoint2PointConstraint ball joint, friction 100 on every shape (test6's never-sliding contacts)";
     else if (o.scene == "test7")
       text += std::string(best ? "joint ERP 1.0, 100 iterations" : "joint ERP 0.2, 10 iterations (Bullet's defaults)") +
               "; btPoint2PointConstraint ball joints, friction 100 on every shape (test7's never-sliding contacts), "

@@ -15,7 +15,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "Measurements.h"
 #include "PeerScene.h"
+#include "Readouts.h"
 #include "Test10Scene.h"
 #include "Test7Scene.h"
 #include "WorldSettings.h"
@@ -328,7 +330,104 @@ class MujocoHangingPair : public HangingPairModel {
   MujocoScene scene_;
 };
 
-class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLaunch, MujocoHangingPair> {
+// A body's centre and the world-y row of its rotation (xmat is row-major).
+Vec3 centreOf(const mjData* d, int body) { return {d->xpos[3 * body], d->xpos[3 * body + 1], d->xpos[3 * body + 2]}; }
+const double* upRowOf(const mjData* d, int body) { return d->xmat + 9 * body + 3; }
+
+// ---- test1 -------------------------------------------------------------------
+// MuJoCo has no restitution coefficient. Default: its own contact, the same
+// for every ball (critically damped: no ball bounces). Best: each ball's
+// contact a spring with damping, solref "-k -b" (as test9's spring, k =
+// 5e3 /s^2, integrated with RK4), the damping chosen so that a free linear
+// spring-damper gives back e of the impact speed: damping ratio
+// z = -ln e / sqrt(pi^2 + ln^2 e), b = 2 z sqrt(k); e = 0 is critical damping.
+class MujocoBalls : public BallsModel {
+ public:
+  explicit MujocoBalls(const RunOptions& o) : best_(o.setting == Setting::Best), scene_(xml(o)) {}
+  void step() override {
+    scene_.step();
+    mj_kinematics(scene_.m(), scene_.d());
+  }
+  int count() const override { return scene::test1::BALL_COUNT; }
+  double bounce(int ball) const override { return ballBounce(ball); }
+  Vec3 centre(int ball) const override { return centreOf(scene_.d(), ball + 1); }
+  double speed(int ball) const override {
+    const double* v = scene_.d()->qvel + 6 * ball;  // free joint: linear velocity first
+    return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  }
+  double bounceVelocity() const override { return best_ ? 0.0 : std::nan(""); }
+
+ private:
+  static double damping(double e) {
+    if (e <= 0) return 2 * std::sqrt(BOUNCE_STIFFNESS);
+    const double l = std::log(e);
+    return 2 * (-l / std::sqrt(M_PI * M_PI + l * l)) * std::sqrt(BOUNCE_STIFFNESS);
+  }
+  static std::string xml(const RunOptions& o) {
+    using namespace scene::test1;
+    const bool best = o.setting == Setting::Best;
+    std::ostringstream s;
+    s.precision(17);
+    s << header("odelab-test1", o.step, GRAVITY_FACTOR * SURFACE_GRAVITY, best ? "RK4" : "Euler")
+      << "  <worldbody>\n" << GROUND;
+    for (int i = 0; i < BALL_COUNT; ++i) {
+      const Vec3 p = ballStart(i);
+      s << "    <body pos=\"" << p.x << ' ' << p.y << ' ' << p.z << "\">\n      <freejoint/>\n"
+        << "      <geom type=\"sphere\" size=\"" << BALL_RADIUS << "\" mass=\"" << BALL_MASS << "\"";
+      if (best) s << " solref=\"" << -BOUNCE_STIFFNESS << ' ' << -damping(ballBounce(i)) << "\"";
+      s << "/>\n    </body>\n";
+    }
+    s << "  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  bool best_;
+  MujocoScene scene_;
+};
+
+// ---- test6 -------------------------------------------------------------------
+// The small cube free on the ground, the big cube its child on a ball joint
+// 2 m above its top (generalized coordinates: the joint cannot come apart),
+// friction 100 (test6's never-sliding contacts). Best: as test4's, the
+// stiffest contact at this step and elliptic cones.
+class MujocoUpright : public UprightModel {
+ public:
+  explicit MujocoUpright(const RunOptions& o) : scene_(xml(o)) {}
+  void step() override {
+    scene_.step();
+    mj_kinematics(scene_.m(), scene_.d());
+  }
+  Vec3 bigCentre() const override { return centreOf(scene_.d(), BIG); }
+  double bigTiltDegrees() const override { return tiltDegrees(upRowOf(scene_.d(), BIG)); }
+  double smallSink() const override {
+    return depthBelowGround(centreOf(scene_.d(), SMALL), upRowOf(scene_.d(), SMALL), scene::test6::SMALL_SIDE);
+  }
+
+ private:
+  static constexpr int SMALL = 1, BIG = 2;  // bodies, in the order of the MJCF
+  static std::string xml(const RunOptions& o) {
+    using namespace scene::test6;
+    const bool best = o.setting == Setting::Best;
+    std::ostringstream s;
+    s.precision(17);
+    s << header("odelab-test6", o.step, SURFACE_GRAVITY, "Euler", best ? "cone=\"elliptic\"" : "")
+      << "  <default><geom friction=\"" << NO_SLIP_FRICTION << " 0.005 0.0001\"";
+    if (best) s << " solref=\"" << 2 * o.step << " 1\" solimp=\"" << BEST_SOLIMP << "\"";
+    s << "/></default>\n  <worldbody>\n" << GROUND
+      << "    <body pos=\"0 " << SMALL_SIDE / 2 << " 0\">\n      <freejoint/>\n"
+      << "      <geom type=\"box\" size=\"" << SMALL_SIDE / 2 << ' ' << SMALL_SIDE / 2 << ' ' << SMALL_SIDE / 2
+      << "\" mass=\"" << SMALL_MASS << "\"/>\n"
+      << "      <body pos=\"0 " << ANCHOR_HEIGHT + BIG_SIDE / 2 - SMALL_SIDE / 2 << " 0\">\n"
+      << "        <joint type=\"ball\" pos=\"0 " << -BIG_SIDE / 2 << " 0\"/>\n"
+      << "        <geom type=\"box\" size=\"" << BIG_SIDE / 2 << ' ' << BIG_SIDE / 2 << ' ' << BIG_SIDE / 2
+      << "\" mass=\"" << BIG_MASS << "\"/>\n      </body>\n    </body>\n"
+      << "  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  MujocoScene scene_;
+};
+
+class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLaunch, MujocoHangingPair, MujocoBalls,
+                               MujocoUpright> {
  public:
   std::string name() const override { return "mujoco"; }
   std::string settingText(const RunOptions& o) const override {
@@ -341,6 +440,14 @@ class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLa
                    : "no restitution in MuJoCo: its default contact (solref 0.02 1, critically damped)";
     else if (o.scene == "test4")
       text += best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones" : "MuJoCo's defaults";
+    else if (o.scene == "test1")
+      text += best ? "no restitution in MuJoCo: each ball a spring-damper contact solref \"-5e3 -b\", b for its e "
+                     "(damping ratio -ln e / sqrt(pi^2 + ln^2 e)), RK4"
+                   : "no restitution in MuJoCo: its default contact for every ball (solref 0.02 1, critically damped)";
+    else if (o.scene == "test6")
+      text += std::string(best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones"
+                               : "MuJoCo's defaults") +
+              "; ball joint in generalized coordinates, friction 100 (test6's never-sliding contacts)";
     else if (o.scene == "test7")
       text += std::string(best ? "contact time constant 2 steps (solref 2h 1), elliptic cones" : "MuJoCo's defaults") +
               "; ball joints in generalized coordinates, friction 100 (test7's never-sliding contacts), no angular "

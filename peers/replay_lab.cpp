@@ -61,6 +61,7 @@ class Cursor {
   }
   Vec3 vec() const { return {at(0), at(1), at(2)}; }
   double mass() const { return t_.number("mass"); }
+  const Trajectory& t() const { return t_; }
 
  private:
   const Trajectory& t_;
@@ -108,6 +109,27 @@ struct ReplayHangingPair : HangingPairModel {
   Cursor c;
 };
 
+// test1: each row holds x, y, z and speed of every ball in turn.
+struct ReplayBalls : BallsModel {
+  explicit ReplayBalls(const Trajectory& t) : c(t), balls(static_cast<int>(t.number("count"))) {}
+  void step() override { c.step(); }
+  int count() const override { return balls; }
+  double bounce(int ball) const override { return ballBounce(ball); }
+  Vec3 centre(int ball) const override { return {c.at(4 * ball), c.at(4 * ball + 1), c.at(4 * ball + 2)}; }
+  double speed(int ball) const override { return c.at(4 * ball + 3); }
+  double bounceVelocity() const override { return c.t().number("bounce_velocity"); }
+  Cursor c;
+  int balls;
+};
+struct ReplayUpright : UprightModel {
+  explicit ReplayUpright(const Trajectory& t) : c(t) {}
+  void step() override { c.step(); }
+  Vec3 bigCentre() const override { return c.vec(); }
+  double bigTiltDegrees() const override { return c.at(3); }
+  double smallSink() const override { return c.at(4); }
+  Cursor c;
+};
+
 class Replay : public Engine {
  public:
   explicit Replay(const Trajectory& t) : t_(t) {}
@@ -124,6 +146,8 @@ class Replay : public Engine {
   std::unique_ptr<HangingPairModel> hangingPair(const RunOptions&) override {
     return std::make_unique<ReplayHangingPair>(t_);
   }
+  std::unique_ptr<BallsModel> balls(const RunOptions&) override { return std::make_unique<ReplayBalls>(t_); }
+  std::unique_ptr<UprightModel> axisSystem(const RunOptions&) override { return std::make_unique<ReplayUpright>(t_); }
 
  private:
   const Trajectory& t_;
@@ -152,6 +176,8 @@ int main(int argc, char** argv) {
     else if (options.scene == "test4") measureHold(replay, options, metrics);
     else if (options.scene == "test10") measureWall(replay, options, metrics);
     else if (options.scene == "test7") measureJoints(replay, options, metrics);
+    else if (options.scene == "test1") measureRebounds(replay, options, metrics);
+    else if (options.scene == "test6") measureUpright(replay, options, metrics);
     else throw std::runtime_error("unknown scene " + options.scene);
     std::cout << metrics.toJson();
   } catch (const std::exception& error) {

@@ -74,7 +74,7 @@ class Scene:
         self.quick_steps, self.full_steps = quick_steps, full_steps
         self.args = args  # quick -> arguments every engine's run of this scene gets
         self.in_quick = in_quick
-        # (metric, why): a run with this metric non-zero has no figure (the scene did not happen as built)
+        # (rule, why): a run the rule picks has no figure: the scene did not happen as built
         self.voided_by = voided_by
 
     def steps(self, quick, engine="ode"):
@@ -84,6 +84,8 @@ class Scene:
 
 
 STEPS = [0.01, 0.003, 0.001, 0.0003, 0.0001]
+# test6: a small cube sunk deeper than its own side has gone through the ground.
+SANK_THROUGH = 1.0
 # The web peers cost ten to a hundred times ODE's CPU per simulated second:
 # in the full report they run at fewer steps (always the thesis's 0.001).
 WEB_STEPS = {"test1": [0.001], "test6": [0.001], "test2": [0.01, 0.001, 0.0001], "test8": [0.01, 0.001],
@@ -91,14 +93,12 @@ WEB_STEPS = {"test1": [0.001], "test6": [0.001], "test2": [0.01, 0.001, 0.0001],
 SCENES = [
     Scene("test1", "max_rebound_error", "max_rebound_error",
           "largest |apex2 / apex1 - e^2| over the balls with e >= 0.1", True, [], [0.01, 0.001],
-          lambda q: [], in_quick=False, not_reached="no ball bounced twice",
-          missing={"bullet": "not built in bullet_lab yet (Bullet has the parts: restitution, multiplied)",
-                   "mujoco": "MuJoCo has no restitution coefficient (its spring contact needs a stiffness per ball)"}),
+          lambda q: [], in_quick=False, not_reached="no ball bounced twice"),
     Scene("test6", "seconds_upright", "seconds_upright",
           "seconds the 5000 kg cube stays upright on its ball joint (of 60)", False, [], [0.001],
           lambda q: [], in_quick=False, not_reached="fell at once",
-          missing={"bullet": "not built in bullet_lab yet (Bullet has ball joints)",
-                   "mujoco": "not built in mujoco_lab yet (MuJoCo has ball joints)"}),
+          voided_by=(lambda r: (r.m("sink_while_upright_metres") or 0) > SANK_THROUGH,
+                     "the pair sank through the ground")),
     Scene("test2", "energy_max_deviation", "energy_max_deviation", "largest energy error |E - E0| / E0", True,
           [0.01, 0.001], STEPS, lambda q: ["--seconds", 5 if q else 20]),
     Scene("test8", "max_relative_elongation", "max_relative_elongation",
@@ -107,7 +107,7 @@ SCENES = [
     Scene("test7", "max_joint_error", "max_joint_error",
           "largest ball-joint error (m), hanging pair hit 3 times at 30 m/s, no angular speed cap", True,
           [0.001], STEPS, lambda q: [],
-          voided_by=("cube_passed_pivot", "the test cube passed through the pivot")),
+          voided_by=(lambda r: bool(r.m("cube_passed_pivot")), "the test cube passed through the pivot")),
     Scene("test9", "apex_error_20", "apex_error_20", "apex error after 20 bounces", True,
           [0.01, 0.001], STEPS, lambda q: ["--seconds", 21], not_reached="fewer than 20 bounces"),
     Scene("test4", "heaviest_held_kg", None, "heaviest big cube held on the 5 kg cube (kg)", False,
@@ -200,7 +200,7 @@ class Peers(Experiment):
             value, r = (self.heaviest(ctx, scene, engine, args, step) if scene.name == "test4"
                         else self.measure(ctx, scene, engine, args, step))
             ctx.advance()
-            voided = bool(r) and scene.voided_by is not None and bool(r.m(scene.voided_by[0]))
+            voided = bool(r) and scene.voided_by is not None and scene.voided_by[0](r)
             if voided:
                 value = None
             return dict(voided=voided, scene=scene.name, engine=engine, setting=setting, step=step, quantity=scene.quantity,

@@ -17,12 +17,14 @@ const ROWS = {
   test9: (m) => m.centre(),
   test4: (m) => [...m.bigCentre(), m.bigTiltDegrees(), m.deepestPenetration()],
   test10: (m) => [...m.cubeCentre(), m.cubeVelocityX()],
+  test1: (m) => Array.from({ length: m.count }, (_, i) => [...m.centre(i), m.speed(i)]).flat(),
+  test6: (m) => [...m.bigCentre(), m.bigTiltDegrees(), m.smallSink()],
   test7: (m) => [m.jointError(), m.pivotAngularSpeed(), ...m.pivotCentre(), ...m.testCubeCentre()],
 };
 
 async function main([engineName, sceneName, setting, stepText, secondsText, velocityText]) {
   if (!ROWS[sceneName] || !['havok', 'jolt', 'rapier'].includes(engineName)) {
-    process.stderr.write('usage: record.js havok|jolt|rapier test2|test4|test7|test8|test9|test10 SETTING STEP SECONDS [VELOCITY]\n');
+    process.stderr.write('usage: record.js havok|jolt|rapier test1|test2|test4|test6|test7|test8|test9|test10 SETTING STEP SECONDS [VELOCITY]\n');
     return 2;
   }
   const engine = require(`../src/${engineName}`);
@@ -35,6 +37,10 @@ async function main([engineName, sceneName, setting, stepText, secondsText, velo
     mass = model.mass();
   } else if (sceneName === 'test9') {
     model = engine.ball(lib, options);
+  } else if (sceneName === 'test1') {
+    model = engine.balls(lib, options);
+  } else if (sceneName === 'test6') {
+    model = engine.axisSystem(lib, options);
   } else if (sceneName === 'test7') {
     model = engine.hangingPair(lib, options);
   } else if (sceneName === 'test4') {
@@ -47,7 +53,7 @@ async function main([engineName, sceneName, setting, stepText, secondsText, velo
     steps = Math.ceil(((t.WALL_FAR_FACE + t.CUBE_HALF_SIZE - t.LAUNCH_X) / velocity + t.SETTLE_SECONDS) / options.step) + 2;
   }
   const lines = [`scene ${sceneName}`, `step ${options.step}`, `seconds ${options.seconds}`, `mass ${mass}`,
-    `velocity ${velocity}`, 'rows', ROWS[sceneName](model).join(' ')];
+    `velocity ${velocity}`, `count ${model.count || 0}`, `bounce_velocity ${model.bounceVelocity ?? 0}`, 'rows', ROWS[sceneName](model).join(' ')];
   for (let i = 0; i < steps; ++i) {
     model.step();
     lines.push(ROWS[sceneName](model).join(' '));

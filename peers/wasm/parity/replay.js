@@ -6,6 +6,8 @@
 const fs = require('fs');
 const m = require('../src/measurements');
 const { Metrics } = require('../src/metrics');
+const { measureRebounds, ballLayout } = require('../src/rebound');
+const { measureUpright } = require('../src/upright');
 
 function readTrajectory(file) {
   const lines = fs.readFileSync(file, 'utf8').trim().split('\n');
@@ -41,6 +43,17 @@ function main([file]) {
     case 'test4':
       m.measureHold(replayModel(rows, (row) => ({ bigCentre: () => row().slice(0, 3), bigTiltDegrees: () => row()[3],
         deepestPenetration: () => row()[4] })), header.mass, options, metrics);
+      break;
+    case 'test1': {
+      const count = header.count;
+      const model = replayModel(rows, (row) => ({ centre: (i) => row().slice(4 * i, 4 * i + 3), speed: (i) => row()[4 * i + 3] }));
+      measureRebounds({ ...model, count, bounceVelocity: header.bounce_velocity, bounce: (i) => ballLayout(i).bounce },
+        options, metrics);
+      break;
+    }
+    case 'test6':
+      measureUpright(replayModel(rows, (row) => ({ bigCentre: () => row().slice(0, 3), bigTiltDegrees: () => row()[3],
+        smallSink: () => row()[4] })), options, metrics);
       break;
     case 'test7':
       m.measureJoints(replayModel(rows, (row) => ({ throwCube: () => {}, jointError: () => row()[0],

@@ -177,23 +177,16 @@ function balls(HK, options) {
   };
 }
 
-// test6: the 5000 kg cube on a ball joint (every linear axis locked, every
-// angular one free) 2 m above the 1 kg cube resting on the ground box.
+// test6: the 5000 kg cube on a ball joint 2 m above the 1 kg cube resting
+// on the ground box, every shape with test6's no-slip friction.
 function axisSystem(HK, options) {
   const t = scene.test6;
   const world = new World(HK, SURFACE_GRAVITY, options);
-  world.ground();
-  const small = world.body(world.box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
-  const big = world.body(world.box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
-  const joint = check(HK.HP_Constraint_Create(), 'HP_Constraint_Create');
-  HK.HP_Constraint_SetParentBody(joint, small);
-  HK.HP_Constraint_SetChildBody(joint, big);
-  HK.HP_Constraint_SetAnchorInParent(joint, [0, t.ANCHOR_HEIGHT - t.SMALL_SIDE / 2, 0], [1, 0, 0], [0, 1, 0]);
-  HK.HP_Constraint_SetAnchorInChild(joint, [0, -t.BIG_SIDE / 2, 0], [1, 0, 0], [0, 1, 0]);
-  const A = HK.ConstraintAxis;
-  for (const axis of [A.LINEAR_X, A.LINEAR_Y, A.LINEAR_Z]) HK.HP_Constraint_SetAxisMode(joint, axis, HK.ConstraintAxisLimitMode.LOCKED);
-  for (const axis of [A.ANGULAR_X, A.ANGULAR_Y, A.ANGULAR_Z]) HK.HP_Constraint_SetAxisMode(joint, axis, HK.ConstraintAxisLimitMode.FREE);
-  HK.HP_Constraint_SetEnabled(joint, true);
+  const box = (size) => world.friction(world.box(size), scene.top.NO_SLIP_FRICTION);
+  world.body(box([GROUND_SIZE, 10, GROUND_SIZE]), 0, [0, -5, 0]);
+  const small = world.body(box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
+  const big = world.body(box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  ballJoint(HK, small, big, [0, t.ANCHOR_HEIGHT - t.SMALL_SIDE / 2, 0], [0, -t.BIG_SIDE / 2, 0]);
   return uprightReadout({ step: () => world.step(), position: (b) => world.position(b),
     rotation: (b) => world.transform(b)[1] }, small, big);
 }
@@ -220,8 +213,8 @@ function ballJoint(HK, parent, child, inParent, inChild) {
 function hangingPair(HK, options) {
   const t = scene.test7;
   const world = new World(HK, SURFACE_GRAVITY, options);
-  const box = (side) => world.friction(world.box([side, side, side]), t.NO_SLIP_FRICTION);
-  world.body(world.friction(world.box([GROUND_SIZE, 10, GROUND_SIZE]), t.NO_SLIP_FRICTION), 0, [0, -5, 0]);
+  const box = (side) => world.friction(world.box([side, side, side]), scene.top.NO_SLIP_FRICTION);
+  world.body(world.friction(world.box([GROUND_SIZE, 10, GROUND_SIZE]), scene.top.NO_SLIP_FRICTION), 0, [0, -5, 0]);
   const pivot = world.body(box(t.PIVOT_SIDE), t.PIVOT_MASS, [0, t.PIVOT_CENTRE_Y, 0]);
   const big = world.body(box(t.BIG_SIDE), t.BIG_MASS, [0, t.BIG_CENTRE_Y, 0]);
   const cube = world.body(box(t.TEST_CUBE_SIDE), t.TEST_CUBE_MASS, throwState().position);
@@ -267,6 +260,7 @@ function settingText(options) {
   if (options.scene === 'test9') text += '; restitution 1.0 on both shapes (geometric mean: 1.0), ground a 200 m box';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 1.0, combined by minimum; ground a 200 m box";
   if (options.scene === 'test10') text += '; ground a 200 m box';
+  if (options.scene === 'test6') text += '; friction 100 on every shape (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; ball joints (6-DOF, linear axes locked), friction 100 on every shape, ground a 200 m box';
   return text;
 }

@@ -177,13 +177,14 @@ function balls(Jolt, options) {
 }
 
 // test6: the 5000 kg cube on a point constraint (a ball joint) 2 m above the
-// 1 kg cube resting on the ground plane.
+// 1 kg cube resting on the ground plane, every body with test6's no-slip friction.
 function axisSystem(Jolt, options) {
   const t = scene.test6;
   const world = new World(Jolt, SURFACE_GRAVITY, options);
-  world.body(world.plane(), 0, [0, 0, 0]);
-  const small = world.body(world.box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
-  const big = world.body(world.box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body(world.plane(), 0, [0, 0, 0], { friction });
+  const small = world.body(world.box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0], { friction });
+  const big = world.body(world.box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0], { friction });
   const joint = new Jolt.PointConstraintSettings();
   joint.mPoint1 = joint.mPoint2 = new Jolt.RVec3(0, t.ANCHOR_HEIGHT, 0);
   world.system.AddConstraint(joint.Create(small, big));
@@ -199,7 +200,7 @@ function axisSystem(Jolt, options) {
 function hangingPair(Jolt, options) {
   const t = scene.test7;
   const world = new World(Jolt, SURFACE_GRAVITY, options);
-  const friction = t.NO_SLIP_FRICTION;
+  const friction = scene.top.NO_SLIP_FRICTION;
   const pairFilter = new Jolt.GroupFilterTable(2);
   pairFilter.DisableCollision(0, 1);
   const cube = (side) => world.box([side, side, side]);
@@ -256,6 +257,7 @@ function settingText(options) {
     : "Jolt's defaults (damping 0.05 linear and angular, 10 velocity / 2 position iterations, no restitution below 1 m/s)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both bodies (maximum: 1.0), ground a plane';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 0 (maximum: the ball's), ground a plane";
+  if (options.scene === 'test6') text += '; friction 100 on every body (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; point constraints (ball joints), friction 100 on every body, ground a plane';
   if (options.scene === 'test10') text += options.ccd || best ? '; cube swept (motion quality LinearCast)' : '; cube not swept (Discrete)';
   return text;

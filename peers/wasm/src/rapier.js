@@ -134,14 +134,15 @@ function balls(R, options) {
 }
 
 // test6: the 5000 kg cube on a spherical impulse joint 2 m above the 1 kg
-// cube resting on the ground cuboid.
+// cube resting on the ground cuboid, every collider with test6's no-slip friction.
 function axisSystem(R, options) {
   const t = scene.test6;
   const world = new World(R, SURFACE_GRAVITY, options);
-  world.ground();
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body([[R.ColliderDesc.cuboid(GROUND_SIZE / 2, 5, GROUND_SIZE / 2)]], 0, [0, -5, 0], { friction });
   const cube = (side) => R.ColliderDesc.cuboid(side / 2, side / 2, side / 2);
-  const small = world.body([[cube(t.SMALL_SIDE)]], t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
-  const big = world.body([[cube(t.BIG_SIDE)]], t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  const small = world.body([[cube(t.SMALL_SIDE)]], t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0], { friction });
+  const big = world.body([[cube(t.BIG_SIDE)]], t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0], { friction });
   const joint = R.JointData.spherical({ x: 0, y: t.ANCHOR_HEIGHT - t.SMALL_SIDE / 2, z: 0 }, { x: 0, y: -t.BIG_SIDE / 2, z: 0 });
   world.world.createImpulseJoint(joint, small, big, true);
   const rotation = (b) => {
@@ -158,7 +159,7 @@ function axisSystem(R, options) {
 function hangingPair(R, options) {
   const t = scene.test7;
   const world = new World(R, SURFACE_GRAVITY, options);
-  const friction = t.NO_SLIP_FRICTION;
+  const friction = scene.top.NO_SLIP_FRICTION;
   const cube = (side) => R.ColliderDesc.cuboid(side / 2, side / 2, side / 2);
   world.body([[R.ColliderDesc.cuboid(GROUND_SIZE / 2, 5, GROUND_SIZE / 2)]], 0, [0, -5, 0], { friction });
   const pivot = world.body([[cube(t.PIVOT_SIDE)]], t.PIVOT_MASS, [0, t.PIVOT_CENTRE_Y, 0], { friction });
@@ -228,6 +229,7 @@ function settingText(options) {
   if (options.scene === 'test2' || options.scene === 'test8') text += ', impulse revolute joint';
   if (options.scene === 'test9') text += '; restitution 1.0 on both colliders (average: 1.0), ground a 200 m cuboid';
   if (options.scene === 'test1') text += "; each ball's restitution combined by maximum with the ground's 0, ground a 200 m cuboid";
+  if (options.scene === 'test6') text += '; friction 100 on every collider (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; spherical impulse joints, friction 100 on every collider, ground a 200 m cuboid';
   if (options.scene === 'test10') {
     text += '; lengthUnit 1000 with the length tolerances divided by 1000 (speed cap 400 km/s)';
