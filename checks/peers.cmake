@@ -82,12 +82,19 @@ odelab_check(peers_mujoco_axis_system_sinks_soft_contact mujoco_lab EXPECT sink_
              ARGS --scene test6 --seconds 5)
 odelab_check(peers_mujoco_axis_system_stiff_contact_holds mujoco_lab EXPECT sink_while_upright_metres<1e-3
              ARGS --scene test6 --seconds 5 --setting best)
-list(APPEND ODELAB_PEER_CHECKS peers_bullet_rebound_ratio peers_bullet_default_rebound_lost
+# test3, the spiral of sixty dominoes (20 s at test3's step 0.005): the chain
+# completes on Bullet and every domino is asleep at the end (sleeping on with
+# test3's thresholds); on MuJoCo (no sleeping) it completes too.
+odelab_check(peers_bullet_domino_chain_completes bullet_lab EXPECT fallen_fraction==1 active_bodies==0
+             ARGS --scene test3)
+odelab_check(peers_mujoco_domino_chain_completes mujoco_lab EXPECT fallen_fraction==1 ARGS --scene test3)
+list(APPEND ODELAB_PEER_CHECKS peers_bullet_domino_chain_completes peers_mujoco_domino_chain_completes
+     peers_bullet_rebound_ratio peers_bullet_default_rebound_lost
      peers_mujoco_spring_damper_rebound peers_bullet_axis_system_falls peers_mujoco_axis_system_sinks_soft_contact
      peers_mujoco_axis_system_stiff_contact_holds)
 # The same metrics twice in a row on the scenes added to the C++ peers.
 foreach(_peer bullet_lab mujoco_lab)
-  foreach(_row "test7;1" "test1;2" "test6;2")
+  foreach(_row "test7;1" "test1;2" "test6;2" "test3;3")
     list(GET _row 0 _scene)
     list(GET _row 1 _seconds)
     add_test(NAME peers_${_peer}_repeats_${_scene}
@@ -229,6 +236,12 @@ if(ODELAB_WEB_PEERS_READY)
                throws==3 ARGS --scene test7 --setting best)
   odelab_check(peers_rapier_test7_joints_hold rapier_lab LABEL peers EXPECT max_joint_error<0.01 cube_passed_pivot==0
                throws==3 ARGS --scene test7)
+  # test3: the domino chain completes and every domino is asleep after 20 s
+  # (each engine's own sleeping; Jolt's with test3's 0.1 m/s).
+  foreach(_engine havok jolt rapier)
+    odelab_check(peers_${_engine}_domino_chain_completes ${_engine}_lab LABEL peers
+                 EXPECT fallen_fraction==1 active_bodies==0 ARGS --scene test3)
+  endforeach()
   # Havok has no CCD switch: --ccd is refused rather than ignored.
   odelab_check(peers_havok_refuses_ccd havok_lab LABEL peers STATUS 2 ARGS --scene test10 --ccd)
 
@@ -238,7 +251,8 @@ if(ODELAB_WEB_PEERS_READY)
   # the rule has something to decide (apexes, a fall, a pass and a stop).
   foreach(_row "havok;test2;default;0.001;5" "rapier;test8;best;0.001;5" "jolt;test9;best;0.001;21"
                "rapier;test4;default;0.001;2" "rapier;test10;default;0.001;0;250" "jolt;test10;default;0.001;0;300"
-               "jolt;test7;default;0.001;6" "rapier;test1;default;0.01;15" "havok;test6;default;0.001;5")
+               "jolt;test7;default;0.001;6" "rapier;test1;default;0.01;15" "havok;test6;default;0.001;5"
+               "jolt;test3;default;0.005;20")
     list(GET _row 0 _engine)
     list(GET _row 1 _scene)
     string(REPLACE ";" "_" _name "${_row}")

@@ -35,6 +35,7 @@ double defaultSeconds(const std::string& scene) {
   if (scene == "test9") return scene::test9::RUN_SECONDS;
   if (scene == "test4") return scene::test4::RUN_SECONDS;
   if (scene == "test1") return scene::test1::RUN_SECONDS;
+  if (scene == "test3") return scene::test3::RUN_SECONDS;
   if (scene == "test6") return scene::test6::DEFAULT_SECONDS;
   if (scene == "test7") return scene::test7::DEFAULT_THROWS * scene::test7::DEFAULT_THROW_INTERVAL;
   return 0.0;  // test10 runs launches until each is resolved
@@ -262,6 +263,42 @@ Tally measureUpright(Engine& engine, const RunOptions& options, Metrics& metrics
   metrics.set("sink_while_upright_metres", maxSink);
   metrics.set("start_tilt_degrees", 0);
   metrics.set("max_angular_speed_limit", 0);
+  return tally;
+}
+
+// test3: whether the chain completes (every domino past FALLEN_TILT_DEGREES),
+// when the last one fell, and how many bodies are still awake at the end
+// (test3's names and rule).
+Tally measureChain(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  using namespace scene::test3;
+  auto chain = engine.dominoes(options);
+  std::vector<double> fellAt(chain->count(), -1.0);
+  Tally tally;
+  for (long n = stepsFor(options); tally.steps < n;) {
+    chain->step();
+    ++tally.steps;
+    for (int i = 0; i < chain->count(); ++i) {
+      const double tilt = chain->tiltDegrees(i);
+      if (!std::isfinite(tilt)) tally.finite = false;
+      if (fellAt[i] < 0 && tilt > FALLEN_TILT_DEGREES) fellAt[i] = tally.steps * options.step;
+    }
+    if (!tally.finite) break;
+  }
+  tally.simSeconds = tally.steps * options.step;
+  int fallen = 0;
+  double last = 0.0, leastTilt = 180.0;
+  for (int i = 0; i < chain->count(); ++i) {
+    if (fellAt[i] < 0) continue;
+    ++fallen;
+    last = std::max(last, fellAt[i]);
+    leastTilt = std::min(leastTilt, chain->tiltDegrees(i));
+  }
+  metrics.set("dominoes", chain->count());
+  metrics.set("fallen_fraction", chain->count() ? double(fallen) / chain->count() : 0.0);
+  metrics.set("chain_seconds", last);
+  metrics.set("active_bodies", chain->activeBodies());
+  metrics.set("auto_disable", chain->sleeps() ? 1 : 0);
+  metrics.set("min_fallen_tilt_degrees", fallen ? leastTilt : 0.0);
   return tally;
 }
 

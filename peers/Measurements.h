@@ -26,6 +26,7 @@ Tally measureWall(Engine& engine, const RunOptions& options, Metrics& metrics); 
 Tally measureJoints(Engine& engine, const RunOptions& options, Metrics& metrics);      // test7
 Tally measureRebounds(Engine& engine, const RunOptions& options, Metrics& metrics);    // test1
 Tally measureUpright(Engine& engine, const RunOptions& options, Metrics& metrics);     // test6
+Tally measureChain(Engine& engine, const RunOptions& options, Metrics& metrics);       // test3
 
 // test1's layout: where ball i starts (its restitution is i / (BALL_COUNT - 1)).
 Vec3 ballStart(int ball);

@@ -11,6 +11,7 @@
 #include "Measurements.h"
 #include "Metrics.h"
 #include "PeerScene.h"
+#include "shared/SceneConstants.h"
 
 namespace odelab::peers {
 
@@ -22,6 +23,7 @@ const std::map<std::string, Measurement> MEASUREMENTS = {
     {"test2", measureEnergy}, {"test4", measureHold},  {"test8", measureElongation},
     {"test9", measureBounces}, {"test10", measureWall},
     {"test7", measureJoints},   {"test1", measureRebounds}, {"test6", measureUpright},
+    {"test3", measureChain},
 };
 
 double processCpuSeconds() {
@@ -45,7 +47,7 @@ int runPeer(int argc, char** argv, Engine& engine) {
       ->capture_default_str();
   // Every number finite and within its range, every value non-empty,
   // every count decimal: the ODE programs' rules, from utils/CommandLine.
-  app.add_option("--step", options.step, "simulation step in s")->check(cli::finiteRange(1e-7, 0.1))->capture_default_str();
+  app.add_option("--step", options.step, "simulation step in s (test3: 0.005, its ODE program's, unless given)")->check(cli::finiteRange(1e-7, 0.1))->capture_default_str();
   app.add_option("--seconds", options.seconds, "simulated seconds (default: the ODE program's run for the scene)")
       ->check(cli::positive(86400.0));
   app.add_option("--setting", setting,
@@ -74,6 +76,8 @@ int runPeer(int argc, char** argv, Engine& engine) {
     cli::requireReplaceableFile("--metrics-json", metricsJson);
   });
   if (refused) return *refused;
+  // test3 runs at its own step (the ODE program's) unless one is given.
+  if (options.scene == "test3" && app.count("--step") == 0) options.step = scene::test3::SCENE_STEP;
   options.setting = setting == "best" ? Setting::Best : Setting::Default;
 
   Metrics metrics;

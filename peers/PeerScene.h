@@ -111,6 +111,17 @@ class UprightModel {
   virtual double smallSink() const = 0;       // m the small cube's lowest corner is below the ground (0: not)
 };
 
+// test3: the domino spiral, the first domino leaning and pushed.
+class DominoModel {
+ public:
+  virtual ~DominoModel() = default;
+  virtual void step() = 0;
+  virtual int count() const = 0;
+  virtual double tiltDegrees(int domino) const = 0;  // local y against world y
+  virtual int activeBodies() const = 0;              // bodies not asleep
+  virtual bool sleeps() const = 0;                   // whether the engine puts bodies to sleep here
+};
+
 class Engine {
  public:
   virtual ~Engine() = default;
@@ -125,10 +136,12 @@ class Engine {
   virtual std::unique_ptr<HangingPairModel> hangingPair(const RunOptions& options) = 0;
   virtual std::unique_ptr<BallsModel> balls(const RunOptions& options) = 0;
   virtual std::unique_ptr<UprightModel> axisSystem(const RunOptions& options) = 0;
+  virtual std::unique_ptr<DominoModel> dominoes(const RunOptions& options) = 0;
 };
 
 // An engine made of its scene models: the factories written once.
-template <class Pendulum, class Ball, class Stack, class Launch, class HangingPair, class Balls, class Upright>
+template <class Pendulum, class Ball, class Stack, class Launch, class HangingPair, class Balls, class Upright,
+          class Dominoes>
 class EngineOf : public Engine {
  public:
   std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& o) override {
@@ -146,6 +159,7 @@ class EngineOf : public Engine {
   }
   std::unique_ptr<BallsModel> balls(const RunOptions& o) override { return std::make_unique<Balls>(o); }
   std::unique_ptr<UprightModel> axisSystem(const RunOptions& o) override { return std::make_unique<Upright>(o); }
+  std::unique_ptr<DominoModel> dominoes(const RunOptions& o) override { return std::make_unique<Dominoes>(o); }
 };
 
 // The whole program: options, the scene's measurement, metrics. Exit status

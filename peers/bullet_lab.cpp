@@ -12,6 +12,7 @@
 #include "PeerScene.h"
 #include "Readouts.h"
 #include "Test10Scene.h"
+#include "Test3Scene.h"
 #include "Test7Scene.h"
 #include "WorldSettings.h"
 #include "shared/SceneConstants.h"
@@ -383,8 +384,55 @@ class BulletUpright : public UprightModel {
   btRigidBody *small_ = nullptr, *big_ = nullptr;
 };
 
+// ---- test3 -------------------------------------------------------------------
+// The dominoes with friction 1.0 (Bullet multiplies: 1.0) and, as test3's
+// auto-disable, sleeping on with the thesis's thresholds (0.1 m/s, 0.1 rad/s;
+// Bullet's own are 0.8 and 1.0) after Bullet's 2 s below them (ODE: 10
+// steps). Best: 100 iterations.
+class BulletDominoes : public DominoModel {
+ public:
+  explicit BulletDominoes(const RunOptions& options) : world_(SURFACE_GRAVITY), step_(options.step) {
+    using namespace odelab::peers::test3;
+    world_.add(new btStaticPlaneShape(btVector3(0, 1, 0), 0), 0.0, btVector3(0, 0, 0))->setFriction(DEFAULT_MU);
+    for (const DominoStart& d : dominoStarts(DEFAULT_DOMINOES)) {
+      btRigidBody* domino =
+          world_.add(new btBoxShape(btVector3(DOMINO_THICKNESS / 2, DOMINO_HEIGHT / 2, DOMINO_WIDTH / 2)), DOMINO_MASS,
+                     btVector3(d.centre.x, d.centre.y, d.centre.z));
+      btTransform pose(btQuaternion(d.quaternion[1], d.quaternion[2], d.quaternion[3], d.quaternion[0]),
+                       btVector3(d.centre.x, d.centre.y, d.centre.z));
+      domino->setCenterOfMassTransform(pose);
+      domino->getMotionState()->setWorldTransform(pose);
+      domino->setLinearVelocity(btVector3(d.velocity.x, d.velocity.y, d.velocity.z));
+      domino->setAngularVelocity(btVector3(d.spin.x, d.spin.y, d.spin.z));
+      domino->setFriction(DEFAULT_MU);
+      domino->forceActivationState(ACTIVE_TAG);
+      domino->setSleepingThresholds(AUTO_DISABLE_THRESHOLD, AUTO_DISABLE_THRESHOLD);
+      dominoes_.push_back(domino);
+    }
+    if (options.setting == Setting::Best) world_.solverInfo().m_numIterations = BEST_ITERATIONS;
+  }
+  void step() override { world_.step(step_); }
+  int count() const override { return static_cast<int>(dominoes_.size()); }
+  double tiltDegrees(int domino) const override {
+    double row[3];
+    upRow(dominoes_[domino], row);
+    return odelab::peers::tiltDegrees(row);
+  }
+  int activeBodies() const override {
+    int active = 0;
+    for (const btRigidBody* d : dominoes_) active += d->isActive();
+    return active;
+  }
+  bool sleeps() const override { return true; }
+
+ private:
+  BulletWorld world_;
+  double step_;
+  std::vector<btRigidBody*> dominoes_;
+};
+
 class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLaunch, BulletHangingPair, BulletBalls,
-                               BulletUpright> {
+                               BulletUpright, BulletDominoes> {
  public:
   std::string name() const override { return "bullet"; }
   bool hasContinuousCollision() const override { return true; }
@@ -407,6 +455,9 @@ class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLa
     else if (o.scene == "test6")
       text += std::string(best ? "100 iterations" : "Bullet's defaults (10 iterations, ERP 0.2)") +
               "; btPoint2PointConstraint ball joint, friction 100 on every shape (test6's never-sliding contacts)";
+    else if (o.scene == "test3")
+      text += std::string(best ? "100 iterations" : "Bullet's defaults (10 iterations)") +
+              "; friction 1.0, sleeping on with thresholds 0.1 m/s and 0.1 rad/s after Bullet's 2 s";
     else if (o.scene == "test7")
       text += std::string(best ? "joint ERP 1.0, 100 iterations" : "joint ERP 0.2, 10 iterations (Bullet's defaults)") +
               "; btPoint2PointConstraint ball joints, friction 100 on every shape (test7's never-sliding contacts), "

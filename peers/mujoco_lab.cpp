@@ -19,6 +19,7 @@
 #include "PeerScene.h"
 #include "Readouts.h"
 #include "Test10Scene.h"
+#include "Test3Scene.h"
 #include "Test7Scene.h"
 #include "WorldSettings.h"
 #include "shared/SceneConstants.h"
@@ -426,8 +427,56 @@ class MujocoUpright : public UprightModel {
   MujocoScene scene_;
 };
 
+// ---- test3 -------------------------------------------------------------------
+// The dominoes with friction 1.0. MuJoCo 2.2 has no sleeping: every body is
+// stepped to the end (test3's auto-disable has nothing to map to). Best: as
+// test4's, the stiffest contact at this step and elliptic cones.
+class MujocoDominoes : public DominoModel {
+  static constexpr int CONTACTS = 500;
+
+ public:
+  explicit MujocoDominoes(const RunOptions& o) : scene_(xml(o)) {
+    const auto first = test3::dominoStarts(1).front();
+    const double velocity[6] = {first.velocity.x, first.velocity.y, first.velocity.z,
+                                first.spin.x,     first.spin.y,     first.spin.z};
+    std::copy(velocity, velocity + 6, scene_.d()->qvel);  // free joint: linear, then angular (world axes)
+    mj_forward(scene_.m(), scene_.d());
+  }
+  void step() override {
+    scene_.step();
+    mj_kinematics(scene_.m(), scene_.d());
+  }
+  int count() const override { return scene::test3::DEFAULT_DOMINOES; }
+  double tiltDegrees(int domino) const override { return odelab::peers::tiltDegrees(upRowOf(scene_.d(), domino + 1)); }
+  int activeBodies() const override { return count(); }
+  bool sleeps() const override { return false; }
+
+ private:
+  static std::string xml(const RunOptions& o) {
+    using namespace odelab::peers::test3;
+    const bool best = o.setting == Setting::Best;
+    std::ostringstream s;
+    s.precision(17);
+    // MuJoCo 2.2 holds 100 contacts by default: sixty plates leaning on each
+    // other need more (and four constraint rows a contact in a pyramidal cone).
+    s << header("odelab-test3", o.step, SURFACE_GRAVITY, "Euler", best ? "cone=\"elliptic\"" : "")
+      << "  <size nconmax=\"" << CONTACTS << "\" njmax=\"" << 4 * CONTACTS << "\"/>\n"
+      << "  <default><geom friction=\"" << DEFAULT_MU << " 0.005 0.0001\"";
+    if (best) s << " solref=\"" << 2 * o.step << " 1\" solimp=\"" << BEST_SOLIMP << "\"";
+    s << "/></default>\n  <worldbody>\n" << GROUND;
+    for (const DominoStart& d : dominoStarts(DEFAULT_DOMINOES))
+      s << "    <body pos=\"" << d.centre.x << ' ' << d.centre.y << ' ' << d.centre.z << "\" quat=\"" << d.quaternion[0]
+        << ' ' << d.quaternion[1] << ' ' << d.quaternion[2] << ' ' << d.quaternion[3] << "\">\n      <freejoint/>\n"
+        << "      <geom type=\"box\" size=\"" << DOMINO_THICKNESS / 2 << ' ' << DOMINO_HEIGHT / 2 << ' '
+        << DOMINO_WIDTH / 2 << "\" mass=\"" << DOMINO_MASS << "\"/>\n    </body>\n";
+    s << "  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  MujocoScene scene_;
+};
+
 class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLaunch, MujocoHangingPair, MujocoBalls,
-                               MujocoUpright> {
+                               MujocoUpright, MujocoDominoes> {
  public:
   std::string name() const override { return "mujoco"; }
   std::string settingText(const RunOptions& o) const override {
@@ -448,6 +497,10 @@ class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLa
       text += std::string(best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones"
                                : "MuJoCo's defaults") +
               "; ball joint in generalized coordinates, friction 100 (test6's never-sliding contacts)";
+    else if (o.scene == "test3")
+      text += std::string(best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones"
+                               : "MuJoCo's defaults") +
+              "; friction 1.0; no sleeping in MuJoCo 2.2 (every body stepped to the end)";
     else if (o.scene == "test7")
       text += std::string(best ? "contact time constant 2 steps (solref 2h 1), elliptic cones" : "MuJoCo's defaults") +
               "; ball joints in generalized coordinates, friction 100 (test7's never-sliding contacts), no angular "

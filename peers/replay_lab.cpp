@@ -130,6 +130,18 @@ struct ReplayUpright : UprightModel {
   Cursor c;
 };
 
+// test3: each row holds every domino's tilt, then the bodies awake.
+struct ReplayDominoes : DominoModel {
+  explicit ReplayDominoes(const Trajectory& t) : c(t), dominoes(static_cast<int>(t.number("count"))) {}
+  void step() override { c.step(); }
+  int count() const override { return dominoes; }
+  double tiltDegrees(int domino) const override { return c.at(domino); }
+  int activeBodies() const override { return static_cast<int>(c.at(dominoes)); }
+  bool sleeps() const override { return c.t().number("sleeps") != 0; }
+  Cursor c;
+  int dominoes;
+};
+
 class Replay : public Engine {
  public:
   explicit Replay(const Trajectory& t) : t_(t) {}
@@ -148,6 +160,7 @@ class Replay : public Engine {
   }
   std::unique_ptr<BallsModel> balls(const RunOptions&) override { return std::make_unique<ReplayBalls>(t_); }
   std::unique_ptr<UprightModel> axisSystem(const RunOptions&) override { return std::make_unique<ReplayUpright>(t_); }
+  std::unique_ptr<DominoModel> dominoes(const RunOptions&) override { return std::make_unique<ReplayDominoes>(t_); }
 
  private:
   const Trajectory& t_;
@@ -178,6 +191,7 @@ int main(int argc, char** argv) {
     else if (options.scene == "test7") measureJoints(replay, options, metrics);
     else if (options.scene == "test1") measureRebounds(replay, options, metrics);
     else if (options.scene == "test6") measureUpright(replay, options, metrics);
+    else if (options.scene == "test3") measureChain(replay, options, metrics);
     else throw std::runtime_error("unknown scene " + options.scene);
     std::cout << metrics.toJson();
   } catch (const std::exception& error) {

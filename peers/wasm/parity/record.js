@@ -18,13 +18,14 @@ const ROWS = {
   test4: (m) => [...m.bigCentre(), m.bigTiltDegrees(), m.deepestPenetration()],
   test10: (m) => [...m.cubeCentre(), m.cubeVelocityX()],
   test1: (m) => Array.from({ length: m.count }, (_, i) => [...m.centre(i), m.speed(i)]).flat(),
+  test3: (m) => [...Array.from({ length: m.count }, (_, i) => m.tiltDegrees(i)), m.activeBodies()],
   test6: (m) => [...m.bigCentre(), m.bigTiltDegrees(), m.smallSink()],
   test7: (m) => [m.jointError(), m.pivotAngularSpeed(), ...m.pivotCentre(), ...m.testCubeCentre()],
 };
 
 async function main([engineName, sceneName, setting, stepText, secondsText, velocityText]) {
   if (!ROWS[sceneName] || !['havok', 'jolt', 'rapier'].includes(engineName)) {
-    process.stderr.write('usage: record.js havok|jolt|rapier test1|test2|test4|test6|test7|test8|test9|test10 SETTING STEP SECONDS [VELOCITY]\n');
+    process.stderr.write('usage: record.js havok|jolt|rapier test1|test2|test3|test4|test6|test7|test8|test9|test10 SETTING STEP SECONDS [VELOCITY]\n');
     return 2;
   }
   const engine = require(`../src/${engineName}`);
@@ -39,6 +40,8 @@ async function main([engineName, sceneName, setting, stepText, secondsText, velo
     model = engine.ball(lib, options);
   } else if (sceneName === 'test1') {
     model = engine.balls(lib, options);
+  } else if (sceneName === 'test3') {
+    model = engine.dominoes(lib, options);
   } else if (sceneName === 'test6') {
     model = engine.axisSystem(lib, options);
   } else if (sceneName === 'test7') {
@@ -53,7 +56,8 @@ async function main([engineName, sceneName, setting, stepText, secondsText, velo
     steps = Math.ceil(((t.WALL_FAR_FACE + t.CUBE_HALF_SIZE - t.LAUNCH_X) / velocity + t.SETTLE_SECONDS) / options.step) + 2;
   }
   const lines = [`scene ${sceneName}`, `step ${options.step}`, `seconds ${options.seconds}`, `mass ${mass}`,
-    `velocity ${velocity}`, `count ${model.count || 0}`, `bounce_velocity ${model.bounceVelocity ?? 0}`, 'rows', ROWS[sceneName](model).join(' ')];
+    `velocity ${velocity}`, `count ${model.count || 0}`, `bounce_velocity ${model.bounceVelocity ?? 0}`,
+    `sleeps ${model.sleeps ? 1 : 0}`, 'rows', ROWS[sceneName](model).join(' ')];
   for (let i = 0; i < steps; ++i) {
     model.step();
     lines.push(ROWS[sceneName](model).join(' '));

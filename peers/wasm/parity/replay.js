@@ -51,6 +51,12 @@ function main([file]) {
         options, metrics);
       break;
     }
+    case 'test3': {
+      const count = header.count;
+      const model = replayModel(rows, (row) => ({ tiltDegrees: (i) => row()[i], activeBodies: () => row()[count] }));
+      m.measureChain({ ...model, count, sleeps: header.sleeps !== 0 }, options, metrics);
+      break;
+    }
     case 'test6':
       measureUpright(replayModel(rows, (row) => ({ bigCentre: () => row().slice(0, 3), bigTiltDegrees: () => row()[3],
         smallSink: () => row()[4] })), options, metrics);

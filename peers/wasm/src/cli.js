@@ -3,14 +3,17 @@
 // the web peers. A bad option, a value out of range, NaN, or a run that would
 // take no step is refused with its reason on stderr and status 2.
 
+const { scene } = require('./constants');
+
 class UsageError extends Error {}
 
-const SCENES = ['test1', 'test2', 'test4', 'test6', 'test7', 'test8', 'test9', 'test10'];
+const SCENES = ['test1', 'test2', 'test3', 'test4', 'test6', 'test7', 'test8', 'test9', 'test10'];
 
 // name -> {kind: 'number'|'choice'|'text'|'flag', key, min, max, choices, help}
 const OPTIONS = {
   '--scene': { kind: 'choice', key: 'scene', choices: SCENES, help: 'the scene, named as the ODE program that measures it' },
-  '--step': { kind: 'number', key: 'step', min: 1e-7, max: 0.1, help: 'simulation step in s' },
+  '--step': { kind: 'number', key: 'step', min: 1e-7, max: 0.1,
+    help: "simulation step in s (test3: 0.005, its ODE program's, unless given)" },
   '--seconds': { kind: 'number', key: 'seconds', min: 0, max: 86400, exclusiveMin: true,
     help: "simulated seconds (default: the ODE program's run for the scene)" },
   '--setting': { kind: 'choice', key: 'setting', choices: ['default', 'best'],
@@ -87,6 +90,7 @@ function parseArguments(argv, engine) {
     }
   }
   if (options.help) return options;
+  if (options.scene === 'test3' && !argv.some((a) => a === '--step' || a.startsWith('--step='))) options.step = scene.test3.SCENE_STEP;
   if (options.ccd && !engine.hasContinuousCollision)
     throw new UsageError(`--ccd: ${engine.name} has no continuous collision switch`);
   if (options.ccd && options.scene !== 'test10') throw new UsageError('--ccd: only test10 uses it');

@@ -15,7 +15,7 @@
 // (default 0.1).
 const fs = require('fs');
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
+const { dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;  // m/s and rad/s: far beyond the scan's 100 000 m/s
@@ -232,6 +232,28 @@ function hangingPair(HK, options) {
     rotation: (b) => world.transform(b)[1], spin: (b) => world.spin(b) }, pivot, big, cube, throwCube);
 }
 
+// test3: the domino spiral, friction 1.0 (geometric mean: 1.0), Havok's own
+// sleeping on (its thresholds are not exposed: test3's 0.1 cannot be set).
+function dominoes(HK, options) {
+  const t = scene.test3;
+  const world = new World(HK, SURFACE_GRAVITY, options);
+  world.body(world.friction(world.box([GROUND_SIZE, 10, GROUND_SIZE]), t.DEFAULT_MU), 0, [0, -5, 0]);
+  const bodies = dominoStarts(t.DEFAULT_DOMINOES).map((d) => {
+    const shape = world.friction(world.box([t.DOMINO_THICKNESS, t.DOMINO_HEIGHT, t.DOMINO_WIDTH]), t.DEFAULT_MU);
+    const id = world.body(shape, t.DOMINO_MASS, d.centre);
+    HK.HP_Body_SetQTransform(id, [d.centre, d.rotation]);
+    HK.HP_Body_SetLinearVelocity(id, d.velocity);
+    HK.HP_Body_SetAngularVelocity(id, d.spin);
+    HK.HP_Body_SetActivationControl(id, HK.ActivationControl.SIMULATION_CONTROLLED);
+    return id;
+  });
+  return {
+    step: () => world.step(), count: bodies.length, sleeps: true,
+    tiltDegrees: (i) => tiltDegrees(world.transform(bodies[i])[1]),
+    activeBodies: () => bodies.filter((b) => HK.HP_Body_GetActivationState(b)[1] === HK.ActivationState.ACTIVE).length,
+  };
+}
+
 // test4: the big cube on the small cube on the platform.
 function stack(HK, bigMass, options) {
   const t = scene.test4;
@@ -260,9 +282,10 @@ function settingText(options) {
   if (options.scene === 'test9') text += '; restitution 1.0 on both shapes (geometric mean: 1.0), ground a 200 m box';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 1.0, combined by minimum; ground a 200 m box";
   if (options.scene === 'test10') text += '; ground a 200 m box';
+  if (options.scene === 'test3') text += "; friction 1.0, Havok's own sleeping (thresholds not exposed), ground a 200 m box";
   if (options.scene === 'test6') text += '; friction 100 on every shape (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; ball joints (6-DOF, linear axes locked), friction 100 on every shape, ground a 200 m box';
   return text;
 }
 
-module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

@@ -14,7 +14,7 @@
 // 1 m/s) and, on test10, sweeps the cube (motion quality LinearCast, Jolt's
 // continuous collision; also --ccd).
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
+const { dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;
@@ -67,11 +67,12 @@ class World {
     return new this.Jolt.PlaneShape(new this.Jolt.Plane(new this.Jolt.Vec3(0, 1, 0), 0));
   }
   // mass 0: static. inertia: principal moments about the centre, else Jolt's from the shape.
-  body(shape, mass, position, { inertia, restitution, sweep, friction, group } = {}) {
+  body(shape, mass, position, { inertia, restitution, sweep, friction, group, rotation, sleeps } = {}) {
     const J = this.Jolt;
-    const s = new J.BodyCreationSettings(shape, new J.RVec3(...position), J.Quat.prototype.sIdentity(),
+    const s = new J.BodyCreationSettings(shape, new J.RVec3(...position),
+      rotation ? new J.Quat(...rotation) : J.Quat.prototype.sIdentity(),
       mass > 0 ? J.EMotionType_Dynamic : J.EMotionType_Static, mass > 0 ? MOVING : STATIC);
-    s.mAllowSleeping = false;
+    s.mAllowSleeping = Boolean(sleeps);
     s.mMaxLinearVelocity = NO_SPEED_LIMIT;
     s.mMaxAngularVelocity = NO_SPEED_LIMIT;
     if (restitution !== undefined) s.mRestitution = restitution;
@@ -228,6 +229,31 @@ function hangingPair(Jolt, options) {
     rotation: (b) => world.rotation(b), spin: (b) => world.spin(b) }, pivot, big, thrown, throwCube);
 }
 
+// test3: the domino spiral, friction 1.0 (geometric mean: 1.0), sleeping on
+// with test3's 0.1 m/s as Jolt's point-velocity threshold (its default 0.03)
+// after Jolt's 0.5 s below it.
+function dominoes(Jolt, options) {
+  const t = scene.test3;
+  const world = new World(Jolt, SURFACE_GRAVITY, options);
+  const physics = world.system.GetPhysicsSettings();
+  physics.mPointVelocitySleepThreshold = t.AUTO_DISABLE_THRESHOLD;
+  world.system.SetPhysicsSettings(physics);
+  const friction = t.DEFAULT_MU;
+  world.body(world.plane(), 0, [0, 0, 0], { friction });
+  const bodies = dominoStarts(t.DEFAULT_DOMINOES).map((d) => {
+    const body = world.body(world.box([t.DOMINO_THICKNESS, t.DOMINO_HEIGHT, t.DOMINO_WIDTH]), t.DOMINO_MASS, d.centre,
+      { friction, rotation: d.rotation, sleeps: true });
+    world.bodies.SetLinearVelocity(body.GetID(), new Jolt.Vec3(...d.velocity));
+    world.bodies.SetAngularVelocity(body.GetID(), new Jolt.Vec3(...d.spin));
+    return body;
+  });
+  return {
+    step: () => world.step(), count: bodies.length, sleeps: true,
+    tiltDegrees: (i) => tiltDegrees(world.rotation(bodies[i])),
+    activeBodies: () => bodies.filter((b) => b.IsActive()).length,
+  };
+}
+
 function stack(Jolt, bigMass, options) {
   const t = scene.test4;
   const world = new World(Jolt, SURFACE_GRAVITY, options);
@@ -257,10 +283,11 @@ function settingText(options) {
     : "Jolt's defaults (damping 0.05 linear and angular, 10 velocity / 2 position iterations, no restitution below 1 m/s)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both bodies (maximum: 1.0), ground a plane';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 0 (maximum: the ball's), ground a plane";
+  if (options.scene === 'test3') text += '; friction 1.0, sleeping on (point velocity 0.1 m/s for 0.5 s), ground a plane';
   if (options.scene === 'test6') text += '; friction 100 on every body (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; point constraints (ball joints), friction 100 on every body, ground a plane';
   if (options.scene === 'test10') text += options.ccd || best ? '; cube swept (motion quality LinearCast)' : '; cube not swept (Discrete)';
   return text;
 }
 
-module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

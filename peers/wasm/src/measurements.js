@@ -15,7 +15,7 @@ const lround = (x) => Math.sign(x) * Math.round(Math.abs(x));
 
 function defaultSeconds(name) {
   return { test1: scene.test1.RUN_SECONDS, test2: scene.test2.RUN_SECONDS, test8: scene.test8.RUN_SECONDS, test9: scene.test9.RUN_SECONDS,
-    test4: scene.test4.RUN_SECONDS, test6: scene.test6.DEFAULT_SECONDS,
+    test4: scene.test4.RUN_SECONDS, test3: scene.test3.RUN_SECONDS, test6: scene.test6.DEFAULT_SECONDS,
     test7: scene.test7.DEFAULT_THROWS * scene.test7.DEFAULT_THROW_INTERVAL }[name] ?? 0;
 }
 
@@ -215,6 +215,39 @@ function measureWall(makeLaunch, options, metrics) {
   return tally;
 }
 
+// test3: whether the chain completes (every domino past FALLEN_TILT_DEGREES),
+// when the last one fell, and how many bodies are awake at the end.
+// `chain`: {step(), count, tiltDegrees(i), activeBodies(), sleeps}.
+function measureChain(chain, options, metrics) {
+  const { FALLEN_TILT_DEGREES } = scene.test3;
+  const fellAt = new Array(chain.count).fill(-1);
+  const tally = { steps: 0, finite: true };
+  for (let n = stepsFor(options); tally.steps < n;) {
+    chain.step();
+    ++tally.steps;
+    for (let i = 0; i < chain.count; ++i) {
+      const tilt = chain.tiltDegrees(i);
+      if (!Number.isFinite(tilt)) tally.finite = false;
+      if (fellAt[i] < 0 && tilt > FALLEN_TILT_DEGREES) fellAt[i] = tally.steps * options.step;
+    }
+    if (!tally.finite) break;
+  }
+  let fallen = 0, last = 0, leastTilt = 180;
+  for (let i = 0; i < chain.count; ++i) {
+    if (fellAt[i] < 0) continue;
+    ++fallen;
+    last = Math.max(last, fellAt[i]);
+    leastTilt = Math.min(leastTilt, chain.tiltDegrees(i));
+  }
+  metrics.set('dominoes', chain.count);
+  metrics.set('fallen_fraction', chain.count ? fallen / chain.count : 0);
+  metrics.set('chain_seconds', last);
+  metrics.set('active_bodies', chain.activeBodies());
+  metrics.set('auto_disable', chain.sleeps ? 1 : 0);
+  metrics.set('min_fallen_tilt_degrees', fallen ? leastTilt : 0);
+  return tally;
+}
+
 // The test cube is past the pivot, level with it: beyond the pivot's far
 // face in x while its outline overlaps the pivot's in y and z. A cube thrown
 // at the pivot gets there only through it (a contact too soft to stop it).
@@ -257,4 +290,4 @@ function measureJoints(pair, options, metrics) {
   return tally;
 }
 
-module.exports = { measureJoints, measureEnergy, measureElongation, measureBounces, measureHold, measureWall, defaultSeconds, stepsFor };
+module.exports = { measureChain, measureJoints, measureEnergy, measureElongation, measureBounces, measureHold, measureWall, defaultSeconds, stepsFor };

@@ -15,7 +15,7 @@
 // a soft-CCD prediction of twice its travel in a step: the swept CCD alone
 // does not stop it at a thin static wall, the predictive contact does.
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, throwState, hangingPairReadout } = require('./rigs');
+const { dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const BEST_ITERATIONS = 50;
@@ -186,6 +186,30 @@ function hangingPair(R, options) {
     spin: (b) => vec(b.angvel()) }, pivot, big, thrown, throwCube);
 }
 
+// test3: the domino spiral, friction 1.0 (average: 1.0), Rapier's own
+// sleeping on (its thresholds are not exposed in the JS API).
+function dominoes(R, options) {
+  const t = scene.test3;
+  const world = new World(R, SURFACE_GRAVITY, options);
+  const friction = t.DEFAULT_MU;
+  world.body([[R.ColliderDesc.cuboid(GROUND_SIZE / 2, 5, GROUND_SIZE / 2)]], 0, [0, -5, 0], { friction });
+  const bodies = dominoStarts(t.DEFAULT_DOMINOES).map((d) => world.body(
+    [[R.ColliderDesc.cuboid(t.DOMINO_THICKNESS / 2, t.DOMINO_HEIGHT / 2, t.DOMINO_WIDTH / 2)]], t.DOMINO_MASS, d.centre, {
+      friction,
+      configure: (desc) => desc.setCanSleep(true)
+        .setRotation({ x: d.rotation[0], y: d.rotation[1], z: d.rotation[2], w: d.rotation[3] })
+        .setLinvel(...d.velocity).setAngvel({ x: d.spin[0], y: d.spin[1], z: d.spin[2] }),
+    }));
+  return {
+    step: () => world.step(), count: bodies.length, sleeps: true,
+    tiltDegrees: (i) => {
+      const q = bodies[i].rotation();
+      return tiltDegrees([q.x, q.y, q.z, q.w]);
+    },
+    activeBodies: () => bodies.filter((b) => !b.isSleeping()).length,
+  };
+}
+
 function stack(R, bigMass, options) {
   const t = scene.test4;
   const world = new World(R, SURFACE_GRAVITY, options);
@@ -229,6 +253,7 @@ function settingText(options) {
   if (options.scene === 'test2' || options.scene === 'test8') text += ', impulse revolute joint';
   if (options.scene === 'test9') text += '; restitution 1.0 on both colliders (average: 1.0), ground a 200 m cuboid';
   if (options.scene === 'test1') text += "; each ball's restitution combined by maximum with the ground's 0, ground a 200 m cuboid";
+  if (options.scene === 'test3') text += "; friction 1.0, Rapier's own sleeping (thresholds not exposed), ground a 200 m cuboid";
   if (options.scene === 'test6') text += '; friction 100 on every collider (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; spherical impulse joints, friction 100 on every collider, ground a 200 m cuboid';
   if (options.scene === 'test10') {
@@ -238,4 +263,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

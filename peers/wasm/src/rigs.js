@@ -127,5 +127,40 @@ function hangingPairReadout(world, pivot, big, cube, throwCube) {
   };
 }
 
-module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube, throwState,
+// test3's dominoes as peers/Test3Scene.h builds them (the C++ peers' copy
+// of test3's placements): centre, orientation [x, y, z, w], and the first
+// one's push (velocity and spin). The same-scene check holds both to test3.
+function dominoStarts(count) {
+  const t = scene.test3;
+  const starts = [];
+  const growth = t.SPIRAL_PITCH / (2 * Math.PI);
+  let angle = 0;
+  for (let i = 0; i < count; ++i) {
+    const r = t.SPIRAL_START_RADIUS + growth * angle;
+    const c = Math.cos(angle), s = Math.sin(angle);
+    const dx = growth * c - r * s, dz = growth * s + r * c, length = Math.hypot(dx, dz);
+    const tx = dx / length, tz = dz / length;
+    angle += t.DOMINO_SPACING / length;
+    const yaw = Math.atan2(-tz, tx) / 2, lean = ((i === 0 ? t.FIRST_TILT_DEGREES : 0) * Math.PI) / 360;
+    const a = [Math.cos(lean), tz * Math.sin(lean), 0, -tx * Math.sin(lean)];  // w, x, y, z
+    const b = [Math.cos(yaw), 0, Math.sin(yaw), 0];
+    const w = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+    const x = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+    const y = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+    const z = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+    const q = [x, y, z, w];
+    const pivot = [r * c + (tx * t.DOMINO_THICKNESS) / 2, 0, r * s + (tz * t.DOMINO_THICKNESS) / 2];
+    const arm = toBody([-x, -y, -z, w], [-t.DOMINO_THICKNESS / 2, t.DOMINO_HEIGHT / 2, 0]);  // q arm q^-1
+    const start = { centre: [pivot[0] + arm[0], arm[1], pivot[2] + arm[2]], rotation: q, velocity: [0, 0, 0], spin: [0, 0, 0] };
+    if (i === 0) {
+      const o = [t.FIRST_PUSH * tz, 0, -t.FIRST_PUSH * tx];
+      start.spin = o;
+      start.velocity = [o[1] * arm[2] - o[2] * arm[1], o[2] * arm[0] - o[0] * arm[2], o[0] * arm[1] - o[1] * arm[0]];
+    }
+    starts.push(start);
+  }
+  return starts;
+}
+
+module.exports = { dominoStarts, pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube, throwState,
   hangingPairReadout };
