@@ -140,7 +140,10 @@ set_tests_properties(${ODELAB_PEER_CHECKS} PROPERTIES LABELS peers)
 # Bad input: refused with status 2 and no metrics file (expect_metrics checks both).
 odelab_check(peers_refuse_unknown_scene bullet_lab STATUS 2 ARGS --scene test0)
 odelab_check(peers_refuse_mujoco_ccd mujoco_lab STATUS 2 ARGS --scene test10 --ccd)
-set_tests_properties(peers_refuse_unknown_scene peers_refuse_mujoco_ccd PROPERTIES LABELS peers)
+# test3 runs at its own step (0.005 s) unless given one: a run shorter than that step is refused too.
+odelab_check(peers_refuse_test3_run_shorter_than_its_step bullet_lab STATUS 2 ARGS --scene test3 --seconds 0.001)
+set_tests_properties(peers_refuse_unknown_scene peers_refuse_mujoco_ccd peers_refuse_test3_run_shorter_than_its_step
+                     PROPERTIES LABELS peers)
 
 # ---- the web peers (peers/wasm): Havok, Jolt and Rapier in Node.js ----------
 # Left out where node is missing or `npm ci` has not run in peers/wasm
@@ -242,6 +245,8 @@ if(ODELAB_WEB_PEERS_READY)
     odelab_check(peers_${_engine}_domino_chain_completes ${_engine}_lab LABEL peers
                  EXPECT fallen_fraction==1 active_bodies==0 ARGS --scene test3)
   endforeach()
+  odelab_check(peers_havok_refuses_test3_run_shorter_than_its_step havok_lab LABEL peers STATUS 2
+               ARGS --scene test3 --seconds 0.001)
   # Havok has no CCD switch: --ccd is refused rather than ignored.
   odelab_check(peers_havok_refuses_ccd havok_lab LABEL peers STATUS 2 ARGS --scene test10 --ccd)
 
@@ -252,7 +257,7 @@ if(ODELAB_WEB_PEERS_READY)
   foreach(_row "havok;test2;default;0.001;5" "rapier;test8;best;0.001;5" "jolt;test9;best;0.001;21"
                "rapier;test4;default;0.001;2" "rapier;test10;default;0.001;0;250" "jolt;test10;default;0.001;0;300"
                "jolt;test7;default;0.001;6" "rapier;test1;default;0.01;15" "havok;test6;default;0.001;5"
-               "jolt;test3;default;0.005;20")
+               "jolt;test3;default;0.005;10")
     list(GET _row 0 _engine)
     list(GET _row 1 _scene)
     string(REPLACE ";" "_" _name "${_row}")

@@ -72,12 +72,12 @@ int runPeer(int argc, char** argv, Engine& engine) {
     if (options.ccd && !engine.hasContinuousCollision())
       throw UsageError("--ccd: " + engine.name() + " has no continuous collision detection");
     if (options.ccd && options.scene != "test10") throw UsageError("--ccd: only test10 uses it");
+    // test3 runs at its own step (the ODE program's) unless one is given.
+    if (options.scene == "test3" && app.count("--step") == 0) options.step = scene::test3::SCENE_STEP;
     cli::refuseRunShorterThanStep(options.seconds, options.step);
     cli::requireReplaceableFile("--metrics-json", metricsJson);
   });
   if (refused) return *refused;
-  // test3 runs at its own step (the ODE program's) unless one is given.
-  if (options.scene == "test3" && app.count("--step") == 0) options.step = scene::test3::SCENE_STEP;
   options.setting = setting == "best" ? Setting::Best : Setting::Default;
 
   Metrics metrics;

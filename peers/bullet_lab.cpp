@@ -438,7 +438,8 @@ class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLa
   bool hasContinuousCollision() const override { return true; }
   std::string settingText(const RunOptions& o) const override {
     const bool best = o.setting == Setting::Best;
-    std::string text = "btDiscreteDynamicsWorld, sequential impulse, stepSimulation(h, 0), sleeping off; ";
+    std::string text = "btDiscreteDynamicsWorld, sequential impulse, stepSimulation(h, 0)";
+    text += o.scene == "test3" ? "; " : ", sleeping off; ";
     if (o.scene == "test2" || o.scene == "test8")
       text += best ? "joint ERP 1.0, 100 iterations" : "joint ERP 0.2, 10 iterations (Bullet's defaults)";
     else if (o.scene == "test9")

@@ -277,7 +277,7 @@ function launch(HK, velocity, options) {
 
 function settingText(options) {
   const best = options.setting === 'best';
-  let text = 'HP_World_Step(h), speed limit raised to 1e9, sleeping off, speculative contacts (always on); ';
+  let text = `HP_World_Step(h), speed limit raised to 1e9, ${options.scene === 'test3' ? '' : 'sleeping off, '}speculative contacts (always on); `;
   text += best ? 'ideal step time h, angular damping 0' : "Havok's defaults (ideal step time 1/60 s, angular damping 0.1)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both shapes (geometric mean: 1.0), ground a 200 m box';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 1.0, combined by minimum; ground a 200 m box";

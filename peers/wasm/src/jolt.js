@@ -278,7 +278,7 @@ function launch(Jolt, velocity, options) {
 
 function settingText(options) {
   const best = options.setting === 'best';
-  let text = 'jolt.Step(h, 1), speed caps raised to 1e9, sleeping off, convex radius 0.05 m or the smallest half extent; ';
+  let text = `jolt.Step(h, 1), speed caps raised to 1e9, ${options.scene === 'test3' ? '' : 'sleeping off, '}convex radius 0.05 m or the smallest half extent; `;
   text += best ? 'damping 0, 50 velocity / 10 position iterations, restitution at any speed'
     : "Jolt's defaults (damping 0.05 linear and angular, 10 velocity / 2 position iterations, no restitution below 1 m/s)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both bodies (maximum: 1.0), ground a plane';

@@ -248,7 +248,7 @@ function launch(R, velocity, options) {
 
 function settingText(options) {
   const best = options.setting === 'best';
-  let text = 'world.step() with timestep h, sleeping off, no damping; ';
+  let text = `world.step() with timestep h, ${options.scene === 'test3' ? '' : 'sleeping off, '}no damping; `;
   text += best && options.scene !== 'test2' ? '50 solver iterations' : "Rapier's defaults (4 solver iterations)";
   if (options.scene === 'test2' || options.scene === 'test8') text += ', impulse revolute joint';
   if (options.scene === 'test9') text += '; restitution 1.0 on both colliders (average: 1.0), ground a 200 m cuboid';
