@@ -4,6 +4,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <map>
 
@@ -38,7 +39,7 @@ int runPeer(int argc, char** argv, Engine& engine) {
   CLI::App app{"The thesis's measurement scenes on " + engine.name() +
                ", headless, with the ODE programs' metric names (doc/peers.md)."};
   RunOptions options;
-  std::string setting = "default", metricsJson;
+  std::string setting = "default", metricsJson, modelFile;
   bool headless = false;
   std::vector<std::string> scenes;
   for (const auto& entry : MEASUREMENTS) scenes.push_back(entry.first);
@@ -66,6 +67,8 @@ int runPeer(int argc, char** argv, Engine& engine) {
   app.add_option("--bob-mass", options.bobMass, "test8: mass of the bob in kg (default: the scene's)")
       ->check(cli::finiteRange(1e-3, 1e9));
   app.add_option("--metrics-json", metricsJson, "write the metrics to this file as JSON");
+  app.add_option("--write-model", modelFile,
+                 "write the scene's model as the engine reads it (MuJoCo: MJCF, test2 and test9) to this file and exit");
   app.add_flag("--headless", headless, "accepted for the lab's sake; the peers never open a window");
   cli::rejectEmptyValues(app);
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
@@ -76,9 +79,25 @@ int runPeer(int argc, char** argv, Engine& engine) {
     if (options.scene == "test3" && app.count("--step") == 0) options.step = scene::test3::SCENE_STEP;
     cli::refuseRunShorterThanStep(options.seconds, options.step);
     cli::requireReplaceableFile("--metrics-json", metricsJson);
+    cli::requireReplaceableFile("--write-model", modelFile);
   });
   if (refused) return *refused;
   options.setting = setting == "best" ? Setting::Best : Setting::Default;
+  if (!modelFile.empty()) {
+    const std::string model = engine.modelText(options);
+    if (model.empty()) {
+      std::cerr << "error: --write-model: " << engine.name() << " has no model file for " << options.scene << '\n'
+                << "Run with --help for the options.\n";
+      return 2;
+    }
+    std::ofstream out(modelFile);
+    out << model;
+    if (!out) {
+      std::cerr << "error: --write-model: cannot write " << modelFile << '\n';
+      return 1;
+    }
+    return 0;
+  }
 
   Metrics metrics;
   const double cpuBefore = processCpuSeconds();

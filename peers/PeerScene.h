@@ -127,6 +127,9 @@ class Engine {
   virtual ~Engine() = default;
   virtual std::string name() const = 0;
   virtual bool hasContinuousCollision() const { return false; }
+  // The scene's model as a file the engine reads (MuJoCo: MJCF); "" where
+  // the engine builds the scene in code only.
+  virtual std::string modelText(const RunOptions&) const { return ""; }
   // One line saying what the chosen setting is for this scene and why.
   virtual std::string settingText(const RunOptions& options) const = 0;
   virtual std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& options) = 0;

@@ -101,7 +101,11 @@ const char* GROUND = "    <geom name=\"ground\" type=\"plane\" size=\"0 0 1\" za
 
 // ---- test2 / test8 ---------------------------------------------------------------
 // Best for the pendulum: RK4 instead of MuJoCo's default semi-implicit Euler.
+class Mujoco;
+
 class MujocoPendulum : public PendulumModel {
+  friend class Mujoco;  // its model text, for --write-model
+
  public:
   MujocoPendulum(double bobMass, const RunOptions& o) : scene_(xml(bobMass, o)) {
     // One hinge to the world: the joint-space inertia is the body's moment
@@ -141,6 +145,8 @@ class MujocoPendulum : public PendulumModel {
 
 // ---- test9 -------------------------------------------------------------------
 class MujocoBall : public BallModel {
+  friend class Mujoco;
+
  public:
   explicit MujocoBall(const RunOptions& o) : scene_(xml(o)) {}
   void step() override { scene_.step(); }
@@ -479,6 +485,12 @@ class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLa
                                MujocoUpright, MujocoDominoes> {
  public:
   std::string name() const override { return "mujoco"; }
+  // The MJCF of the scenes that the MuJoCo 3 cross-check runs (peers/wasm/mujoco3.js).
+  std::string modelText(const RunOptions& o) const override {
+    if (o.scene == "test2") return MujocoPendulum::xml(scene::test2::BOB_MASS, o);
+    if (o.scene == "test9") return MujocoBall::xml(o);
+    return "";
+  }
   std::string settingText(const RunOptions& o) const override {
     const bool best = o.setting == Setting::Best;
     std::string text = "MJCF from memory, Newton solver, pyramidal cones unless said; ";
