@@ -1,6 +1,8 @@
 #include "Measurements.h"
 
 #include <algorithm>
+#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -11,6 +13,7 @@
 #include "WorldSettings.h"
 #include "shared/ApexTracker.h"
 #include "shared/SceneConstants.h"
+#include "shared/StepCostWindow.h"
 
 namespace odelab::peers {
 
@@ -36,6 +39,7 @@ double defaultSeconds(const std::string& scene) {
   if (scene == "test4") return scene::test4::RUN_SECONDS;
   if (scene == "test1") return scene::test1::RUN_SECONDS;
   if (scene == "test3") return scene::test3::RUN_SECONDS;
+  if (scene == "test5") return scene::test5::RUN_SECONDS;
   if (scene == "test6") return scene::test6::DEFAULT_SECONDS;
   if (scene == "test7") return scene::test7::DEFAULT_THROWS * scene::test7::DEFAULT_THROW_INTERVAL;
   return 0.0;  // test10 runs launches until each is resolved
@@ -299,6 +303,82 @@ Tally measureChain(Engine& engine, const RunOptions& options, Metrics& metrics) 
   metrics.set("active_bodies", chain->activeBodies());
   metrics.set("auto_disable", chain->sleeps() ? 1 : 0);
   metrics.set("min_fallen_tilt_degrees", fallen ? leastTilt : 0.0);
+  return tally;
+}
+
+// test5: plates dropped every spawn interval (6 m up, or 1 m above the stack
+// once it nears that, and clear of plates still falling) until the plate
+// count is reached; a plate has landed once older than LANDING_MIN_AGE and
+// slower than LANDED_SPEED. test5's names: the stack's height, how far a
+// plate's centre strays from the axis and how far it turns, and the cost per
+// step (wall and the process's CPU) over the last simulated second.
+Tally measurePlates(Engine& engine, const RunOptions& options, Metrics& metrics) {
+  using namespace scene::test5;
+  auto stack = engine.plateStack(options);
+  const int limit = options.plates > 0 ? options.plates : DEFAULT_PLATES;
+  const double interval = options.spawnInterval > 0 ? options.spawnInterval : DEFAULT_SPAWN_INTERVAL;
+  std::vector<double> bornAt;
+  std::vector<bool> landed;
+  size_t firstInAir = 0;
+  double nextSpawn = 0.0;
+  StepCostWindow wallCost(COST_WINDOW), cpuCost(COST_WINDOW);
+  auto stackHeight = [&] {
+    double top = 0.0;
+    for (int i = 0; i < stack->count(); ++i)
+      if (landed[i]) top = std::max(top, stack->plateCentre(i).y + PLATE_THICKNESS / 2);
+    return top;
+  };
+  Tally tally;
+  std::clock_t lastCpu = std::clock();
+  for (long n = stepsFor(options); tally.steps < n;) {
+    const auto before = std::chrono::steady_clock::now();
+    stack->step();
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
+    ++tally.steps;
+    const double time = tally.steps * options.step;
+    const std::clock_t now = std::clock();
+    wallCost.add(time, wall);
+    cpuCost.add(time, static_cast<double>(now - lastCpu) / CLOCKS_PER_SEC);
+    lastCpu = now;
+    for (size_t i = firstInAir; i < landed.size(); ++i)
+      if (!landed[i] && time - bornAt[i] >= LANDING_MIN_AGE && stack->plateSpeed(static_cast<int>(i)) <= LANDED_SPEED)
+        landed[i] = true;
+    while (firstInAir < landed.size() && landed[firstInAir]) ++firstInAir;
+    if (stack->count() < limit && time >= nextSpawn) {
+      double height = std::max(SPAWN_HEIGHT, stackHeight() + SPAWN_ABOVE_STACK);
+      for (int i = 0; i < stack->count(); ++i)
+        if (!landed[i]) height = std::max(height, stack->plateCentre(i).y + MIN_SPAWN_SEPARATION);
+      stack->dropPlate(height);
+      bornAt.push_back(time);
+      landed.push_back(false);
+      nextSpawn += interval;
+    }
+    bool finiteNow = true;
+    for (int i = 0; i < stack->count(); ++i) finiteNow = finiteNow && finite(stack->plateCentre(i));
+    if (!finiteNow) {
+      tally.finite = false;
+      break;
+    }
+  }
+  tally.simSeconds = tally.steps * options.step;
+  double offset = 0.0, twist = 0.0;
+  for (int i = 0; i < stack->count(); ++i) {
+    const Vec3 p = stack->plateCentre(i);
+    offset = std::max(offset, std::hypot(p.x, p.z));
+    const double yaw = std::fmod(std::fabs(stack->plateYawDegrees(i)), 90.0);  // square plates: 0 to 45 degrees
+    twist = std::max(twist, std::min(yaw, 90.0 - yaw));
+  }
+  metrics.set("plates", stack->count());
+  metrics.set("landed_plates", static_cast<double>(std::count(landed.begin(), landed.end(), true)));
+  metrics.set("ms_per_step", wallCost.meanMilliseconds());
+  metrics.set("cpu_ms_per_step", cpuCost.meanMilliseconds());
+  metrics.set("max_axis_offset", offset);
+  metrics.set("stack_height", stackHeight());
+  metrics.set("plate_thickness_m", PLATE_THICKNESS);
+  metrics.set("max_twist_degrees", twist);
+  metrics.set("plates_frozen_in_air", 0);  // sleeping is off: nothing freezes
+  metrics.set("auto_disable", 0);
+  metrics.set("threads", 1);
   return tally;
 }
 

@@ -27,6 +27,7 @@ Tally measureJoints(Engine& engine, const RunOptions& options, Metrics& metrics)
 Tally measureRebounds(Engine& engine, const RunOptions& options, Metrics& metrics);    // test1
 Tally measureUpright(Engine& engine, const RunOptions& options, Metrics& metrics);     // test6
 Tally measureChain(Engine& engine, const RunOptions& options, Metrics& metrics);       // test3
+Tally measurePlates(Engine& engine, const RunOptions& options, Metrics& metrics);      // test5
 
 // test1's layout: where ball i starts (its restitution is i / (BALL_COUNT - 1)).
 Vec3 ballStart(int ball);

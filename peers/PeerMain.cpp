@@ -24,7 +24,7 @@ const std::map<std::string, Measurement> MEASUREMENTS = {
     {"test2", measureEnergy}, {"test4", measureHold},  {"test8", measureElongation},
     {"test9", measureBounces}, {"test10", measureWall},
     {"test7", measureJoints},   {"test1", measureRebounds}, {"test6", measureUpright},
-    {"test3", measureChain},
+    {"test3", measureChain},    {"test5", measurePlates},
 };
 
 double processCpuSeconds() {
@@ -66,6 +66,10 @@ int runPeer(int argc, char** argv, Engine& engine) {
       ->check(cli::finiteRange(1e-3, 1e9));
   app.add_option("--bob-mass", options.bobMass, "test8: mass of the bob in kg (default: the scene's)")
       ->check(cli::finiteRange(1e-3, 1e9));
+  app.add_option("--plates", options.plates, "test5: plates dropped (default: the scene's)")
+      ->check(cli::integerRange(1, 100000));
+  app.add_option("--spawn-interval", options.spawnInterval, "test5: simulated seconds between plates (default: the scene's)")
+      ->check(cli::finiteRange(1e-6, 1e4));
   app.add_option("--metrics-json", metricsJson, "write the metrics to this file as JSON");
   app.add_option("--write-model", modelFile,
                  "write the scene's model as the engine reads it (MuJoCo: MJCF, test2 and test9) to this file and exit");

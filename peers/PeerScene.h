@@ -33,6 +33,8 @@ struct RunOptions {
   bool findMaxVelocity = false;
   double bigMass = 0.0;   // test4: 0 means the scene's default
   double bobMass = 0.0;   // test8: 0 means the scene's default
+  int plates = 0;         // test5: plates dropped, 0 means the scene's default
+  double spawnInterval = 0.0;  // test5: s between plates, 0 means the scene's default
 };
 
 // test2 / test8: the composite pendulum hinged to the world.
@@ -122,6 +124,18 @@ class DominoModel {
   virtual bool sleeps() const = 0;                   // whether the engine puts bodies to sleep here
 };
 
+// test5: square plates dropped one after another onto the platform.
+class PlateStackModel {
+ public:
+  virtual ~PlateStackModel() = default;
+  virtual void step() = 0;
+  virtual void dropPlate(double height) = 0;  // centred over the platform, level, unturned, at rest
+  virtual int count() const = 0;
+  virtual Vec3 plateCentre(int plate) const = 0;
+  virtual double plateSpeed(int plate) const = 0;     // m/s
+  virtual double plateYawDegrees(int plate) const = 0;  // turn of its local x about the vertical
+};
+
 class Engine {
  public:
   virtual ~Engine() = default;
@@ -140,11 +154,12 @@ class Engine {
   virtual std::unique_ptr<BallsModel> balls(const RunOptions& options) = 0;
   virtual std::unique_ptr<UprightModel> axisSystem(const RunOptions& options) = 0;
   virtual std::unique_ptr<DominoModel> dominoes(const RunOptions& options) = 0;
+  virtual std::unique_ptr<PlateStackModel> plateStack(const RunOptions& options) = 0;
 };
 
 // An engine made of its scene models: the factories written once.
 template <class Pendulum, class Ball, class Stack, class Launch, class HangingPair, class Balls, class Upright,
-          class Dominoes>
+          class Dominoes, class PlateStack>
 class EngineOf : public Engine {
  public:
   std::unique_ptr<PendulumModel> pendulum(double bobMass, const RunOptions& o) override {
@@ -163,6 +178,7 @@ class EngineOf : public Engine {
   std::unique_ptr<BallsModel> balls(const RunOptions& o) override { return std::make_unique<Balls>(o); }
   std::unique_ptr<UprightModel> axisSystem(const RunOptions& o) override { return std::make_unique<Upright>(o); }
   std::unique_ptr<DominoModel> dominoes(const RunOptions& o) override { return std::make_unique<Dominoes>(o); }
+  std::unique_ptr<PlateStackModel> plateStack(const RunOptions& o) override { return std::make_unique<PlateStack>(o); }
 };
 
 // The whole program: options, the scene's measurement, metrics. Exit status

@@ -431,8 +431,42 @@ class BulletDominoes : public DominoModel {
   std::vector<btRigidBody*> dominoes_;
 };
 
+// ---- test5 -------------------------------------------------------------------
+// Plates on the platform, friction 100 (test5's never-sliding contacts; ODE's
+// mu dInfinity), sleeping off as in every scene but test3. Best: 100 iterations.
+class BulletPlates : public PlateStackModel {
+ public:
+  explicit BulletPlates(const RunOptions& options) : world_(SURFACE_GRAVITY), step_(options.step) {
+    using namespace scene::test5;
+    world_.add(new btBoxShape(btVector3(PLATFORM_SIDE / 2, PLATFORM_THICKNESS / 2, PLATFORM_SIDE / 2)), 0.0,
+               btVector3(0, -PLATFORM_THICKNESS / 2, 0))
+        ->setFriction(NO_SLIP_FRICTION);
+    if (options.setting == Setting::Best) world_.solverInfo().m_numIterations = BEST_ITERATIONS;
+  }
+  void step() override { world_.step(step_); }
+  void dropPlate(double height) override {
+    using namespace scene::test5;
+    btRigidBody* plate = world_.add(new btBoxShape(btVector3(PLATE_WIDTH / 2, PLATE_THICKNESS / 2, PLATE_WIDTH / 2)),
+                                    PLATE_MASS, btVector3(0, height, 0));
+    plate->setFriction(NO_SLIP_FRICTION);
+    plates_.push_back(plate);
+  }
+  int count() const override { return static_cast<int>(plates_.size()); }
+  Vec3 plateCentre(int plate) const override { return toVec3(plates_[plate]->getCenterOfMassPosition()); }
+  double plateSpeed(int plate) const override { return plates_[plate]->getLinearVelocity().length(); }
+  double plateYawDegrees(int plate) const override {
+    const btMatrix3x3& r = plates_[plate]->getCenterOfMassTransform().getBasis();  // local x in world: column 0
+    return std::atan2(-r[2][0], r[0][0]) * 180.0 / M_PI;
+  }
+
+ private:
+  BulletWorld world_;
+  double step_;
+  std::vector<btRigidBody*> plates_;
+};
+
 class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLaunch, BulletHangingPair, BulletBalls,
-                               BulletUpright, BulletDominoes> {
+                               BulletUpright, BulletDominoes, BulletPlates> {
  public:
   std::string name() const override { return "bullet"; }
   bool hasContinuousCollision() const override { return true; }
@@ -456,6 +490,9 @@ class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLa
     else if (o.scene == "test6")
       text += std::string(best ? "100 iterations" : "Bullet's defaults (10 iterations, ERP 0.2)") +
               "; btPoint2PointConstraint ball joint, friction 100 on every shape (test6's never-sliding contacts)";
+    else if (o.scene == "test5")
+      text += std::string(best ? "100 iterations" : "Bullet's defaults (10 iterations)") +
+              "; friction 100 on every shape (test5's never-sliding contacts)";
     else if (o.scene == "test3")
       text += std::string(best ? "100 iterations" : "Bullet's defaults (10 iterations)") +
               "; friction 1.0, sleeping on with thresholds 0.1 m/s and 0.1 rad/s after Bullet's 2 s";

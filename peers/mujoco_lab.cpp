@@ -481,8 +481,75 @@ class MujocoDominoes : public DominoModel {
   MujocoScene scene_;
 };
 
+// ---- test5 -------------------------------------------------------------------
+// MuJoCo 2.2 cannot add a body to a built model: the model holds every plate
+// from the start, parked far apart out of the way (each on its own spot
+// 1 km below the platform, put back there at rest after every step until
+// dropped), and a plate is dropped by moving it over the platform. Friction 100 (test5's never-sliding contacts). Best: as test4's.
+class MujocoPlates : public PlateStackModel {
+ public:
+  explicit MujocoPlates(const RunOptions& o)
+      : plates_(o.plates > 0 ? o.plates : scene::test5::DEFAULT_PLATES), scene_(xml(o, plates_)) {}
+  void step() override {
+    scene_.step();
+    for (int i = dropped_; i < plates_; ++i) park(i);
+    mj_kinematics(scene_.m(), scene_.d());
+  }
+  void dropPlate(double height) override {
+    double* q = scene_.d()->qpos + 7 * dropped_;
+    const double pose[7] = {0, height, 0, 1, 0, 0, 0};
+    std::copy(pose, pose + 7, q);
+    std::fill(scene_.d()->qvel + 6 * dropped_, scene_.d()->qvel + 6 * dropped_ + 6, 0.0);
+    ++dropped_;
+    mj_kinematics(scene_.m(), scene_.d());
+  }
+  int count() const override { return dropped_; }
+  Vec3 plateCentre(int plate) const override { return centreOf(scene_.d(), plate + 1); }
+  double plateSpeed(int plate) const override {
+    const double* v = scene_.d()->qvel + 6 * plate;
+    return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  }
+  double plateYawDegrees(int plate) const override {
+    const double* r = scene_.d()->xmat + 9 * (plate + 1);  // row-major: local x in world is column 0
+    return std::atan2(-r[6], r[0]) * 180.0 / M_PI;
+  }
+
+ private:
+  static constexpr double PARKED_DEPTH = -1000.0, PARKED_SPACING = 20.0;  // m
+  static Vec3 parkedAt(int i) { return {PARKED_SPACING * (i + 1), PARKED_DEPTH, 0.0}; }
+  void park(int i) {
+    const Vec3 p = parkedAt(i);
+    const double pose[7] = {p.x, p.y, p.z, 1, 0, 0, 0};
+    std::copy(pose, pose + 7, scene_.d()->qpos + 7 * i);
+    std::fill(scene_.d()->qvel + 6 * i, scene_.d()->qvel + 6 * i + 6, 0.0);
+  }
+  static std::string xml(const RunOptions& o, int plates) {
+    using namespace scene::test5;
+    const bool best = o.setting == Setting::Best;
+    std::ostringstream s;
+    s.precision(17);
+    s << header("odelab-test5", o.step, SURFACE_GRAVITY, "Euler", best ? "cone=\"elliptic\"" : "")
+      << "  <size nconmax=\"" << 8 * plates + 100 << "\" njmax=\"" << 32 * plates + 400 << "\"/>\n"
+      << "  <default><geom friction=\"" << NO_SLIP_FRICTION << " 0.005 0.0001\"";
+    if (best) s << " solref=\"" << 2 * o.step << " 1\" solimp=\"" << BEST_SOLIMP << "\"";
+    s << "/></default>\n  <worldbody>\n"
+      << "    <geom type=\"box\" pos=\"0 " << -PLATFORM_THICKNESS / 2 << " 0\" size=\"" << PLATFORM_SIDE / 2 << ' '
+      << PLATFORM_THICKNESS / 2 << ' ' << PLATFORM_SIDE / 2 << "\"/>\n";
+    for (int i = 0; i < plates; ++i) {
+      const Vec3 p = parkedAt(i);
+      s << "    <body pos=\"" << p.x << ' ' << p.y << ' ' << p.z << "\">\n      <freejoint/>\n"
+        << "      <geom type=\"box\" size=\"" << PLATE_WIDTH / 2 << ' ' << PLATE_THICKNESS / 2 << ' ' << PLATE_WIDTH / 2
+        << "\" mass=\"" << PLATE_MASS << "\"/>\n    </body>\n";
+    }
+    s << "  </worldbody>\n</mujoco>\n";
+    return s.str();
+  }
+  int plates_, dropped_ = 0;
+  MujocoScene scene_;
+};
+
 class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLaunch, MujocoHangingPair, MujocoBalls,
-                               MujocoUpright, MujocoDominoes> {
+                               MujocoUpright, MujocoDominoes, MujocoPlates> {
  public:
   std::string name() const override { return "mujoco"; }
   // The MJCF of the scenes that the MuJoCo 3 cross-check runs (peers/wasm/mujoco3.js).
@@ -509,6 +576,10 @@ class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLa
       text += std::string(best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones"
                                : "MuJoCo's defaults") +
               "; ball joint in generalized coordinates, friction 100 (test6's never-sliding contacts)";
+    else if (o.scene == "test5")
+      text += std::string(best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones"
+                               : "MuJoCo's defaults") +
+              "; every plate in the model from the start, parked 1 km below until dropped; friction 100";
     else if (o.scene == "test3")
       text += std::string(best ? "contact time constant 2 steps (solref 2h 1), solimp 0.99 0.999 0.001, elliptic cones"
                                : "MuJoCo's defaults") +

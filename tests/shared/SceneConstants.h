@@ -107,6 +107,8 @@ constexpr double MIN_SPAWN_SEPARATION = 2 * PLATE_THICKNESS;
 // (or platform) below it is not resting on the stack: auto-disable froze it
 // in the air.
 constexpr double FROZEN_GAP = 0.01;  // m
+constexpr double COST_WINDOW = 1.0;  // simulated seconds averaged by ms_per_step
+constexpr double RUN_SECONDS = 20.0;  // headless run: 50 plates land within it
 }  // namespace test5
 
 // ---- test6: Axis system -------------------------------------------------------

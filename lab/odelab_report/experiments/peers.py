@@ -20,6 +20,7 @@ from ..runner import LabError, RunSpec
 from ..search import highest_passing
 from .base import Experiment, Outcome
 from .limit_test4 import judge as judge_test4
+from .limit_test5 import SETTLE as SETTLE_TEST5, SPAWN_INTERVAL as SPAWN_INTERVAL_TEST5, judge as judge_test5
 from .thesis import reference_rows
 
 ENGINES = ("ode", "bullet", "mujoco", "havok", "jolt", "rapier")
@@ -48,6 +49,7 @@ ODE_SETTINGS = {
     "test4": [("default", []), ("best", ["--solver", "step"])],
     "test10": [("default", []), ("best", ["--ccd"])],
     "test3": [("default", []), ("best", ["--solver", "step"])],
+    "test5": [("default", []), ("best", ["--space", "hash"])],  # the thesis's remedy: a hash space
     # No peer caps the angular speed: ODE runs without its cap too.
     "test7": [("default", ["--max-angular-speed", 0]), ("best", ["--max-angular-speed", 0, "--solver", "step"])],
 }
@@ -60,6 +62,7 @@ ODE_SETTING_TEXT = {
     "test4": "default: the program's (ERP 0.2, CFM 1e-6, QuickStep 20); best: dWorldStep",
     "test10": "default: the program's (ERP 0.3, CFM 0, surface layer 0); best: its --ccd sweep",
     "test3": "default: the program's (QuickStep 8, auto-disable on); best: dWorldStep",
+    "test5": "default: the program's (QuickStep 20, ERP 0.2, CFM 0, simple space); best: a hash space (the thesis's remedy)",
     "test7": "default: the program's (QuickStep 20) without its angular speed cap, as every peer; best: dWorldStep",
 }
 
@@ -92,7 +95,7 @@ SANK_THROUGH = 1.0
 # in the full report they run at fewer steps (always the thesis's 0.001).
 WEB_STEPS = {"test1": [0.001], "test6": [0.001], "test2": [0.01, 0.001, 0.0001], "test8": [0.01, 0.001],
              "test9": [0.01, 0.001, 0.0001], "test4": [0.001], "test10": [0.01, 0.001], "test7": [0.001],
-             "test3": [0.005, 0.001]}
+             "test3": [0.005, 0.001], "test5": []}
 SCENES = [
     Scene("test1", "max_rebound_error", "max_rebound_error",
           "largest |apex2 / apex1 - e^2| over the balls with e >= 0.1", True, [], [0.01, 0.001],
@@ -110,6 +113,10 @@ SCENES = [
     Scene("test3", "fallen_fraction", "fallen_fraction",
           "fraction of the sixty dominoes fallen in 20 s (1: the chain completes; cost: sleeping on where the engine has it)",
           False, [], [0.005, 0.001], lambda q: [], in_quick=False, not_reached="no domino fell"),
+    Scene("test5", "tallest_aligned_plates", None,
+          "tallest aligned stack of plates still stepped in real time (limit-test5's search and rule)", False,
+          [], [0.001], lambda q: [], in_quick=False, not_reached="not even 5 plates",
+          missing={e: "not built in the web peers yet (each has boxes and contacts)" for e in WEB_PEERS}),
     Scene("test7", "max_joint_error", "max_joint_error",
           "largest ball-joint error (m), hanging pair hit 3 times at 30 m/s, no angular speed cap", True,
           [0.001], STEPS, lambda q: [],
@@ -122,9 +129,7 @@ SCENES = [
           [0.001], [0.01, 0.001, 0.0001], lambda q: ["--find-max-velocity"]),
 ]
 # Scenes no peer program builds yet, though every engine here has the parts.
-NOT_BUILT = {
-    "test5": "the stack of plates (thin boxes; the tallest aligned stack in real time)",
-}
+NOT_BUILT = {}
 ODE_ONLY_ARGS = {  # what only the ODE program needs: no output file rows; test10's scan stops at its first failure
     "test2": ["--sample-interval", 3600], "test8": ["--sample-interval", 3600], "test10": ["--band-factor", 1.0]}
 
@@ -182,7 +187,7 @@ class Peers(Experiment):
     name = "peers"
     title = "ODE, Bullet, MuJoCo, Havok, Jolt and Rapier on the same scenes"
     section = 5
-    programs = ("test1", "test2", "test3", "test4", "test6", "test7", "test8", "test9", "test10")
+    programs = ("test1", "test2", "test3", "test4", "test5", "test6", "test7", "test8", "test9", "test10")
     cost = (1200.0, 40.0)
 
     def run(self, ctx):
@@ -202,8 +207,8 @@ class Peers(Experiment):
 
         def one(point):
             scene, engine, setting, args, step = point
-            value, r = (self.heaviest(ctx, scene, engine, args, step) if scene.name == "test4"
-                        else self.measure(ctx, scene, engine, args, step))
+            search = {"test4": self.heaviest, "test5": self.tallest}.get(scene.name, self.measure)
+            value, r = search(ctx, scene, engine, args, step)
             ctx.advance()
             voided = bool(r) and scene.voided_by is not None and scene.voided_by[0](r)
             if voided:
@@ -238,6 +243,8 @@ float32, so an error below {FLOAT32_ROUNDING:g} is rounding, not physics.""" if 
         if skipped:
             web_text += (f"\n\n**Skipped: {', '.join(skipped)}** (no {', '.join(PEER_PROGRAMS[e] for e in skipped)} "
                          f"in {peers_dir}: install Node.js, run `npm ci` in peers/wasm and configure again).")
+        not_built = ("\n\nNot yet on any peer (the peer programs do not build these scenes; every engine here has "
+                     f"the parts): {'; '.join(f'{k}, {v}' for k, v in NOT_BUILT.items())}." if NOT_BUILT else "")
         intro = f"""Each scene runs on ODE (its own program), Bullet 3.24 and MuJoCo 2.2.2 (the
 programs in `peers/`, doc/peers.md) with the same geometry, masses, gravity,
 step and run length, and each engine at its defaults and at its best for the
@@ -248,10 +255,7 @@ The column "Havok 6.5 (thesis)" is quoted from the thesis, not measured. ODE's s
 
 {md.files_line([csv])}
 
-{self.matrix(scenes, engines, rows)}
-
-Not yet on any peer (the peer programs do not build these scenes; every engine
-here has the parts): {"; ".join(f"{k}, {v}" for k, v in NOT_BUILT.items())}."""
+{self.matrix(scenes, engines, rows)}{not_built}"""
         return Outcome(intro + "\n\n" + "\n\n".join(parts), headline)
 
     # ---- the matrix: scene by engine, at COMPARE_STEP ----------------------------------
@@ -306,6 +310,21 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
             return passed, r
 
         result = highest_passing(probe, start=5000.0, factor=4.0, ratio=1.1, low=50.0, high=1e9)
+        held = next((info for value, passed, info in result.probes if value == result.highest_pass), None)
+        return result.highest_pass, held
+
+    def tallest(self, ctx, scene, engine, args, step):
+        """limit-test5's search and rule on any engine: (tallest aligned stack in real time, its run)."""
+        def probe(plates):
+            extra = ["--plates", plates, "--spawn-interval", SPAWN_INTERVAL_TEST5,
+                     "--seconds", round(plates * SPAWN_INTERVAL_TEST5 + SETTLE_TEST5, 3)]
+            r = ctx.runner.run(RunSpec(program_of(engine, scene),
+                                       [*base_args(engine, scene, ctx.quick), *args, *extra, "--step", step],
+                                       timed=True, timeout=900, priority=0))
+            passed, reason = judge_test5(r, plates, step)
+            return passed, r
+
+        result = highest_passing(probe, start=40, factor=1.5, ratio=1.2, low=5, high=600, integer=True)
         held = next((info for value, passed, info in result.probes if value == result.highest_pass), None)
         return result.highest_pass, held
 
