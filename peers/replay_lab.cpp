@@ -142,6 +142,27 @@ struct ReplayDominoes : DominoModel {
   int dominoes;
 };
 
+// test5: each row is the plate count, then x, y, z, speed and yaw of each
+// plate, read after the step; a plate dropped since shows where it was put.
+struct ReplayPlates : PlateStackModel {
+  explicit ReplayPlates(const Trajectory& t) : c(t) {}
+  void step() override {
+    c.step();
+    dropped.clear();
+  }
+  void dropPlate(double height) override { dropped.push_back(height); }
+  int recorded() const { return static_cast<int>(c.at(0)); }
+  int count() const override { return recorded() + static_cast<int>(dropped.size()); }
+  Vec3 plateCentre(int i) const override {
+    if (i >= recorded()) return {0.0, dropped[i - recorded()], 0.0};
+    return {c.at(1 + 5 * i), c.at(2 + 5 * i), c.at(3 + 5 * i)};
+  }
+  double plateSpeed(int i) const override { return i < recorded() ? c.at(4 + 5 * i) : 0.0; }
+  double plateYawDegrees(int i) const override { return i < recorded() ? c.at(5 + 5 * i) : 0.0; }
+  Cursor c;
+  std::vector<double> dropped;
+};
+
 class Replay : public Engine {
  public:
   explicit Replay(const Trajectory& t) : t_(t) {}
@@ -161,6 +182,7 @@ class Replay : public Engine {
   std::unique_ptr<BallsModel> balls(const RunOptions&) override { return std::make_unique<ReplayBalls>(t_); }
   std::unique_ptr<UprightModel> axisSystem(const RunOptions&) override { return std::make_unique<ReplayUpright>(t_); }
   std::unique_ptr<DominoModel> dominoes(const RunOptions&) override { return std::make_unique<ReplayDominoes>(t_); }
+  std::unique_ptr<PlateStackModel> plateStack(const RunOptions&) override { return std::make_unique<ReplayPlates>(t_); }
 
  private:
   const Trajectory& t_;
@@ -192,6 +214,11 @@ int main(int argc, char** argv) {
     else if (options.scene == "test1") measureRebounds(replay, options, metrics);
     else if (options.scene == "test6") measureUpright(replay, options, metrics);
     else if (options.scene == "test3") measureChain(replay, options, metrics);
+    else if (options.scene == "test5") {
+      options.plates = static_cast<int>(t.number("plates"));
+      options.spawnInterval = t.number("spawn_interval");
+      measurePlates(replay, options, metrics);
+    }
     else throw std::runtime_error("unknown scene " + options.scene);
     std::cout << metrics.toJson();
   } catch (const std::exception& error) {

@@ -51,6 +51,22 @@ function main([file]) {
         options, metrics);
       break;
     }
+    case 'test5': {
+      // The recorded row after each step; a plate dropped since shows where it was put.
+      let at = 0, dropped = [];
+      const row = () => rows[at];
+      const recorded = () => row()[0];
+      const model = {
+        step: () => { ++at; dropped = []; },
+        dropPlate: (height) => dropped.push(height),
+        count: () => recorded() + dropped.length,
+        plateCentre: (i) => (i < recorded() ? row().slice(1 + 5 * i, 4 + 5 * i) : [0, dropped[i - recorded()], 0]),
+        plateSpeed: (i) => (i < recorded() ? row()[4 + 5 * i] : 0),
+        plateYawDegrees: (i) => (i < recorded() ? row()[5 + 5 * i] : 0),
+      };
+      m.measurePlates(model, { ...options, plates: header.plates, spawnInterval: header.spawn_interval }, metrics);
+      break;
+    }
     case 'test3': {
       const count = header.count;
       const model = replayModel(rows, (row) => ({ tiltDegrees: (i) => row()[i], activeBodies: () => row()[count] }));

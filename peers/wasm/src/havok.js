@@ -15,7 +15,7 @@
 // (default 0.1).
 const fs = require('fs');
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
+const { plateStack, dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;  // m/s and rad/s: far beyond the scan's 100 000 m/s
@@ -254,6 +254,19 @@ function dominoes(HK, options) {
   };
 }
 
+// test5: plates dropped onto the platform, every shape with test5's no-slip friction.
+function plates(HK, options) {
+  const t = scene.test5;
+  const world = new World(HK, SURFACE_GRAVITY, options);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body(world.friction(world.box([t.PLATFORM_SIDE, t.PLATFORM_THICKNESS, t.PLATFORM_SIDE]), friction), 0,
+    [0, -t.PLATFORM_THICKNESS / 2, 0]);
+  return plateStack({ step: () => world.step(), position: (b) => world.position(b), rotation: (b) => world.transform(b)[1],
+    velocity: (b) => world.velocity(b) },
+  (height) => world.body(world.friction(world.box([t.PLATE_WIDTH, t.PLATE_THICKNESS, t.PLATE_WIDTH]), friction),
+    t.PLATE_MASS, [0, height, 0]));
+}
+
 // test4: the big cube on the small cube on the platform.
 function stack(HK, bigMass, options) {
   const t = scene.test4;
@@ -282,10 +295,11 @@ function settingText(options) {
   if (options.scene === 'test9') text += '; restitution 1.0 on both shapes (geometric mean: 1.0), ground a 200 m box';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 1.0, combined by minimum; ground a 200 m box";
   if (options.scene === 'test10') text += '; ground a 200 m box';
+  if (options.scene === 'test5') text += '; friction 100 on every shape (test5\'s never-sliding contacts)';
   if (options.scene === 'test3') text += "; friction 1.0, Havok's own sleeping (thresholds not exposed), ground a 200 m box";
   if (options.scene === 'test6') text += '; friction 100 on every shape (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; ball joints (6-DOF, linear axes locked), friction 100 on every shape, ground a 200 m box';
   return text;
 }
 
-module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

@@ -14,7 +14,7 @@
 // 1 m/s) and, on test10, sweeps the cube (motion quality LinearCast, Jolt's
 // continuous collision; also --ccd).
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
+const { plateStack, dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;
@@ -254,6 +254,16 @@ function dominoes(Jolt, options) {
   };
 }
 
+// test5: plates dropped onto the platform, every body with test5's no-slip friction.
+function plates(Jolt, options) {
+  const t = scene.test5;
+  const world = new World(Jolt, SURFACE_GRAVITY, options);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body(world.box([t.PLATFORM_SIDE, t.PLATFORM_THICKNESS, t.PLATFORM_SIDE]), 0, [0, -t.PLATFORM_THICKNESS / 2, 0], { friction });
+  return plateStack(world, (height) => world.body(world.box([t.PLATE_WIDTH, t.PLATE_THICKNESS, t.PLATE_WIDTH]), t.PLATE_MASS,
+    [0, height, 0], { friction }));
+}
+
 function stack(Jolt, bigMass, options) {
   const t = scene.test4;
   const world = new World(Jolt, SURFACE_GRAVITY, options);
@@ -283,6 +293,7 @@ function settingText(options) {
     : "Jolt's defaults (damping 0.05 linear and angular, 10 velocity / 2 position iterations, no restitution below 1 m/s)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both bodies (maximum: 1.0), ground a plane';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 0 (maximum: the ball's), ground a plane";
+  if (options.scene === 'test5') text += '; friction 100 on every body (test5\'s never-sliding contacts)';
   if (options.scene === 'test3') text += '; friction 1.0, sleeping on (point velocity 0.1 m/s for 0.5 s), ground a plane';
   if (options.scene === 'test6') text += '; friction 100 on every body (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; point constraints (ball joints), friction 100 on every body, ground a plane';
@@ -290,4 +301,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

@@ -15,7 +15,7 @@
 // a soft-CCD prediction of twice its travel in a step: the swept CCD alone
 // does not stop it at a thin static wall, the predictive contact does.
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, throwState, hangingPairReadout } = require('./rigs');
+const { plateStack, dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const BEST_ITERATIONS = 50;
@@ -210,6 +210,22 @@ function dominoes(R, options) {
   };
 }
 
+// test5: plates dropped onto the platform, every collider with test5's no-slip friction.
+function plates(R, options) {
+  const t = scene.test5;
+  const world = new World(R, SURFACE_GRAVITY, options);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body([[R.ColliderDesc.cuboid(t.PLATFORM_SIDE / 2, t.PLATFORM_THICKNESS / 2, t.PLATFORM_SIDE / 2)]], 0,
+    [0, -t.PLATFORM_THICKNESS / 2, 0], { friction });
+  const rotation = (b) => {
+    const q = b.rotation();
+    return [q.x, q.y, q.z, q.w];
+  };
+  return plateStack({ step: () => world.step(), position: (b) => vec(b.translation()), rotation, velocity: (b) => vec(b.linvel()) },
+    (height) => world.body([[R.ColliderDesc.cuboid(t.PLATE_WIDTH / 2, t.PLATE_THICKNESS / 2, t.PLATE_WIDTH / 2)]], t.PLATE_MASS,
+      [0, height, 0], { friction }));
+}
+
 function stack(R, bigMass, options) {
   const t = scene.test4;
   const world = new World(R, SURFACE_GRAVITY, options);
@@ -253,6 +269,7 @@ function settingText(options) {
   if (options.scene === 'test2' || options.scene === 'test8') text += ', impulse revolute joint';
   if (options.scene === 'test9') text += '; restitution 1.0 on both colliders (average: 1.0), ground a 200 m cuboid';
   if (options.scene === 'test1') text += "; each ball's restitution combined by maximum with the ground's 0, ground a 200 m cuboid";
+  if (options.scene === 'test5') text += '; friction 100 on every collider (test5\'s never-sliding contacts)';
   if (options.scene === 'test3') text += "; friction 1.0, Rapier's own sleeping (thresholds not exposed), ground a 200 m cuboid";
   if (options.scene === 'test6') text += '; friction 100 on every collider (test6\'s never-sliding contacts)';
   if (options.scene === 'test7') text += '; spherical impulse joints, friction 100 on every collider, ground a 200 m cuboid';
@@ -263,4 +280,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

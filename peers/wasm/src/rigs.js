@@ -162,5 +162,27 @@ function dominoStarts(count) {
   return starts;
 }
 
-module.exports = { dominoStarts, pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube, throwState,
+// How far a body's local x axis is turned about the vertical, in degrees
+// (test5's twist, from an orientation [x, y, z, w]).
+function yawDegrees(q) {
+  const [x, y, z, w] = q;
+  return (Math.atan2(-2 * (x * z - w * y), 1 - 2 * (y * y + z * z)) * 180) / Math.PI;
+}
+
+// test5's plates as the measurement reads them, for an engine that makes a
+// plate with `makePlate(height)` -> body and reads it back through `world`:
+// {step(), position(body), rotation(body), velocity(body)}.
+function plateStack(world, makePlate) {
+  const plates = [];
+  return {
+    step: () => world.step(),
+    dropPlate: (height) => plates.push(makePlate(height)),
+    count: () => plates.length,
+    plateCentre: (i) => world.position(plates[i]),
+    plateSpeed: (i) => Math.hypot(...world.velocity(plates[i])),
+    plateYawDegrees: (i) => yawDegrees(world.rotation(plates[i])),
+  };
+}
+
+module.exports = { plateStack, dominoStarts, pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube, throwState,
   hangingPairReadout };
