@@ -23,5 +23,14 @@ Tally measureElongation(Engine& engine, const RunOptions& options, Metrics& metr
 Tally measureBounces(Engine& engine, const RunOptions& options, Metrics& metrics);     // test9
 Tally measureHold(Engine& engine, const RunOptions& options, Metrics& metrics);        // test4
 Tally measureWall(Engine& engine, const RunOptions& options, Metrics& metrics);        // test10
+Tally measureJoints(Engine& engine, const RunOptions& options, Metrics& metrics);      // test7
+Tally measureRebounds(Engine& engine, const RunOptions& options, Metrics& metrics);    // test1
+Tally measureUpright(Engine& engine, const RunOptions& options, Metrics& metrics);     // test6
+Tally measureChain(Engine& engine, const RunOptions& options, Metrics& metrics);       // test3
+Tally measurePlates(Engine& engine, const RunOptions& options, Metrics& metrics);      // test5
+
+// test1's layout: where ball i starts (its restitution is i / (BALL_COUNT - 1)).
+Vec3 ballStart(int ball);
+double ballBounce(int ball);
 
 }  // namespace odelab::peers

@@ -4,6 +4,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <map>
 
@@ -11,6 +12,7 @@
 #include "Measurements.h"
 #include "Metrics.h"
 #include "PeerScene.h"
+#include "shared/SceneConstants.h"
 
 namespace odelab::peers {
 
@@ -21,6 +23,8 @@ using Measurement = Tally (*)(Engine&, const RunOptions&, Metrics&);
 const std::map<std::string, Measurement> MEASUREMENTS = {
     {"test2", measureEnergy}, {"test4", measureHold},  {"test8", measureElongation},
     {"test9", measureBounces}, {"test10", measureWall},
+    {"test7", measureJoints},   {"test1", measureRebounds}, {"test6", measureUpright},
+    {"test3", measureChain},    {"test5", measurePlates},
 };
 
 double processCpuSeconds() {
@@ -35,7 +39,7 @@ int runPeer(int argc, char** argv, Engine& engine) {
   CLI::App app{"The thesis's measurement scenes on " + engine.name() +
                ", headless, with the ODE programs' metric names (doc/peers.md)."};
   RunOptions options;
-  std::string setting = "default", metricsJson;
+  std::string setting = "default", metricsJson, modelFile;
   bool headless = false;
   std::vector<std::string> scenes;
   for (const auto& entry : MEASUREMENTS) scenes.push_back(entry.first);
@@ -44,7 +48,7 @@ int runPeer(int argc, char** argv, Engine& engine) {
       ->capture_default_str();
   // Every number finite and within its range, every value non-empty,
   // every count decimal: the ODE programs' rules, from utils/CommandLine.
-  app.add_option("--step", options.step, "simulation step in s")->check(cli::finiteRange(1e-7, 0.1))->capture_default_str();
+  app.add_option("--step", options.step, "simulation step in s (test3: 0.005, its ODE program's, unless given)")->check(cli::finiteRange(1e-7, 0.1))->capture_default_str();
   app.add_option("--seconds", options.seconds, "simulated seconds (default: the ODE program's run for the scene)")
       ->check(cli::positive(86400.0));
   app.add_option("--setting", setting,
@@ -62,18 +66,42 @@ int runPeer(int argc, char** argv, Engine& engine) {
       ->check(cli::finiteRange(1e-3, 1e9));
   app.add_option("--bob-mass", options.bobMass, "test8: mass of the bob in kg (default: the scene's)")
       ->check(cli::finiteRange(1e-3, 1e9));
+  app.add_option("--plates", options.plates, "test5: plates dropped (default: the scene's)")
+      ->check(cli::integerRange(1, 100000));
+  app.add_option("--spawn-interval", options.spawnInterval, "test5: simulated seconds between plates (default: the scene's)")
+      ->check(cli::finiteRange(1e-6, 1e4));
   app.add_option("--metrics-json", metricsJson, "write the metrics to this file as JSON");
+  app.add_option("--write-model", modelFile,
+                 "write the scene's model as the engine reads it (MuJoCo: MJCF, test2 and test9) to this file and exit");
   app.add_flag("--headless", headless, "accepted for the lab's sake; the peers never open a window");
   cli::rejectEmptyValues(app);
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     if (options.ccd && !engine.hasContinuousCollision())
       throw UsageError("--ccd: " + engine.name() + " has no continuous collision detection");
     if (options.ccd && options.scene != "test10") throw UsageError("--ccd: only test10 uses it");
+    // test3 runs at its own step (the ODE program's) unless one is given.
+    if (options.scene == "test3" && app.count("--step") == 0) options.step = scene::test3::SCENE_STEP;
     cli::refuseRunShorterThanStep(options.seconds, options.step);
     cli::requireReplaceableFile("--metrics-json", metricsJson);
+    cli::requireReplaceableFile("--write-model", modelFile);
   });
   if (refused) return *refused;
   options.setting = setting == "best" ? Setting::Best : Setting::Default;
+  if (!modelFile.empty()) {
+    const std::string model = engine.modelText(options);
+    if (model.empty()) {
+      std::cerr << "error: --write-model: " << engine.name() << " has no model file for " << options.scene << '\n'
+                << "Run with --help for the options.\n";
+      return 2;
+    }
+    std::ofstream out(modelFile);
+    out << model;
+    if (!out) {
+      std::cerr << "error: --write-model: cannot write " << modelFile << '\n';
+      return 1;
+    }
+    return 0;
+  }
 
   Metrics metrics;
   const double cpuBefore = processCpuSeconds();

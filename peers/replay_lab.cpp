@@ -61,6 +61,7 @@ class Cursor {
   }
   Vec3 vec() const { return {at(0), at(1), at(2)}; }
   double mass() const { return t_.number("mass"); }
+  const Trajectory& t() const { return t_; }
 
  private:
   const Trajectory& t_;
@@ -97,6 +98,71 @@ struct ReplayLaunch : LaunchModel {
   Cursor c;
 };
 
+struct ReplayHangingPair : HangingPairModel {
+  explicit ReplayHangingPair(const Trajectory& t) : c(t) {}
+  void step() override { c.step(); }
+  void throwCube() override {}  // the throws are in the recording
+  double jointError() const override { return c.at(0); }
+  double pivotAngularSpeed() const override { return c.at(1); }
+  Vec3 pivotCentre() const override { return {c.at(2), c.at(3), c.at(4)}; }
+  Vec3 testCubeCentre() const override { return {c.at(5), c.at(6), c.at(7)}; }
+  Cursor c;
+};
+
+// test1: each row holds x, y, z and speed of every ball in turn.
+struct ReplayBalls : BallsModel {
+  explicit ReplayBalls(const Trajectory& t) : c(t), balls(static_cast<int>(t.number("count"))) {}
+  void step() override { c.step(); }
+  int count() const override { return balls; }
+  double bounce(int ball) const override { return ballBounce(ball); }
+  Vec3 centre(int ball) const override { return {c.at(4 * ball), c.at(4 * ball + 1), c.at(4 * ball + 2)}; }
+  double speed(int ball) const override { return c.at(4 * ball + 3); }
+  double bounceVelocity() const override { return c.t().number("bounce_velocity"); }
+  Cursor c;
+  int balls;
+};
+struct ReplayUpright : UprightModel {
+  explicit ReplayUpright(const Trajectory& t) : c(t) {}
+  void step() override { c.step(); }
+  Vec3 bigCentre() const override { return c.vec(); }
+  double bigTiltDegrees() const override { return c.at(3); }
+  double smallSink() const override { return c.at(4); }
+  Cursor c;
+};
+
+// test3: each row holds every domino's tilt, then the bodies awake.
+struct ReplayDominoes : DominoModel {
+  explicit ReplayDominoes(const Trajectory& t) : c(t), dominoes(static_cast<int>(t.number("count"))) {}
+  void step() override { c.step(); }
+  int count() const override { return dominoes; }
+  double tiltDegrees(int domino) const override { return c.at(domino); }
+  int activeBodies() const override { return static_cast<int>(c.at(dominoes)); }
+  bool sleeps() const override { return c.t().number("sleeps") != 0; }
+  Cursor c;
+  int dominoes;
+};
+
+// test5: each row is the plate count, then x, y, z, speed and yaw of each
+// plate, read after the step; a plate dropped since shows where it was put.
+struct ReplayPlates : PlateStackModel {
+  explicit ReplayPlates(const Trajectory& t) : c(t) {}
+  void step() override {
+    c.step();
+    dropped.clear();
+  }
+  void dropPlate(double height) override { dropped.push_back(height); }
+  int recorded() const { return static_cast<int>(c.at(0)); }
+  int count() const override { return recorded() + static_cast<int>(dropped.size()); }
+  Vec3 plateCentre(int i) const override {
+    if (i >= recorded()) return {0.0, dropped[i - recorded()], 0.0};
+    return {c.at(1 + 5 * i), c.at(2 + 5 * i), c.at(3 + 5 * i)};
+  }
+  double plateSpeed(int i) const override { return i < recorded() ? c.at(4 + 5 * i) : 0.0; }
+  double plateYawDegrees(int i) const override { return i < recorded() ? c.at(5 + 5 * i) : 0.0; }
+  Cursor c;
+  std::vector<double> dropped;
+};
+
 class Replay : public Engine {
  public:
   explicit Replay(const Trajectory& t) : t_(t) {}
@@ -110,6 +176,13 @@ class Replay : public Engine {
   std::unique_ptr<LaunchModel> launch(double, const RunOptions&) override {
     return std::make_unique<ReplayLaunch>(t_);
   }
+  std::unique_ptr<HangingPairModel> hangingPair(const RunOptions&) override {
+    return std::make_unique<ReplayHangingPair>(t_);
+  }
+  std::unique_ptr<BallsModel> balls(const RunOptions&) override { return std::make_unique<ReplayBalls>(t_); }
+  std::unique_ptr<UprightModel> axisSystem(const RunOptions&) override { return std::make_unique<ReplayUpright>(t_); }
+  std::unique_ptr<DominoModel> dominoes(const RunOptions&) override { return std::make_unique<ReplayDominoes>(t_); }
+  std::unique_ptr<PlateStackModel> plateStack(const RunOptions&) override { return std::make_unique<ReplayPlates>(t_); }
 
  private:
   const Trajectory& t_;
@@ -137,6 +210,15 @@ int main(int argc, char** argv) {
     else if (options.scene == "test9") measureBounces(replay, options, metrics);
     else if (options.scene == "test4") measureHold(replay, options, metrics);
     else if (options.scene == "test10") measureWall(replay, options, metrics);
+    else if (options.scene == "test7") measureJoints(replay, options, metrics);
+    else if (options.scene == "test1") measureRebounds(replay, options, metrics);
+    else if (options.scene == "test6") measureUpright(replay, options, metrics);
+    else if (options.scene == "test3") measureChain(replay, options, metrics);
+    else if (options.scene == "test5") {
+      options.plates = static_cast<int>(t.number("plates"));
+      options.spawnInterval = t.number("spawn_interval");
+      measurePlates(replay, options, metrics);
+    }
     else throw std::runtime_error("unknown scene " + options.scene);
     std::cout << metrics.toJson();
   } catch (const std::exception& error) {

@@ -63,8 +63,8 @@ double spiralOuterRadius(int count) {
 
 WorldSettings settingsForThisScene() {
   WorldSettings settings;  // ERP 0.2, CFM 1e-6: the thesis's defaults
-  settings.iterations = 8;  // the thesis: +20% frame rate against 20
-  settings.step = 0.005;    // the thesis: further speed-up, no visible instability
+  settings.iterations = SCENE_ITERATIONS;
+  settings.step = SCENE_STEP;
   return settings;
 }
 
@@ -134,7 +134,7 @@ class Domino : public AbstractWindow {
   }
   std::string plotLabel() const override { return "fallen dominoes"; }
 
-  double defaultHeadlessSeconds() const override { return 20.0; }  // the chain takes 8.5 s; all at rest by 15 s
+  double defaultHeadlessSeconds() const override { return RUN_SECONDS; }
 
   void initialCamera(Camera& camera) const override {
     const double r = spiralOuterRadius(dominoCount_);

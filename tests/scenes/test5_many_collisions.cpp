@@ -38,7 +38,6 @@ namespace {
 using namespace odelab;
 
 using namespace scene::test5;  // the platform, the plates and their drops: SceneConstants.h (shared with peers/)
-constexpr double COST_WINDOW = 1.0;      // simulated seconds averaged by ms_per_step
 // ODE's default auto-disable thresholds (m/s and rad/s); the thesis tried
 // raising the linear one to 0.3.
 constexpr double ODE_DEFAULT_DISABLE_THRESHOLD = 0.01;
@@ -188,7 +187,7 @@ class ManyCollisions : public AbstractWindow {
   }
   std::string plotLabel() const override { return "collide + step (ms per step, last simulated second)"; }
 
-  double defaultHeadlessSeconds() const override { return 20.0; }
+  double defaultHeadlessSeconds() const override { return RUN_SECONDS; }
 
   void initialCamera(Camera& camera) const override { camera.lookAt({12, 6, 17}, {0, 3.8, 0}); }
 

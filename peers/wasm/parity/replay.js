@@ -6,6 +6,8 @@
 const fs = require('fs');
 const m = require('../src/measurements');
 const { Metrics } = require('../src/metrics');
+const { measureRebounds, ballLayout } = require('../src/rebound');
+const { measureUpright } = require('../src/upright');
 
 function readTrajectory(file) {
   const lines = fs.readFileSync(file, 'utf8').trim().split('\n');
@@ -41,6 +43,44 @@ function main([file]) {
     case 'test4':
       m.measureHold(replayModel(rows, (row) => ({ bigCentre: () => row().slice(0, 3), bigTiltDegrees: () => row()[3],
         deepestPenetration: () => row()[4] })), header.mass, options, metrics);
+      break;
+    case 'test1': {
+      const count = header.count;
+      const model = replayModel(rows, (row) => ({ centre: (i) => row().slice(4 * i, 4 * i + 3), speed: (i) => row()[4 * i + 3] }));
+      measureRebounds({ ...model, count, bounceVelocity: header.bounce_velocity, bounce: (i) => ballLayout(i).bounce },
+        options, metrics);
+      break;
+    }
+    case 'test5': {
+      // The recorded row after each step; a plate dropped since shows where it was put.
+      let at = 0, dropped = [];
+      const row = () => rows[at];
+      const recorded = () => row()[0];
+      const model = {
+        step: () => { ++at; dropped = []; },
+        dropPlate: (height) => dropped.push(height),
+        count: () => recorded() + dropped.length,
+        plateCentre: (i) => (i < recorded() ? row().slice(1 + 5 * i, 4 + 5 * i) : [0, dropped[i - recorded()], 0]),
+        plateSpeed: (i) => (i < recorded() ? row()[4 + 5 * i] : 0),
+        plateYawDegrees: (i) => (i < recorded() ? row()[5 + 5 * i] : 0),
+      };
+      m.measurePlates(model, { ...options, plates: header.plates, spawnInterval: header.spawn_interval }, metrics);
+      break;
+    }
+    case 'test3': {
+      const count = header.count;
+      const model = replayModel(rows, (row) => ({ tiltDegrees: (i) => row()[i], activeBodies: () => row()[count] }));
+      m.measureChain({ ...model, count, sleeps: header.sleeps !== 0 }, options, metrics);
+      break;
+    }
+    case 'test6':
+      measureUpright(replayModel(rows, (row) => ({ bigCentre: () => row().slice(0, 3), bigTiltDegrees: () => row()[3],
+        smallSink: () => row()[4] })), options, metrics);
+      break;
+    case 'test7':
+      m.measureJoints(replayModel(rows, (row) => ({ throwCube: () => {}, jointError: () => row()[0],
+        pivotAngularSpeed: () => row()[1], pivotCentre: () => row().slice(2, 5), testCubeCentre: () => row().slice(5, 8) })),
+      options, metrics);
       break;
     default:
       m.measureWall(() => replayModel(rows, (row) => ({ cubeCentre: () => row().slice(0, 3), cubeVelocityX: () => row()[3] })),

@@ -3,14 +3,17 @@
 // the web peers. A bad option, a value out of range, NaN, or a run that would
 // take no step is refused with its reason on stderr and status 2.
 
+const { scene } = require('./constants');
+
 class UsageError extends Error {}
 
-const SCENES = ['test1', 'test2', 'test4', 'test6', 'test8', 'test9', 'test10'];
+const SCENES = ['test1', 'test2', 'test3', 'test4', 'test5', 'test6', 'test7', 'test8', 'test9', 'test10'];
 
 // name -> {kind: 'number'|'choice'|'text'|'flag', key, min, max, choices, help}
 const OPTIONS = {
   '--scene': { kind: 'choice', key: 'scene', choices: SCENES, help: 'the scene, named as the ODE program that measures it' },
-  '--step': { kind: 'number', key: 'step', min: 1e-7, max: 0.1, help: 'simulation step in s' },
+  '--step': { kind: 'number', key: 'step', min: 1e-7, max: 0.1,
+    help: "simulation step in s (test3: 0.005, its ODE program's, unless given)" },
   '--seconds': { kind: 'number', key: 'seconds', min: 0, max: 86400, exclusiveMin: true,
     help: "simulated seconds (default: the ODE program's run for the scene)" },
   '--setting': { kind: 'choice', key: 'setting', choices: ['default', 'best'],
@@ -21,6 +24,9 @@ const OPTIONS = {
     help: 'test10: scan from 1 m/s (every 1 m/s to 1000, every 0.1% above) for the highest velocity with every launch up to it stopped' },
   '--big-mass': { kind: 'number', key: 'bigMass', min: 1e-3, max: 1e9, help: "test4: mass of the big cube in kg (default: the scene's)" },
   '--bob-mass': { kind: 'number', key: 'bobMass', min: 1e-3, max: 1e9, help: "test8: mass of the bob in kg (default: the scene's)" },
+  '--plates': { kind: 'number', key: 'plates', min: 1, max: 100000, integer: true, help: "test5: plates dropped (default: the scene's)" },
+  '--spawn-interval': { kind: 'number', key: 'spawnInterval', min: 1e-6, max: 1e4,
+    help: "test5: simulated seconds between plates (default: the scene's)" },
   '--metrics-json': { kind: 'text', key: 'metricsJson', help: 'write the metrics to this file as JSON' },
   '--headless': { kind: 'flag', key: 'headless', help: "accepted for the lab's sake; the peers never open a window" },
   '--help': { kind: 'flag', key: 'help', help: 'print this help and exit' },
@@ -29,7 +35,7 @@ const ALIASES = { '-h': '--help' };
 
 function defaults() {
   return { scene: 'test2', step: 0.001, seconds: -1, setting: 'default', ccd: false, velocity: 200,
-    findMaxVelocity: false, bigMass: 0, bobMass: 0, metricsJson: '', headless: false, help: false };
+    findMaxVelocity: false, bigMass: 0, bobMass: 0, plates: 0, spawnInterval: 0, metricsJson: '', headless: false, help: false };
 }
 
 function usage(engineName) {
@@ -49,6 +55,7 @@ function parseNumber(name, text, o) {
   if (!/^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(text)) throw new UsageError(`${name}: "${text}" is not a number`);
   const value = Number(text);
   const low = o.exclusiveMin ? value <= o.min : value < o.min;
+  if (o.integer && !Number.isInteger(value)) throw new UsageError(`${name}: ${text} is not a whole number`);
   if (!Number.isFinite(value) || low || value > o.max)
     throw new UsageError(`${name}: ${text} is not in ${o.exclusiveMin ? '(' : '['}${o.min} - ${o.max}]`);
   return value;
@@ -87,6 +94,7 @@ function parseArguments(argv, engine) {
     }
   }
   if (options.help) return options;
+  if (options.scene === 'test3' && !argv.some((a) => a === '--step' || a.startsWith('--step='))) options.step = scene.test3.SCENE_STEP;
   if (options.ccd && !engine.hasContinuousCollision)
     throw new UsageError(`--ccd: ${engine.name} has no continuous collision switch`);
   if (options.ccd && options.scene !== 'test10') throw new UsageError('--ccd: only test10 uses it');

@@ -18,6 +18,7 @@ const HEADERS = [
   path.join(ROOT, 'tests', 'shared', 'LaunchOutcome.h'),  // test10's settling time, beside its outcome rule
   path.join(ROOT, 'tests', 'shared', 'VelocityScan.h'),  // test10's scan steps
   path.join(ROOT, 'peers', 'Test10Scene.h'),  // test10's launch rule and scan, as the C++ peers run them
+  path.join(ROOT, 'peers', 'Surfaces.h'),  // the ODE scenes' surface choices, as every peer maps them
 ];
 const DECLARATION = /constexpr\s+(?:double|int|long)\s+([^;]+);/g;
 const SAFE_EXPRESSION = /^[\w\s.+\-*/()]+$/;

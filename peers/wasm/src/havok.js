@@ -15,7 +15,7 @@
 // (default 0.1).
 const fs = require('fs');
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube } = require('./rigs');
+const { plateStack, dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;  // m/s and rad/s: far beyond the scan's 100 000 m/s
@@ -77,6 +77,13 @@ class World {
     const HK = this.HK;
     check(HK.HP_Shape_SetMaterial(shape, [0.5, 0.5, value, HK.MaterialCombine.GEOMETRIC_MEAN,
       HK.MaterialCombine[combine]]), 'HP_Shape_SetMaterial');
+  }
+  // Friction `value` (static and dynamic), restitution 0; combined by geometric mean.
+  friction(shape, value) {
+    const HK = this.HK;
+    check(HK.HP_Shape_SetMaterial(shape, [value, value, 0, HK.MaterialCombine.GEOMETRIC_MEAN,
+      HK.MaterialCombine.GEOMETRIC_MEAN]), 'HP_Shape_SetMaterial');
+    return shape;
   }
   ground() {
     return this.body(this.box([GROUND_SIZE, 10, GROUND_SIZE]), 0, [0, -5, 0]);
@@ -170,25 +177,94 @@ function balls(HK, options) {
   };
 }
 
-// test6: the 5000 kg cube on a ball joint (every linear axis locked, every
-// angular one free) 2 m above the 1 kg cube resting on the ground box.
+// test6: the 5000 kg cube on a ball joint 2 m above the 1 kg cube resting
+// on the ground box, every shape with test6's no-slip friction.
 function axisSystem(HK, options) {
   const t = scene.test6;
   const world = new World(HK, SURFACE_GRAVITY, options);
-  world.ground();
-  const small = world.body(world.box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
-  const big = world.body(world.box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  const box = (size) => world.friction(world.box(size), scene.top.NO_SLIP_FRICTION);
+  world.body(box([GROUND_SIZE, 10, GROUND_SIZE]), 0, [0, -5, 0]);
+  const small = world.body(box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
+  const big = world.body(box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  ballJoint(HK, small, big, [0, t.ANCHOR_HEIGHT - t.SMALL_SIDE / 2, 0], [0, -t.BIG_SIDE / 2, 0]);
+  return uprightReadout({ step: () => world.step(), position: (b) => world.position(b),
+    rotation: (b) => world.transform(b)[1] }, small, big);
+}
+
+// A ball joint: every linear axis locked, every angular one free; the two
+// bodies do not collide with each other (as in the ODE programs).
+function ballJoint(HK, parent, child, inParent, inChild) {
   const joint = check(HK.HP_Constraint_Create(), 'HP_Constraint_Create');
-  HK.HP_Constraint_SetParentBody(joint, small);
-  HK.HP_Constraint_SetChildBody(joint, big);
-  HK.HP_Constraint_SetAnchorInParent(joint, [0, t.ANCHOR_HEIGHT - t.SMALL_SIDE / 2, 0], [1, 0, 0], [0, 1, 0]);
-  HK.HP_Constraint_SetAnchorInChild(joint, [0, -t.BIG_SIDE / 2, 0], [1, 0, 0], [0, 1, 0]);
+  HK.HP_Constraint_SetParentBody(joint, parent);
+  HK.HP_Constraint_SetChildBody(joint, child);
+  HK.HP_Constraint_SetAnchorInParent(joint, inParent, [1, 0, 0], [0, 1, 0]);
+  HK.HP_Constraint_SetAnchorInChild(joint, inChild, [1, 0, 0], [0, 1, 0]);
   const A = HK.ConstraintAxis;
   for (const axis of [A.LINEAR_X, A.LINEAR_Y, A.LINEAR_Z]) HK.HP_Constraint_SetAxisMode(joint, axis, HK.ConstraintAxisLimitMode.LOCKED);
   for (const axis of [A.ANGULAR_X, A.ANGULAR_Y, A.ANGULAR_Z]) HK.HP_Constraint_SetAxisMode(joint, axis, HK.ConstraintAxisLimitMode.FREE);
+  HK.HP_Constraint_SetCollisionsEnabled(joint, false);
   HK.HP_Constraint_SetEnabled(joint, true);
-  return uprightReadout({ step: () => world.step(), position: (b) => world.position(b),
-    rotation: (b) => world.transform(b)[1] }, small, big);
+  return joint;
+}
+
+// test7: the pivot on a ball joint to a static body at the anchor, the big
+// cube on a ball joint to the pivot, the test cube thrown at the pivot;
+// every shape with test7's no-slip friction.
+function hangingPair(HK, options) {
+  const t = scene.test7;
+  const world = new World(HK, SURFACE_GRAVITY, options);
+  const box = (side) => world.friction(world.box([side, side, side]), scene.top.NO_SLIP_FRICTION);
+  world.body(world.friction(world.box([GROUND_SIZE, 10, GROUND_SIZE]), scene.top.NO_SLIP_FRICTION), 0, [0, -5, 0]);
+  const pivot = world.body(box(t.PIVOT_SIDE), t.PIVOT_MASS, [0, t.PIVOT_CENTRE_Y, 0]);
+  const big = world.body(box(t.BIG_SIDE), t.BIG_MASS, [0, t.BIG_CENTRE_Y, 0]);
+  const cube = world.body(box(t.TEST_CUBE_SIDE), t.TEST_CUBE_MASS, throwState().position);
+  const anchor = world.body(null, 0, [0, t.ANCHOR_HEIGHT, 0]);
+  ballJoint(HK, anchor, pivot, [0, 0, 0], [0, t.PIVOT_SIDE / 2, 0]);
+  ballJoint(HK, pivot, big, [0, -t.PIVOT_SIDE / 2, 0], [0, t.BIG_SIDE / 2, 0]);
+  const throwCube = () => {
+    const { position, velocity } = throwState();
+    HK.HP_Body_SetQTransform(cube, [position, IDENTITY]);
+    HK.HP_Body_SetLinearVelocity(cube, velocity);
+    HK.HP_Body_SetAngularVelocity(cube, [0, 0, 0]);
+  };
+  throwCube();
+  return hangingPairReadout({ step: () => world.step(), position: (b) => world.position(b),
+    rotation: (b) => world.transform(b)[1], spin: (b) => world.spin(b) }, pivot, big, cube, throwCube);
+}
+
+// test3: the domino spiral, friction 1.0 (geometric mean: 1.0), Havok's own
+// sleeping on (its thresholds are not exposed: test3's 0.1 cannot be set).
+function dominoes(HK, options) {
+  const t = scene.test3;
+  const world = new World(HK, SURFACE_GRAVITY, options);
+  world.body(world.friction(world.box([GROUND_SIZE, 10, GROUND_SIZE]), t.DEFAULT_MU), 0, [0, -5, 0]);
+  const bodies = dominoStarts(t.DEFAULT_DOMINOES).map((d) => {
+    const shape = world.friction(world.box([t.DOMINO_THICKNESS, t.DOMINO_HEIGHT, t.DOMINO_WIDTH]), t.DEFAULT_MU);
+    const id = world.body(shape, t.DOMINO_MASS, d.centre);
+    HK.HP_Body_SetQTransform(id, [d.centre, d.rotation]);
+    HK.HP_Body_SetLinearVelocity(id, d.velocity);
+    HK.HP_Body_SetAngularVelocity(id, d.spin);
+    HK.HP_Body_SetActivationControl(id, HK.ActivationControl.SIMULATION_CONTROLLED);
+    return id;
+  });
+  return {
+    step: () => world.step(), count: bodies.length, sleeps: true,
+    tiltDegrees: (i) => tiltDegrees(world.transform(bodies[i])[1]),
+    activeBodies: () => bodies.filter((b) => HK.HP_Body_GetActivationState(b)[1] === HK.ActivationState.ACTIVE).length,
+  };
+}
+
+// test5: plates dropped onto the platform, every shape with test5's no-slip friction.
+function plates(HK, options) {
+  const t = scene.test5;
+  const world = new World(HK, SURFACE_GRAVITY, options);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body(world.friction(world.box([t.PLATFORM_SIDE, t.PLATFORM_THICKNESS, t.PLATFORM_SIDE]), friction), 0,
+    [0, -t.PLATFORM_THICKNESS / 2, 0]);
+  return plateStack({ step: () => world.step(), position: (b) => world.position(b), rotation: (b) => world.transform(b)[1],
+    velocity: (b) => world.velocity(b) },
+  (height) => world.body(world.friction(world.box([t.PLATE_WIDTH, t.PLATE_THICKNESS, t.PLATE_WIDTH]), friction),
+    t.PLATE_MASS, [0, height, 0]));
 }
 
 // test4: the big cube on the small cube on the platform.
@@ -214,12 +290,16 @@ function launch(HK, velocity, options) {
 
 function settingText(options) {
   const best = options.setting === 'best';
-  let text = 'HP_World_Step(h), speed limit raised to 1e9, sleeping off, speculative contacts (always on); ';
+  let text = `HP_World_Step(h), speed limit raised to 1e9, ${options.scene === 'test3' ? '' : 'sleeping off, '}speculative contacts (always on); `;
   text += best ? 'ideal step time h, angular damping 0' : "Havok's defaults (ideal step time 1/60 s, angular damping 0.1)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both shapes (geometric mean: 1.0), ground a 200 m box';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 1.0, combined by minimum; ground a 200 m box";
   if (options.scene === 'test10') text += '; ground a 200 m box';
+  if (options.scene === 'test5') text += '; friction 100 on every shape (test5\'s never-sliding contacts)';
+  if (options.scene === 'test3') text += "; friction 1.0, Havok's own sleeping (thresholds not exposed), ground a 200 m box";
+  if (options.scene === 'test6') text += '; friction 100 on every shape (test6\'s never-sliding contacts)';
+  if (options.scene === 'test7') text += '; ball joints (6-DOF, linear axes locked), friction 100 on every shape, ground a 200 m box';
   return text;
 }
 
-module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };
+module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

@@ -14,7 +14,7 @@
 // 1 m/s) and, on test10, sweeps the cube (motion quality LinearCast, Jolt's
 // continuous collision; also --ccd).
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube } = require('./rigs');
+const { plateStack, dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, launchedCube, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const NO_SPEED_LIMIT = 1e9;
@@ -67,14 +67,17 @@ class World {
     return new this.Jolt.PlaneShape(new this.Jolt.Plane(new this.Jolt.Vec3(0, 1, 0), 0));
   }
   // mass 0: static. inertia: principal moments about the centre, else Jolt's from the shape.
-  body(shape, mass, position, { inertia, restitution, sweep } = {}) {
+  body(shape, mass, position, { inertia, restitution, sweep, friction, group, rotation, sleeps } = {}) {
     const J = this.Jolt;
-    const s = new J.BodyCreationSettings(shape, new J.RVec3(...position), J.Quat.prototype.sIdentity(),
+    const s = new J.BodyCreationSettings(shape, new J.RVec3(...position),
+      rotation ? new J.Quat(...rotation) : J.Quat.prototype.sIdentity(),
       mass > 0 ? J.EMotionType_Dynamic : J.EMotionType_Static, mass > 0 ? MOVING : STATIC);
-    s.mAllowSleeping = false;
+    s.mAllowSleeping = Boolean(sleeps);
     s.mMaxLinearVelocity = NO_SPEED_LIMIT;
     s.mMaxAngularVelocity = NO_SPEED_LIMIT;
     if (restitution !== undefined) s.mRestitution = restitution;
+    if (friction !== undefined) s.mFriction = friction;
+    if (group) s.mCollisionGroup = group;
     if (this.best) {
       s.mLinearDamping = 0;
       s.mAngularDamping = 0;
@@ -175,18 +178,90 @@ function balls(Jolt, options) {
 }
 
 // test6: the 5000 kg cube on a point constraint (a ball joint) 2 m above the
-// 1 kg cube resting on the ground plane.
+// 1 kg cube resting on the ground plane, every body with test6's no-slip friction.
 function axisSystem(Jolt, options) {
   const t = scene.test6;
   const world = new World(Jolt, SURFACE_GRAVITY, options);
-  world.body(world.plane(), 0, [0, 0, 0]);
-  const small = world.body(world.box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
-  const big = world.body(world.box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body(world.plane(), 0, [0, 0, 0], { friction });
+  const small = world.body(world.box([t.SMALL_SIDE, t.SMALL_SIDE, t.SMALL_SIDE]), t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0], { friction });
+  const big = world.body(world.box([t.BIG_SIDE, t.BIG_SIDE, t.BIG_SIDE]), t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0], { friction });
   const joint = new Jolt.PointConstraintSettings();
   joint.mPoint1 = joint.mPoint2 = new Jolt.RVec3(0, t.ANCHOR_HEIGHT, 0);
   world.system.AddConstraint(joint.Create(small, big));
   return uprightReadout({ step: () => world.step(), position: (b) => world.position(b),
     rotation: (b) => world.rotation(b) }, small, big);
+}
+
+// test7: the pivot on a point constraint (a ball joint) to the world, the
+// big cube on another to the pivot, the test cube thrown at the pivot; every
+// body with test7's no-slip friction (Jolt combines by geometric mean). The
+// pivot and the big cube share a collision group that keeps the two from
+// colliding with each other, as the ODE programs do for joined bodies.
+function hangingPair(Jolt, options) {
+  const t = scene.test7;
+  const world = new World(Jolt, SURFACE_GRAVITY, options);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  const pairFilter = new Jolt.GroupFilterTable(2);
+  pairFilter.DisableCollision(0, 1);
+  const cube = (side) => world.box([side, side, side]);
+  world.body(world.plane(), 0, [0, 0, 0], { friction });
+  const pivot = world.body(cube(t.PIVOT_SIDE), t.PIVOT_MASS, [0, t.PIVOT_CENTRE_Y, 0],
+    { friction, group: new Jolt.CollisionGroup(pairFilter, 0, 0) });
+  const big = world.body(cube(t.BIG_SIDE), t.BIG_MASS, [0, t.BIG_CENTRE_Y, 0],
+    { friction, group: new Jolt.CollisionGroup(pairFilter, 0, 1) });
+  const thrown = world.body(cube(t.TEST_CUBE_SIDE), t.TEST_CUBE_MASS, throwState().position, { friction });
+  const top = new Jolt.PointConstraintSettings();
+  top.mPoint1 = top.mPoint2 = new Jolt.RVec3(0, t.ANCHOR_HEIGHT, 0);
+  world.system.AddConstraint(top.Create(Jolt.Body.prototype.sFixedToWorld, pivot));
+  const middle = new Jolt.PointConstraintSettings();
+  middle.mPoint1 = middle.mPoint2 = new Jolt.RVec3(0, t.LOWER_ANCHOR_Y, 0);
+  world.system.AddConstraint(middle.Create(pivot, big));
+  const throwCube = () => {
+    const { position, velocity } = throwState();
+    world.bodies.SetPositionAndRotation(thrown.GetID(), new Jolt.RVec3(...position), Jolt.Quat.prototype.sIdentity(),
+      Jolt.EActivation_Activate);
+    world.bodies.SetLinearVelocity(thrown.GetID(), new Jolt.Vec3(...velocity));
+    world.bodies.SetAngularVelocity(thrown.GetID(), new Jolt.Vec3(0, 0, 0));
+  };
+  throwCube();
+  return hangingPairReadout({ step: () => world.step(), position: (b) => world.position(b),
+    rotation: (b) => world.rotation(b), spin: (b) => world.spin(b) }, pivot, big, thrown, throwCube);
+}
+
+// test3: the domino spiral, friction 1.0 (geometric mean: 1.0), sleeping on
+// with test3's 0.1 m/s as Jolt's point-velocity threshold (its default 0.03)
+// after Jolt's 0.5 s below it.
+function dominoes(Jolt, options) {
+  const t = scene.test3;
+  const world = new World(Jolt, SURFACE_GRAVITY, options);
+  const physics = world.system.GetPhysicsSettings();
+  physics.mPointVelocitySleepThreshold = t.AUTO_DISABLE_THRESHOLD;
+  world.system.SetPhysicsSettings(physics);
+  const friction = t.DEFAULT_MU;
+  world.body(world.plane(), 0, [0, 0, 0], { friction });
+  const bodies = dominoStarts(t.DEFAULT_DOMINOES).map((d) => {
+    const body = world.body(world.box([t.DOMINO_THICKNESS, t.DOMINO_HEIGHT, t.DOMINO_WIDTH]), t.DOMINO_MASS, d.centre,
+      { friction, rotation: d.rotation, sleeps: true });
+    world.bodies.SetLinearVelocity(body.GetID(), new Jolt.Vec3(...d.velocity));
+    world.bodies.SetAngularVelocity(body.GetID(), new Jolt.Vec3(...d.spin));
+    return body;
+  });
+  return {
+    step: () => world.step(), count: bodies.length, sleeps: true,
+    tiltDegrees: (i) => tiltDegrees(world.rotation(bodies[i])),
+    activeBodies: () => bodies.filter((b) => b.IsActive()).length,
+  };
+}
+
+// test5: plates dropped onto the platform, every body with test5's no-slip friction.
+function plates(Jolt, options) {
+  const t = scene.test5;
+  const world = new World(Jolt, SURFACE_GRAVITY, options);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body(world.box([t.PLATFORM_SIDE, t.PLATFORM_THICKNESS, t.PLATFORM_SIDE]), 0, [0, -t.PLATFORM_THICKNESS / 2, 0], { friction });
+  return plateStack(world, (height) => world.body(world.box([t.PLATE_WIDTH, t.PLATE_THICKNESS, t.PLATE_WIDTH]), t.PLATE_MASS,
+    [0, height, 0], { friction }));
 }
 
 function stack(Jolt, bigMass, options) {
@@ -213,13 +288,17 @@ function launch(Jolt, velocity, options) {
 
 function settingText(options) {
   const best = options.setting === 'best';
-  let text = 'jolt.Step(h, 1), speed caps raised to 1e9, sleeping off, convex radius 0.05 m or the smallest half extent; ';
+  let text = `jolt.Step(h, 1), speed caps raised to 1e9, ${options.scene === 'test3' ? '' : 'sleeping off, '}convex radius 0.05 m or the smallest half extent; `;
   text += best ? 'damping 0, 50 velocity / 10 position iterations, restitution at any speed'
     : "Jolt's defaults (damping 0.05 linear and angular, 10 velocity / 2 position iterations, no restitution below 1 m/s)";
   if (options.scene === 'test9') text += '; restitution 1.0 on both bodies (maximum: 1.0), ground a plane';
   if (options.scene === 'test1') text += "; each ball's restitution, the ground's 0 (maximum: the ball's), ground a plane";
+  if (options.scene === 'test5') text += '; friction 100 on every body (test5\'s never-sliding contacts)';
+  if (options.scene === 'test3') text += '; friction 1.0, sleeping on (point velocity 0.1 m/s for 0.5 s), ground a plane';
+  if (options.scene === 'test6') text += '; friction 100 on every body (test6\'s never-sliding contacts)';
+  if (options.scene === 'test7') text += '; point constraints (ball joints), friction 100 on every body, ground a plane';
   if (options.scene === 'test10') text += options.ccd || best ? '; cube swept (motion quality LinearCast)' : '; cube not swept (Discrete)';
   return text;
 }
 
-module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };
+module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

@@ -20,6 +20,12 @@ function measure(engine, lib, options, metrics) {
       return m.measureEnergy(engine.pendulum(lib, scene.test2.BOB_MASS, options), options, metrics);
     case 'test8':
       return m.measureElongation(engine.pendulum(lib, options.bobMass || scene.test8.HEAVY_BOB_MASS, options), options, metrics);
+    case 'test5':
+      return m.measurePlates(engine.plateStack(lib, options), options, metrics);
+    case 'test3':
+      return m.measureChain(engine.dominoes(lib, options), options, metrics);
+    case 'test7':
+      return m.measureJoints(engine.hangingPair(lib, options), options, metrics);
     case 'test9':
       return m.measureBounces(engine.ball(lib, options), options, metrics);
     case 'test4': {

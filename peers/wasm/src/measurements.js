@@ -3,6 +3,7 @@
 // web peers: each runs one scene on an engine's model and sets the metrics
 // the ODE program of that scene writes (same names, same definitions).
 // checks/ runs both on the same recorded trajectories (peers/wasm/parity).
+const { performance } = require('perf_hooks');
 const { scene, SURFACE_GRAVITY } = require('./constants');
 const { ApexTracker } = require('./apex');
 // test10's scan steps, VelocityScan's own (tests/shared/VelocityScan.h).
@@ -15,7 +16,8 @@ const lround = (x) => Math.sign(x) * Math.round(Math.abs(x));
 
 function defaultSeconds(name) {
   return { test1: scene.test1.RUN_SECONDS, test2: scene.test2.RUN_SECONDS, test8: scene.test8.RUN_SECONDS, test9: scene.test9.RUN_SECONDS,
-    test4: scene.test4.RUN_SECONDS, test6: scene.test6.DEFAULT_SECONDS }[name] ?? 0;
+    test4: scene.test4.RUN_SECONDS, test3: scene.test3.RUN_SECONDS, test5: scene.test5.RUN_SECONDS, test6: scene.test6.DEFAULT_SECONDS,
+    test7: scene.test7.DEFAULT_THROWS * scene.test7.DEFAULT_THROW_INTERVAL }[name] ?? 0;
 }
 
 function stepsFor(options) {
@@ -214,4 +216,165 @@ function measureWall(makeLaunch, options, metrics) {
   return tally;
 }
 
-module.exports = { measureEnergy, measureElongation, measureBounces, measureHold, measureWall, defaultSeconds, stepsFor };
+// The mean cost per step over the last `window` simulated seconds
+// (tests/shared/StepCostWindow.h).
+class StepCostWindow {
+  constructor(window) {
+    this.window = window;
+    this.samples = [];
+    this.sum = 0;
+  }
+  add(time, seconds) {
+    this.samples.push([time, seconds]);
+    this.sum += seconds;
+    while (this.samples.length && this.samples[0][0] <= time - this.window) this.sum -= this.samples.shift()[1];
+  }
+  meanMilliseconds() {
+    return this.samples.length ? (1000 * this.sum) / this.samples.length : 0;
+  }
+}
+
+// test5: plates dropped every spawn interval (6 m up, or 1 m above the stack
+// once it nears that, and clear of plates still falling) until the plate
+// count is reached; a plate has landed once older than LANDING_MIN_AGE and
+// slower than LANDED_SPEED (peers/Measurements.cpp's measurePlates).
+// `stack`: {step(), dropPlate(height), count(), plateCentre(i), plateSpeed(i), plateYawDegrees(i)}.
+function measurePlates(stack, options, metrics) {
+  const t = scene.test5;
+  const limit = options.plates || t.DEFAULT_PLATES;
+  const interval = options.spawnInterval || t.DEFAULT_SPAWN_INTERVAL;
+  const bornAt = [], landed = [];
+  let firstInAir = 0, nextSpawn = 0;
+  const wallCost = new StepCostWindow(t.COST_WINDOW), cpuCost = new StepCostWindow(t.COST_WINDOW);
+  const stackHeight = () => {
+    let top = 0;
+    for (let i = 0; i < stack.count(); ++i) if (landed[i]) top = Math.max(top, stack.plateCentre(i)[1] + t.PLATE_THICKNESS / 2);
+    return top;
+  };
+  const tally = { steps: 0, finite: true };
+  let lastCpu = process.cpuUsage();
+  for (let n = stepsFor(options); tally.steps < n;) {
+    const before = performance.now();
+    stack.step();
+    const wall = (performance.now() - before) / 1000;
+    ++tally.steps;
+    const time = tally.steps * options.step;
+    const cpu = process.cpuUsage(lastCpu);
+    lastCpu = process.cpuUsage();
+    wallCost.add(time, wall);
+    cpuCost.add(time, (cpu.user + cpu.system) / 1e6);
+    for (let i = firstInAir; i < landed.length; ++i)
+      if (!landed[i] && time - bornAt[i] >= t.LANDING_MIN_AGE && stack.plateSpeed(i) <= t.LANDED_SPEED) landed[i] = true;
+    while (firstInAir < landed.length && landed[firstInAir]) ++firstInAir;
+    if (stack.count() < limit && time >= nextSpawn) {
+      let height = Math.max(t.SPAWN_HEIGHT, stackHeight() + t.SPAWN_ABOVE_STACK);
+      for (let i = 0; i < stack.count(); ++i) if (!landed[i]) height = Math.max(height, stack.plateCentre(i)[1] + t.MIN_SPAWN_SEPARATION);
+      stack.dropPlate(height);
+      bornAt.push(time);
+      landed.push(false);
+      nextSpawn += interval;
+    }
+    let finiteNow = true;
+    for (let i = 0; i < stack.count(); ++i) finiteNow = finiteNow && finite(stack.plateCentre(i));
+    if (!finiteNow) {
+      tally.finite = false;
+      break;
+    }
+  }
+  let offset = 0, twist = 0;
+  for (let i = 0; i < stack.count(); ++i) {
+    const p = stack.plateCentre(i);
+    offset = Math.max(offset, Math.hypot(p[0], p[2]));
+    const yaw = Math.abs(stack.plateYawDegrees(i)) % 90;  // square plates: 0 to 45 degrees
+    twist = Math.max(twist, Math.min(yaw, 90 - yaw));
+  }
+  metrics.set('plates', stack.count());
+  metrics.set('landed_plates', landed.filter(Boolean).length);
+  metrics.set('ms_per_step', wallCost.meanMilliseconds());
+  metrics.set('cpu_ms_per_step', cpuCost.meanMilliseconds());
+  metrics.set('max_axis_offset', offset);
+  metrics.set('stack_height', stackHeight());
+  metrics.set('plate_thickness_m', t.PLATE_THICKNESS);
+  metrics.set('max_twist_degrees', twist);
+  metrics.set('plates_frozen_in_air', 0);  // sleeping is off: nothing freezes
+  metrics.set('auto_disable', 0);
+  metrics.set('threads', 1);
+  return tally;
+}
+
+// test3: whether the chain completes (every domino past FALLEN_TILT_DEGREES),
+// when the last one fell, and how many bodies are awake at the end.
+// `chain`: {step(), count, tiltDegrees(i), activeBodies(), sleeps}.
+function measureChain(chain, options, metrics) {
+  const { FALLEN_TILT_DEGREES } = scene.test3;
+  const fellAt = new Array(chain.count).fill(-1);
+  const tally = { steps: 0, finite: true };
+  for (let n = stepsFor(options); tally.steps < n;) {
+    chain.step();
+    ++tally.steps;
+    for (let i = 0; i < chain.count; ++i) {
+      const tilt = chain.tiltDegrees(i);
+      if (!Number.isFinite(tilt)) tally.finite = false;
+      if (fellAt[i] < 0 && tilt > FALLEN_TILT_DEGREES) fellAt[i] = tally.steps * options.step;
+    }
+    if (!tally.finite) break;
+  }
+  let fallen = 0, last = 0, leastTilt = 180;
+  for (let i = 0; i < chain.count; ++i) {
+    if (fellAt[i] < 0) continue;
+    ++fallen;
+    last = Math.max(last, fellAt[i]);
+    leastTilt = Math.min(leastTilt, chain.tiltDegrees(i));
+  }
+  metrics.set('dominoes', chain.count);
+  metrics.set('fallen_fraction', chain.count ? fallen / chain.count : 0);
+  metrics.set('chain_seconds', last);
+  metrics.set('active_bodies', chain.activeBodies());
+  metrics.set('auto_disable', chain.sleeps ? 1 : 0);
+  metrics.set('min_fallen_tilt_degrees', fallen ? leastTilt : 0);
+  return tally;
+}
+
+// The test cube is past the pivot, level with it: beyond the pivot's far
+// face in x while its outline overlaps the pivot's in y and z. A cube thrown
+// at the pivot gets there only through it (a contact too soft to stop it).
+function beyondPivot(pivot, cube) {
+  const { PIVOT_SIDE, TEST_CUBE_SIDE } = scene.test7;
+  const touching = (PIVOT_SIDE + TEST_CUBE_SIDE) / 2;
+  return cube[0] - pivot[0] > touching && Math.abs(cube[1] - pivot[1]) < touching && Math.abs(cube[2] - pivot[2]) < touching;
+}
+
+// test7: the largest ball-joint error and the pivot's largest spin while the
+// test cube is thrown at 0, S, 2S, ... (test7's headless run).
+// `pair`: {step(), throwCube(), jointError(), pivotAngularSpeed(), pivotCentre(), testCubeCentre()},
+// built with the first throw made.
+function measureJoints(pair, options, metrics) {
+  const { DEFAULT_THROWS, DEFAULT_THROW_INTERVAL } = scene.test7;
+  const throwEvery = lround(DEFAULT_THROW_INTERVAL / options.step);
+  let throws = 1, maxError = 0, maxSpin = 0, passed = false;
+  const tally = { steps: 0, finite: true };
+  for (let i = 0, n = stepsFor(options); i < n; ++i) {
+    if (i > 0 && i % throwEvery === 0 && throws < DEFAULT_THROWS) {
+      pair.throwCube();
+      ++throws;
+    }
+    pair.step();
+    const error = pair.jointError(), spin = pair.pivotAngularSpeed();
+    if (!Number.isFinite(error) || !Number.isFinite(spin)) {
+      tally.finite = false;
+      break;
+    }
+    ++tally.steps;
+    maxError = Math.max(maxError, error);
+    maxSpin = Math.max(maxSpin, spin);
+    passed = passed || beyondPivot(pair.pivotCentre(), pair.testCubeCentre());
+  }
+  metrics.set('max_joint_error', maxError);
+  metrics.set('max_angular_speed', maxSpin);
+  metrics.set('max_angular_speed_limit', 0);  // no peer caps the spin (test7's --max-angular-speed 0)
+  metrics.set('throws', throws);
+  metrics.set('cube_passed_pivot', passed ? 1 : 0);
+  return tally;
+}
+
+module.exports = { measurePlates, measureChain, measureJoints, measureEnergy, measureElongation, measureBounces, measureHold, measureWall, defaultSeconds, stepsFor };

@@ -15,7 +15,7 @@
 // a soft-CCD prediction of twice its travel in a step: the swept CCD alone
 // does not stop it at a thin static wall, the predictive contact does.
 const { scene, SURFACE_GRAVITY } = require('./constants');
-const { pendulumMass, kineticEnergy, stackReadout, uprightReadout } = require('./rigs');
+const { plateStack, dominoStarts, tiltDegrees, pendulumMass, kineticEnergy, stackReadout, uprightReadout, throwState, hangingPairReadout } = require('./rigs');
 const { ballLayout } = require('./rebound');
 
 const BEST_ITERATIONS = 50;
@@ -46,7 +46,7 @@ class World {
   }
   // mass 0: fixed. `mass` {mass, inertia, centre} sets the body's mass
   // properties and makes its colliders massless; a number gives the collider that mass.
-  body(colliders, mass, position, { restitution, combine, configure } = {}) {
+  body(colliders, mass, position, { restitution, combine, friction, configure } = {}) {
     const R = this.R;
     let desc = (mass ? R.RigidBodyDesc.dynamic() : R.RigidBodyDesc.fixed())
       .setTranslation(...position).setCanSleep(false);
@@ -63,6 +63,7 @@ class World {
       else if (mass) c = c.setDensity(0);
       if (restitution !== undefined) c = c.setRestitution(restitution);
       if (combine !== undefined) c = c.setRestitutionCombineRule(combine);
+      if (friction !== undefined) c = c.setFriction(friction);
       this.world.createCollider(c, body);
     }
     return body;
@@ -133,14 +134,15 @@ function balls(R, options) {
 }
 
 // test6: the 5000 kg cube on a spherical impulse joint 2 m above the 1 kg
-// cube resting on the ground cuboid.
+// cube resting on the ground cuboid, every collider with test6's no-slip friction.
 function axisSystem(R, options) {
   const t = scene.test6;
   const world = new World(R, SURFACE_GRAVITY, options);
-  world.ground();
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body([[R.ColliderDesc.cuboid(GROUND_SIZE / 2, 5, GROUND_SIZE / 2)]], 0, [0, -5, 0], { friction });
   const cube = (side) => R.ColliderDesc.cuboid(side / 2, side / 2, side / 2);
-  const small = world.body([[cube(t.SMALL_SIDE)]], t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0]);
-  const big = world.body([[cube(t.BIG_SIDE)]], t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0]);
+  const small = world.body([[cube(t.SMALL_SIDE)]], t.SMALL_MASS, [0, t.SMALL_SIDE / 2, 0], { friction });
+  const big = world.body([[cube(t.BIG_SIDE)]], t.BIG_MASS, [0, t.ANCHOR_HEIGHT + t.BIG_SIDE / 2, 0], { friction });
   const joint = R.JointData.spherical({ x: 0, y: t.ANCHOR_HEIGHT - t.SMALL_SIDE / 2, z: 0 }, { x: 0, y: -t.BIG_SIDE / 2, z: 0 });
   world.world.createImpulseJoint(joint, small, big, true);
   const rotation = (b) => {
@@ -148,6 +150,80 @@ function axisSystem(R, options) {
     return [q.x, q.y, q.z, q.w];
   };
   return uprightReadout({ step: () => world.step(), position: (b) => vec(b.translation()), rotation }, small, big);
+}
+
+// test7: the pivot on a spherical impulse joint to a fixed body at the
+// anchor, the big cube on another to the pivot (contacts between the joined
+// bodies off, as in the ODE programs), the test cube thrown at the pivot;
+// every collider with test7's no-slip friction (Rapier averages: 100).
+function hangingPair(R, options) {
+  const t = scene.test7;
+  const world = new World(R, SURFACE_GRAVITY, options);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  const cube = (side) => R.ColliderDesc.cuboid(side / 2, side / 2, side / 2);
+  world.body([[R.ColliderDesc.cuboid(GROUND_SIZE / 2, 5, GROUND_SIZE / 2)]], 0, [0, -5, 0], { friction });
+  const pivot = world.body([[cube(t.PIVOT_SIDE)]], t.PIVOT_MASS, [0, t.PIVOT_CENTRE_Y, 0], { friction });
+  const big = world.body([[cube(t.BIG_SIDE)]], t.BIG_MASS, [0, t.BIG_CENTRE_Y, 0], { friction });
+  const thrown = world.body([[cube(t.TEST_CUBE_SIDE)]], t.TEST_CUBE_MASS, throwState().position, { friction });
+  const anchor = world.body([], 0, [0, t.ANCHOR_HEIGHT, 0]);
+  const joint = (a, b, inA, inB) => world.world.createImpulseJoint(R.JointData.spherical(
+    { x: inA[0], y: inA[1], z: inA[2] }, { x: inB[0], y: inB[1], z: inB[2] }), a, b, true).setContactsEnabled(false);
+  joint(anchor, pivot, [0, 0, 0], [0, t.PIVOT_SIDE / 2, 0]);
+  joint(pivot, big, [0, -t.PIVOT_SIDE / 2, 0], [0, t.BIG_SIDE / 2, 0]);
+  const throwCube = () => {
+    const { position, velocity } = throwState();
+    thrown.setTranslation({ x: position[0], y: position[1], z: position[2] }, true);
+    thrown.setRotation({ x: 0, y: 0, z: 0, w: 1 }, true);
+    thrown.setLinvel({ x: velocity[0], y: velocity[1], z: velocity[2] }, true);
+    thrown.setAngvel({ x: 0, y: 0, z: 0 }, true);
+  };
+  throwCube();
+  const rotation = (b) => {
+    const q = b.rotation();
+    return [q.x, q.y, q.z, q.w];
+  };
+  return hangingPairReadout({ step: () => world.step(), position: (b) => vec(b.translation()), rotation,
+    spin: (b) => vec(b.angvel()) }, pivot, big, thrown, throwCube);
+}
+
+// test3: the domino spiral, friction 1.0 (average: 1.0), Rapier's own
+// sleeping on (its thresholds are not exposed in the JS API).
+function dominoes(R, options) {
+  const t = scene.test3;
+  const world = new World(R, SURFACE_GRAVITY, options);
+  const friction = t.DEFAULT_MU;
+  world.body([[R.ColliderDesc.cuboid(GROUND_SIZE / 2, 5, GROUND_SIZE / 2)]], 0, [0, -5, 0], { friction });
+  const bodies = dominoStarts(t.DEFAULT_DOMINOES).map((d) => world.body(
+    [[R.ColliderDesc.cuboid(t.DOMINO_THICKNESS / 2, t.DOMINO_HEIGHT / 2, t.DOMINO_WIDTH / 2)]], t.DOMINO_MASS, d.centre, {
+      friction,
+      configure: (desc) => desc.setCanSleep(true)
+        .setRotation({ x: d.rotation[0], y: d.rotation[1], z: d.rotation[2], w: d.rotation[3] })
+        .setLinvel(...d.velocity).setAngvel({ x: d.spin[0], y: d.spin[1], z: d.spin[2] }),
+    }));
+  return {
+    step: () => world.step(), count: bodies.length, sleeps: true,
+    tiltDegrees: (i) => {
+      const q = bodies[i].rotation();
+      return tiltDegrees([q.x, q.y, q.z, q.w]);
+    },
+    activeBodies: () => bodies.filter((b) => !b.isSleeping()).length,
+  };
+}
+
+// test5: plates dropped onto the platform, every collider with test5's no-slip friction.
+function plates(R, options) {
+  const t = scene.test5;
+  const world = new World(R, SURFACE_GRAVITY, options);
+  const friction = scene.top.NO_SLIP_FRICTION;
+  world.body([[R.ColliderDesc.cuboid(t.PLATFORM_SIDE / 2, t.PLATFORM_THICKNESS / 2, t.PLATFORM_SIDE / 2)]], 0,
+    [0, -t.PLATFORM_THICKNESS / 2, 0], { friction });
+  const rotation = (b) => {
+    const q = b.rotation();
+    return [q.x, q.y, q.z, q.w];
+  };
+  return plateStack({ step: () => world.step(), position: (b) => vec(b.translation()), rotation, velocity: (b) => vec(b.linvel()) },
+    (height) => world.body([[R.ColliderDesc.cuboid(t.PLATE_WIDTH / 2, t.PLATE_THICKNESS / 2, t.PLATE_WIDTH / 2)]], t.PLATE_MASS,
+      [0, height, 0], { friction }));
 }
 
 function stack(R, bigMass, options) {
@@ -188,11 +264,15 @@ function launch(R, velocity, options) {
 
 function settingText(options) {
   const best = options.setting === 'best';
-  let text = 'world.step() with timestep h, sleeping off, no damping; ';
+  let text = `world.step() with timestep h, ${options.scene === 'test3' ? '' : 'sleeping off, '}no damping; `;
   text += best && options.scene !== 'test2' ? '50 solver iterations' : "Rapier's defaults (4 solver iterations)";
   if (options.scene === 'test2' || options.scene === 'test8') text += ', impulse revolute joint';
   if (options.scene === 'test9') text += '; restitution 1.0 on both colliders (average: 1.0), ground a 200 m cuboid';
   if (options.scene === 'test1') text += "; each ball's restitution combined by maximum with the ground's 0, ground a 200 m cuboid";
+  if (options.scene === 'test5') text += '; friction 100 on every collider (test5\'s never-sliding contacts)';
+  if (options.scene === 'test3') text += "; friction 1.0, Rapier's own sleeping (thresholds not exposed), ground a 200 m cuboid";
+  if (options.scene === 'test6') text += '; friction 100 on every collider (test6\'s never-sliding contacts)';
+  if (options.scene === 'test7') text += '; spherical impulse joints, friction 100 on every collider, ground a 200 m cuboid';
   if (options.scene === 'test10') {
     text += '; lengthUnit 1000 with the length tolerances divided by 1000 (speed cap 400 km/s)';
     text += options.ccd || best ? '; cube: CCD on, soft-CCD prediction 2 v h' : '; no CCD';
@@ -200,4 +280,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, balls, axisSystem, pendulum, ball, stack, launch };
+module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

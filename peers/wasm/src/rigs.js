@@ -2,7 +2,7 @@
 // What every web peer builds the same way: the composite pendulum's mass
 // properties (as peers/bullet_lab.cpp works them out), and the kinetic energy
 // and tilt of a body from its velocity, spin and orientation.
-const { scene } = require('./constants');
+const { scene, SURFACE_GRAVITY } = require('./constants');
 
 // The rod and the bob as one body: its mass, the anchor-to-centre distance
 // along +x and the principal moments about the centre (x along the rod).
@@ -92,4 +92,97 @@ function launchedCube(world, cube) {
   };
 }
 
-module.exports = { pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube };
+// test7's throw (tests/scenes/test7's throwTestCube): from THROW_DISTANCE
+// before the pivot, level with it, unturned, aimed up by a with
+// sin 2a = g d / v^2 so that its arc comes back to that level at the pivot.
+function throwState() {
+  const t = scene.test7;
+  const a = 0.5 * Math.asin((SURFACE_GRAVITY * t.THROW_DISTANCE) / t.THROW_SPEED ** 2);
+  return { position: [-t.THROW_DISTANCE, t.PIVOT_CENTRE_Y, 0],
+    velocity: [t.THROW_SPEED * Math.cos(a), t.THROW_SPEED * Math.sin(a), 0] };
+}
+
+// The point at height y on a body's local y axis, in world coordinates.
+function pointOnY(position, q, y) {
+  const [x, qy, z, w] = q;
+  const column = [2 * (x * qy - w * z), 1 - 2 * (x * x + z * z), 2 * (qy * z + w * x)];
+  return position.map((p, i) => p + y * column[i]);
+}
+
+// test7's readout: each ball joint's error (where the two joined bodies, or
+// the fixed point, hold its anchor), the larger of the two, and the pivot's spin.
+// `world`: {step(), position(body), rotation(body), spin(body)}; `throwCube()`: the engine's.
+function hangingPairReadout(world, pivot, big, cube, throwCube) {
+  const t = scene.test7;
+  const on = (body, y) => pointOnY(world.position(body), world.rotation(body), y);
+  const gap = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+  return {
+    step: () => world.step(),
+    throwCube,
+    jointError: () => Math.max(gap(on(pivot, t.PIVOT_SIDE / 2), [0, t.ANCHOR_HEIGHT, 0]),
+      gap(on(pivot, -t.PIVOT_SIDE / 2), on(big, t.BIG_SIDE / 2))),
+    pivotAngularSpeed: () => Math.hypot(...world.spin(pivot)),
+    pivotCentre: () => world.position(pivot),
+    testCubeCentre: () => world.position(cube),
+  };
+}
+
+// test3's dominoes as peers/Test3Scene.h builds them (the C++ peers' copy
+// of test3's placements): centre, orientation [x, y, z, w], and the first
+// one's push (velocity and spin). The same-scene check holds both to test3.
+function dominoStarts(count) {
+  const t = scene.test3;
+  const starts = [];
+  const growth = t.SPIRAL_PITCH / (2 * Math.PI);
+  let angle = 0;
+  for (let i = 0; i < count; ++i) {
+    const r = t.SPIRAL_START_RADIUS + growth * angle;
+    const c = Math.cos(angle), s = Math.sin(angle);
+    const dx = growth * c - r * s, dz = growth * s + r * c, length = Math.hypot(dx, dz);
+    const tx = dx / length, tz = dz / length;
+    angle += t.DOMINO_SPACING / length;
+    const yaw = Math.atan2(-tz, tx) / 2, lean = ((i === 0 ? t.FIRST_TILT_DEGREES : 0) * Math.PI) / 360;
+    const a = [Math.cos(lean), tz * Math.sin(lean), 0, -tx * Math.sin(lean)];  // w, x, y, z
+    const b = [Math.cos(yaw), 0, Math.sin(yaw), 0];
+    const w = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+    const x = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+    const y = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+    const z = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+    const q = [x, y, z, w];
+    const pivot = [r * c + (tx * t.DOMINO_THICKNESS) / 2, 0, r * s + (tz * t.DOMINO_THICKNESS) / 2];
+    const arm = toBody([-x, -y, -z, w], [-t.DOMINO_THICKNESS / 2, t.DOMINO_HEIGHT / 2, 0]);  // q arm q^-1
+    const start = { centre: [pivot[0] + arm[0], arm[1], pivot[2] + arm[2]], rotation: q, velocity: [0, 0, 0], spin: [0, 0, 0] };
+    if (i === 0) {
+      const o = [t.FIRST_PUSH * tz, 0, -t.FIRST_PUSH * tx];
+      start.spin = o;
+      start.velocity = [o[1] * arm[2] - o[2] * arm[1], o[2] * arm[0] - o[0] * arm[2], o[0] * arm[1] - o[1] * arm[0]];
+    }
+    starts.push(start);
+  }
+  return starts;
+}
+
+// How far a body's local x axis is turned about the vertical, in degrees
+// (test5's twist, from an orientation [x, y, z, w]).
+function yawDegrees(q) {
+  const [x, y, z, w] = q;
+  return (Math.atan2(-2 * (x * z - w * y), 1 - 2 * (y * y + z * z)) * 180) / Math.PI;
+}
+
+// test5's plates as the measurement reads them, for an engine that makes a
+// plate with `makePlate(height)` -> body and reads it back through `world`:
+// {step(), position(body), rotation(body), velocity(body)}.
+function plateStack(world, makePlate) {
+  const plates = [];
+  return {
+    step: () => world.step(),
+    dropPlate: (height) => plates.push(makePlate(height)),
+    count: () => plates.length,
+    plateCentre: (i) => world.position(plates[i]),
+    plateSpeed: (i) => Math.hypot(...world.velocity(plates[i])),
+    plateYawDegrees: (i) => yawDegrees(world.rotation(plates[i])),
+  };
+}
+
+module.exports = { plateStack, dominoStarts, pendulumMass, kineticEnergy, tiltDegrees, stackReadout, uprightReadout, launchedCube, throwState,
+  hangingPairReadout };
