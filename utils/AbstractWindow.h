@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "AbstractObject.h"
+#include "BodyStateWatch.h"
 #include "Camera.h"
 #include "ContactChoices.h"
 #include "DebugMarkers.h"
@@ -273,6 +274,7 @@ class AbstractWindow {
   std::vector<Knob*> panelKnobs_;  // parameters_'s rows, in order
   RunLog runLog_;
   std::vector<std::unique_ptr<AbstractObject>> objects_;
+  BodyStateWatch watch_;  // stateSuspicious()'s view of the bodies
   std::mt19937 random_;
 
   dWorldID world_ = nullptr;
@@ -289,6 +291,7 @@ class AbstractWindow {
   double collideWallSeconds_ = 0.0;
   bool profileCollision_ = false;
   bool timeSteps_ = false;
+  bool unattended_ = false;  // inside runFor(): no input, rewind or plot, so stepOnce() skips them
   double wallSeconds_ = 0.0;  // real time spent in this run (headless) or its frames (window)
   std::string blowUpReason_;
   HudMode hudMode_ = HudMode::Compact;
