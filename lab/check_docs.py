@@ -29,7 +29,11 @@ and it is not
 A figure is held by a CSV when some number in a cell of a committed CSV
 (any `git ls-files '*.csv'`, numbers inside text cells included) rounds to
 it at the precision the doc writes (a whole number's trailing zeros are
-not significant: 11900 is held by 11892). A number written as a literal in the
+not significant: 11900 is held by 11892). A short figure, of one or two significant digits (5, 0.2, 35 s, 4.4%),
+is matched by coincidence in some CSV more often than not, so it must be held
+by the page's own data: the CSVs the page names (a link, or a mention of
+`name.csv`) and, on a scene's page doc/tests/testN.md, the CSVs whose name
+holds testN and the rows of any CSV that name testN in a cell. A number written as a literal in the
 programs' committed C++ sources (`*.cpp`, `*.h`: gravity 9.823, a wall
 0.05 m thick) is a setting the code states, not a measurement, and passes
 the same way. Rounding: 0.064 is held by 0.06403 (|v - d| is at
@@ -39,7 +43,10 @@ fraction (17% by 0.1704). Signs are ignored.
 Documents named in lab/reference/docs-pending.txt (one path a line, each
 with its reason after a #) are still checked and their figures listed, but
 do not fail the check: a page whose owner has not yet moved its figures into
-a CSV. The list is meant to shrink to nothing.
+a CSV. A line `PATH short` holds back only the page's short figures from the
+page's own data (they must still be held by some CSV); a line `PATH "FIGURE"`
+(as written, with its unit: "366 s") exempts that one figure, a measurement
+too long to redo. The list is meant to shrink to nothing.
 
 Usage: check_docs.py [REPO_ROOT]   (exit 0: every figure held; 1: the
 figures held by no CSV, each with its file and line; 2: bad usage)"""
@@ -120,17 +127,61 @@ def numbers_in(text, values):
             values.add(value)
 
 
-def held_numbers(root):
-    """Every number in a cell of a committed CSV, and every literal of the
-    committed C++ sources, as sorted absolute values."""
-    values = set()
+def csv_rows(root):
+    """{committed CSV path: its rows (lists of cells)}."""
+    tables = {}
     for path in committed(root, "*.csv"):
         with open(path, newline="", errors="replace") as stream:
-            for row in csv.reader(line for line in stream if not line.startswith("#")):
-                for cell in row:
-                    numbers_in(cell.replace(",", ""), values)
+            tables[path] = list(csv.reader(line for line in stream if not line.startswith("#")))
+    return tables
+
+
+def code_numbers(root):
+    """Every literal of the committed C++ sources (settings the code states)."""
+    values = set()
     for path in committed(root, "*.cpp", "*.h", "*.hpp"):
         numbers_in(re.sub(r"(?<=\d)[fF]\b", "", path.read_text(errors="replace")), values)
+    return values
+
+
+def row_numbers(rows, values):
+    for row in rows:
+        for cell in row:
+            numbers_in(cell.replace(",", ""), values)
+    return values
+
+
+def held_numbers(root, tables=None, code=None):
+    """Every number in a cell of a committed CSV, and every literal of the
+    committed C++ sources, as sorted absolute values."""
+    values = set(code_numbers(root) if code is None else code)
+    for rows in (csv_rows(root) if tables is None else tables).values():
+        row_numbers(rows, values)
+    return sorted(values)
+
+
+def significant_digits(written):
+    """1 for 5, 0.2, 500 or 5e-3; 2 for 35, 0.064 or 4.4%; 3 for 11900."""
+    mantissa = written.replace(",", "").lstrip("-").lower().rstrip("%").strip().partition("e")[0]
+    digits = mantissa.replace(".", "").lstrip("0")
+    return len(digits if "." in mantissa else digits.rstrip("0")) or 1
+
+
+SHORT = 2  # significant digits at most: a short figure, held by the page's own data only
+
+
+def own_numbers(doc, text, tables, code):
+    """The numbers a page's short figures may come from: the CSVs it names,
+    its scene's CSVs and rows (doc/tests/testN.md), the C++ literals."""
+    values = set(code)
+    named = set(re.findall(r"([\w.-]+\.csv)\b", text))
+    scene = re.fullmatch(r"(test\d+)\.md", doc.name) if doc.parent.name == "tests" else None
+    mention = re.compile(rf"(?<![a-z0-9]){scene.group(1)}(?![0-9])") if scene else None
+    for path, rows in tables.items():
+        if path.name in named or (mention and mention.search(path.stem)):
+            row_numbers(rows, values)
+        elif mention:
+            row_numbers([row for row in rows if any(mention.search(cell) for cell in row)], values)
     return sorted(values)
 
 
@@ -151,30 +202,58 @@ def held(values, target, tolerance):
 
 
 def pending(root):
+    """{path: what of it is pending}: "page" (the whole page), "short" (its
+    short figures' scope), or a set of figures as written ("366 s")."""
     path = root / "lab" / "reference" / "docs-pending.txt"
+    waiting = {}
     if not path.exists():
-        return set()
-    return {line.split("#")[0].strip() for line in path.read_text().splitlines() if line.split("#")[0].strip()}
+        return waiting
+    for line in path.read_text().splitlines():
+        entry = line.split("#")[0].strip()
+        if not entry:
+            continue
+        name, _, rest = entry.partition(" ")
+        rest = rest.strip()
+        if not rest:
+            waiting[name] = "page"
+        elif rest == "short":
+            waiting.setdefault(name, set()).add("short")
+        else:
+            waiting.setdefault(name, set()).add(rest.strip('"'))
+    return waiting
+
+
+def is_held(values, value, written, unit):
+    tolerance = half_unit(written.rstrip("%").strip())
+    return held(values, abs(value), tolerance) or (unit == "%" and held(values, abs(value) / 100, tolerance / 100))
 
 
 def check(root):
-    values = held_numbers(root)
+    tables, code = csv_rows(root), code_numbers(root)
+    values = held_numbers(root, tables, code)
     waiting = pending(root)
     docs = [root / "README.md"] + sorted(p for p in (root / "doc").rglob("*.md") if "results" not in p.parts)
     problems, counted = [], 0
     for doc in docs:
         if not doc.exists():
             continue
-        for line, written, value, unit in figures(doc.read_text(errors="replace")):
+        text = doc.read_text(errors="replace")
+        name = str(doc.relative_to(root))
+        exempt = waiting.get(name, set())
+        own = None
+        for line, written, value, unit in figures(text):
             counted += 1
-            tolerance = half_unit(written.rstrip("%").strip())
-            ok = held(values, abs(value), tolerance)
-            if not ok and unit == "%":
-                ok = held(values, abs(value) / 100, tolerance / 100)
-            if not ok:
-                name = str(doc.relative_to(root))
-                problems.append((name in waiting, f"{name}:{line}: {written}{'' if unit in ('', '%') else ' ' + unit} "
-                                                  f"is held by no committed CSV"))
+            shown = f"{written}{'' if unit in ('', '%') else ' ' + unit}"
+            if not is_held(values, value, written, unit):
+                problems.append((exempt == "page" or shown in exempt, f"{name}:{line}: {shown} is held by no committed CSV"))
+                continue
+            if significant_digits(written) > SHORT:
+                continue
+            own = own_numbers(doc, text, tables, code) if own is None else own
+            if not is_held(own, value, written, unit):
+                problems.append((exempt == "page" or "short" in exempt or shown in exempt,
+                                 f"{name}:{line}: {shown} (short) is held by no CSV of this page "
+                                 f"(named in it, or of its scene), only by others'"))
     return problems, counted, len(docs)
 
 

@@ -14,7 +14,13 @@
 - the table at the top ("At a glance") has its seven columns and a row per
   scene, test0 to test10; every sentence in claims.csv, recomputed from the
   folder's CSVs by its lookups, gives the same text and its rule holds; each
-  row's figure cell is its claim's text (or says the data are absent).
+  row's figure cell is its claim's text (or says the data are absent);
+- every other sentence in claims.csv (headline findings, sections'
+  conclusions) stands in RESULTS.md where claims.csv says, and every headline
+  finding is such a sentence (but those of the experiments in UNCLAIMED,
+  whose sentences are not claims yet). A claims.csv without the `place`
+  column comes from a report made before sentences outside the first table
+  were claims: its claims are all the first table's.
 
 Usage: check_report.py REPORT_DIR   (exit 0: all good; 1: problems, listed)"""
 
@@ -34,6 +40,10 @@ FIRST_COLUMNS = ["scene", "measured quantity (definition)", "ODE at the thesis's
                  "best other engine at step 0.001"]
 SCENES = [f"test{n}" for n in range(11)]
 ABSENT = "not in this report"
+FIRST_TABLE, HEADLINE = "first table", "headline"
+# Headline findings still made as plain text, by their first word: the
+# engines experiment (peers.py) writes its own verdicts.
+UNCLAIMED = ("peers ",)
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
@@ -117,6 +127,7 @@ def check_first_screen(folder, text):
     claims_path = folder / "claims.csv"
     claims = read_rows(claims_path) if claims_path.exists() else []
     problems += recheck(folder, claims)
+    claims = [row for row in claims if row.get("place", FIRST_TABLE) == FIRST_TABLE]
     shown = {row["key"]: row["text"] for row in claims}
     every_cell = {cell for row in body for cell in row}
     for row in claims:
@@ -126,6 +137,49 @@ def check_first_screen(folder, text):
         figure = [v for k, v in shown.items() if k.startswith(f"first.{row[0]}.figure")]
         if len(row) > 2 and row[2] != ABSENT and row[2] not in figure:
             problems.append(f"{row[0]}: the figure '{row[2]}' is no claim recomputed from the CSVs")
+    return problems
+
+
+def section_of(lines, is_heading):
+    """The lines under the first heading for which `is_heading` holds, to the next heading."""
+    start = next((i for i, line in enumerate(lines) if is_heading(line)), None)
+    if start is None:
+        return []
+    rest = lines[start + 1:]
+    end = next((i for i, line in enumerate(rest) if line.startswith(("## ", "### "))), len(rest))
+    return rest[:end]
+
+
+def headline_lines(lines):
+    return section_of(lines, lambda line: line == "## Headline findings")
+
+
+def experiment_lines(lines, name):
+    """The lines of the experiment `name`'s subsection (its heading names `--only name`)."""
+    return section_of(lines, lambda line: line.startswith("### ") and f"(`--only {name}`)" in line)
+
+
+def check_sentences(folder, text):
+    """The claims outside the first table: each where claims.csv places it,
+    and every headline finding one of them."""
+    path = folder / "claims.csv"
+    claims = read_rows(path) if path.exists() else []
+    if not claims or "place" not in claims[0]:
+        return []
+    lines = text.splitlines()
+    problems = []
+    headline = {row["text"] for row in claims if row["place"] == HEADLINE}
+    for line in headline_lines(lines):
+        finding = line[2:] if line.startswith("- ") else None
+        if finding and finding not in headline and not finding.startswith(UNCLAIMED):
+            problems.append(f"headline finding '{finding[:80]}...' is no claim recomputed from the CSVs")
+    for row in claims:
+        place = row["place"]
+        if place == FIRST_TABLE:
+            continue
+        where = headline_lines(lines) if place == HEADLINE else experiment_lines(lines, place)
+        if row["text"] not in "\n".join(where):
+            problems.append(f"claim {row['key']} ('{row['text'][:80]}') is not in RESULTS.md's {place}")
     return problems
 
 
@@ -145,6 +199,7 @@ def main(argv):
             problems.append("RESULTS.md: the run header is incomplete")
     if text:
         problems += [f"first table: {problem}" for problem in check_first_screen(folder, text)]
+        problems += check_sentences(folder, text)
     named = set(re.findall(r"\]\(([^)#]+\.(?:png|svg|csv))\)", text))
     for name in sorted(named):
         if not (folder / name).exists():

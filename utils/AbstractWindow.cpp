@@ -7,8 +7,6 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
-#include <limits>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -24,23 +22,15 @@ namespace {
 
 // The most contacts per pair --max-contacts allows (the array's size).
 constexpr int MAX_CONTACTS = ContactChoices::MOST_CONTACTS;
-constexpr double NOTICE_SECONDS = 4.0;
 // The live plot samples every hundredth of a simulated second. Contact
 // markers are capped so a huge pile cannot flood the renderer.
 constexpr double CHART_INTERVAL = 0.01;
 constexpr size_t MAX_CONTACT_MARKERS = 4096;
-// A blow-up that stays finite (runaway energy): no scene comes near these.
-// 1e8 m/s is ten times the fastest launch any scene allows (test10's
-// --velocity, at most 1e7 m/s); free fall at 1 g needs 118 days to reach it. There
-// is no bound on distance: a body that falls off a platform (test4, test5)
-// is 1e8 m down after 75 minutes, which a window session can last.
-constexpr double RUNAWAY_SPEED = 1e8;  // m/s
-constexpr double RUNAWAY_SPIN = 1e8;   // rad/s
 
 }  // namespace
 
 AbstractWindow::AbstractWindow(std::string title, WorldSettings defaults)
-    : title_(std::move(title)), settings_(defaults) {
+    : SceneSettings(defaults), title_(std::move(title)) {
   bindSharedKeys();
   bindTimeAndViewKeys();
 }
@@ -89,8 +79,7 @@ void AbstractWindow::replayTo(long long step) {
 
 void AbstractWindow::shutdown() {
   destroyWorld();
-  if (stepThreading_) dThreadingFreeImplementation(stepThreading_);
-  stepThreading_ = nullptr;
+  freeThreading();
 }
 
 void AbstractWindow::createWorld() {
@@ -122,16 +111,6 @@ void AbstractWindow::createWorld() {
   rewind_.worldRebuilt();
   configureWorld();
   buildScene();
-}
-
-void AbstractWindow::destroyWorld() {
-  objects_.clear();
-  if (contactGroup_) dJointGroupDestroy(contactGroup_);
-  if (space_) dSpaceDestroy(space_);
-  if (world_) dWorldDestroy(world_);
-  contactGroup_ = nullptr;
-  space_ = nullptr;
-  world_ = nullptr;
 }
 
 void AbstractWindow::setSpaceKind(SpaceKind kind) {
@@ -281,39 +260,6 @@ std::string AbstractWindow::momentAndSettings() const {
   return " at t=" + formatValue(simulatedTime_) + " s" + settingsInForce();
 }
 
-// " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations, SOR w 1.3)"
-std::string AbstractWindow::settingsInForce() const {
-  std::ostringstream text;
-  text << " (step " << formatValue(settings_.step) << ", ERP " << formatValue(settings_.erp) << ", CFM "
-       << formatValue(settings_.cfm) << ", solver " << solverName(settings_.solver) << ", " << settings_.iterations
-       << " iterations, SOR w " << formatValue(settings_.sor) << ")";
-  return text.str();
-}
-
-bool AbstractWindow::stateSuspicious() const {
-  // NaN fails every comparison, infinity the bounds: both land in stateProblem().
-  return watch_.suspicious(objects_, RUNAWAY_SPEED, RUNAWAY_SPIN);
-}
-
-std::string AbstractWindow::stateProblem() const {
-  auto length = [](const dReal* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
-  for (const auto& object : objects_) {
-    const dBodyID body = object->getBody();
-    if (!body) continue;
-    const dReal* position = dBodyGetPosition(body);
-    const dReal* velocity = dBodyGetLinearVel(body);
-    const dReal* spin = dBodyGetAngularVel(body);
-    for (const dReal* v : {position, velocity, spin})
-      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return "non-finite body state";
-    // Finite but absurd: energy has run away (no scene comes near these).
-    if (length(velocity) > RUNAWAY_SPEED)
-      return "runaway energy: a body moves at " + formatValue(length(velocity)) + " m/s";
-    if (length(spin) > RUNAWAY_SPIN)
-      return "runaway energy: a body spins at " + formatValue(length(spin)) + " rad/s";
-  }
-  return {};
-}
-
 void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) {
   profileCollision_ = true;  // only a window advances by frames
   wallSeconds_ += elapsedSeconds;
@@ -411,44 +357,6 @@ int AbstractWindow::stoppedBySignal() {
   return 128 + stopSignal();
 }
 
-std::uint64_t AbstractWindow::stateHash() const {
-  // FNV-1a over the exact bytes of every body's position, orientation and
-  // velocities, in creation order; cut to 52 bits so JSON's doubles hold it.
-  std::uint64_t hash = 1469598103934665603ull;
-  auto mix = [&hash](const dReal* values, int count) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values);
-    for (size_t i = 0; i < count * sizeof(dReal); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
-  };
-  for (const auto& object : objects_) {
-    const dBodyID body = object->getBody();
-    if (!body) continue;
-    mix(dBodyGetPosition(body), 3);
-    mix(dBodyGetQuaternion(body), 4);
-    mix(dBodyGetLinearVel(body), 3);
-    mix(dBodyGetAngularVel(body), 3);
-  }
-  return hash & ((1ull << 52) - 1);
-}
-
-namespace {
-// Distinct bodies: the geoms of a composite body share one.
-std::set<dBodyID> bodiesOf(const std::vector<std::unique_ptr<AbstractObject>>& objects) {
-  std::set<dBodyID> bodies;
-  for (const auto& object : objects)
-    if (const dBodyID body = object->getBody()) bodies.insert(body);
-  return bodies;
-}
-}  // namespace
-
-int AbstractWindow::bodyCount() const { return static_cast<int>(bodiesOf(objects_).size()); }
-
-int AbstractWindow::disabledBodyCount() const {
-  int count = 0;
-  for (const dBodyID body : bodiesOf(objects_))
-    if (!dBodyIsEnabled(body)) ++count;
-  return count;
-}
-
 Metrics AbstractWindow::metrics() const {
   Metrics m;
   m.set("steps", static_cast<double>(steps_));
@@ -489,12 +397,10 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
       {"test", title_},
       {"ode_version", dODE_VERSION},
       {"ode_precision", dCheckConfiguration("ODE_double_precision") ? "double" : "single"},
-      {"step_seconds", formatValue(settings_.step)},
-      {"erp", formatValue(settings_.erp)},
-      {"cfm", formatValue(settings_.cfm)},
-      {"solver", settings_.solver == Solver::QuickStep ? "quick (dWorldQuickStep)" : "step (dWorldStep)"},
-      {"iterations", std::to_string(settings_.iterations)},
-      {"sor_w", formatValue(settings_.sor)},
+  };
+  // Every setting of the table (SettingsTable.h), then what the table does not tune.
+  for (auto& setting : settingsHeader(settings_)) description.push_back(std::move(setting));
+  const std::vector<std::pair<std::string, std::string>> rest{
       {"gravity", formatValue(settings_.gravity)},
       {"space", spaceKindName(spaceKind_)},
       {"seed", std::to_string(options_.seed)},
@@ -504,6 +410,7 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
        : options_.headless  ? formatValue(defaultHeadlessSeconds())
                             : std::string("until the window is closed")},
   };
+  description.insert(description.end(), rest.begin(), rest.end());
   if (contactChoicesUsed_) {
     description.push_back({"contact_mu", ContactChoices::muText(contact_.mu)});
     description.push_back({"max_contacts_per_pair", std::to_string(contact_.contactLimit())});
@@ -519,23 +426,7 @@ void AbstractWindow::applySettings(const std::string& change) {
   onSettingChanged(change);
 }
 
-void AbstractWindow::notify(const std::string& message) {
-  std::cerr << message << '\n';
-  notice_ = message;
-  noticeUntil_ = time_.sessionWallSeconds() + NOTICE_SECONDS;
-}
-
-std::string AbstractWindow::notice() const {
-  return time_.sessionWallSeconds() < noticeUntil_ ? notice_ : std::string();
-}
-
 void AbstractWindow::initialCamera(Camera& camera) const { camera.lookAt({0, 6, 16}, {0, 1, 0}); }
-
-bool AbstractWindow::takeScreenshotRequest() {
-  const bool requested = screenshotRequested_;
-  screenshotRequested_ = false;
-  return requested;
-}
 
 std::string AbstractWindow::programName() const { return title_.substr(0, title_.find(' ')); }
 

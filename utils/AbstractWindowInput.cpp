@@ -54,6 +54,15 @@ void AbstractWindow::changeKnob(Knob& knob, double value, const std::string& sou
   onKnobChanged(knob);
 }
 
+namespace {
+// Setting keys log their own change (reportSetting); others their description.
+bool settingKey(SDL_Keycode key) {
+  for (const SettingSpec& spec : settingsTable())
+    if (spec.key == key) return true;
+  return key == SDLK_F2;
+}
+}  // namespace
+
 bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
   const KeyBinding* binding = keys_.find(key);
   if (!binding) return false;
@@ -79,11 +88,6 @@ bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
   return true;
 }
 
-bool AbstractWindow::settingKey(SDL_Keycode key) {
-  for (const SettingSpec& spec : settingsTable())
-    if (spec.key == key) return true;
-  return key == SDLK_F2;
-}
 
 void AbstractWindow::changeSetting(SettingId id, double value) {
   TimelineEvent event;
@@ -144,12 +148,6 @@ void AbstractWindow::logAction(const std::string& text) {
   if (!error.empty()) notify(error);
 }
 
-void AbstractWindow::bindSetting(const SettingSpec& spec) {
-  const SettingId id = spec.id;
-  bindKey(spec.key, spec.keyName, spec.keyHelp,
-          [this, id](int d) { reportSetting(stepSetting(settings_, id, d, stepper_)); });
-}
-
 void AbstractWindow::bindSharedKeys() {
   bindKey(SDLK_r, "R", "reset the scene to its initial state", [this](int) {
     // Named with the moment it left, as every change the run log records.
@@ -168,20 +166,19 @@ void AbstractWindow::bindSharedKeys() {
     logAction(change);
     applySettings(change);
   });
-  for (const SettingSpec& spec : settingsTable()) bindSetting(spec);
+  for (const SettingSpec& spec : settingsTable()) {
+    const SettingId id = spec.id;
+    bindKey(spec.key, spec.keyName, spec.keyHelp,
+            [this, id](int d) { reportSetting(stepSetting(settings_, id, d, stepper_)); });
+  }
 }
 
-void AbstractWindow::offerSceneSwitch(const std::string& sceneList) {
-  const auto ask = [this](int direction) {
-    switchRequest_ = direction;
-    quitRequested_ = true;
-  };
-  bindViewKey(SDLK_PAGEDOWN, "PageDown", "next scene of " + sceneList, [ask](int) { ask(+1); });
-  bindViewKey(SDLK_PAGEUP, "PageUp", "previous scene", [ask](int) { ask(-1); });
-}
-
-PickHit AbstractWindow::pickAt(const double origin[3], const double direction[3]) const {
-  return pickObject(objects_, origin, direction);
+void AbstractWindow::offerSceneSwitch(std::vector<SceneChoice> scenes, int current) {
+  const std::string list = scenes.front().name + " ... " + scenes.back().name + " (odelab --list)";
+  sceneChoices_ = std::move(scenes);
+  currentScene_ = current;
+  bindViewKey(SDLK_PAGEDOWN, "PageDown", "next scene of " + list, [this](int) { requestSceneSwitch(+1); });
+  bindViewKey(SDLK_PAGEUP, "PageUp", "previous scene", [this](int) { requestSceneSwitch(-1); });
 }
 
 void AbstractWindow::beginDrag(const PickHit& hit, const double target[3]) {

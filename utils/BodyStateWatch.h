@@ -13,7 +13,7 @@
 namespace odelab {
 
 // The cheap test run after every step: is any body's position non-finite,
-// or its speed or spin beyond the given bounds? (NaN fails every
+// or its speed or spin beyond the runaway bounds below? (NaN fails every
 // comparison, so it counts as beyond.) It keeps the bodies' state vectors
 // (dBodyGetPosition and kin, which ODE keeps in place while the set of
 // bodies stays the same) and looks them up again only after
@@ -23,8 +23,17 @@ class BodyStateWatch {
  public:
   using Objects = std::vector<std::unique_ptr<AbstractObject>>;
 
-  bool suspicious(const Objects& objects, double maxSpeed, double maxSpin) const {
-    const double maxSpeed2 = maxSpeed * maxSpeed, maxSpin2 = maxSpin * maxSpin;
+  // A blow-up that stays finite (runaway energy): no scene comes near these.
+  // 1e8 m/s is ten times the fastest launch any scene allows (test10's
+  // --velocity, at most 1e7 m/s); free fall at 1 g needs 118 days to reach it.
+  // There is no bound on distance: a body that falls off a platform (test4,
+  // test5) is 1e8 m down after 75 minutes, which a window session can last.
+  static constexpr double RUNAWAY_SPEED = 1e8;  // m/s
+  static constexpr double RUNAWAY_SPIN = 1e8;   // rad/s
+
+  // NaN fails every comparison, infinity the bounds: both count as suspicious.
+  bool suspicious(const Objects& objects) const {
+    constexpr double maxSpeed2 = RUNAWAY_SPEED * RUNAWAY_SPEED, maxSpin2 = RUNAWAY_SPIN * RUNAWAY_SPIN;
     if (seen_ != AbstractObject::bodyChanges()) refresh(objects);
     for (const State& body : bodies_) {
       const dReal *p = body.position, *v = body.velocity, *w = body.spin;

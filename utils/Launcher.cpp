@@ -1,6 +1,6 @@
 // odelab: every scene of the library from one program.
 //   odelab [window options]             a window with the first scene; Page Down / Page Up
-//                                       switch to the next / previous scene, H lists the keys
+//                                       or the panel's scene list switch scenes, H lists the keys
 //   odelab --list                       the scenes, one a line: name, tab, description
 //   odelab --scene NAME [options]       NAME as its own program runs it (same options,
 //                                       headless too: the same metrics and state hash)
@@ -16,12 +16,12 @@
 namespace {
 
 constexpr const char* USAGE =
-    "usage: odelab [window options]        (Page Down / Page Up switch scenes)\n"
+    "usage: odelab [window options]        (Page Down / Page Up or the panel's list switch scenes)\n"
     "       odelab --list\n"
     "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n";
 
-// Page Down / Page Up in the window: the next or previous scene of the
-// registry, made fresh with the window's options (its knobs at their defaults).
+// Page Down / Page Up or the panel's scene list in the window: another scene
+// of the registry, made fresh with the window's options (its knobs at their defaults).
 class RegistrySwitching : public odelab::SceneSwitching {
  public:
   explicit RegistrySwitching(const odelab::SceneEntry& first) {
@@ -29,19 +29,22 @@ class RegistrySwitching : public odelab::SceneSwitching {
     while (index_ < scenes.size() && scenes[index_].make != first.make) ++index_;
   }
 
-  odelab::AbstractWindow& next(int direction, const odelab::RunOptions& options) override {
-    const auto& scenes = odelab::sceneRegistry();
-    index_ = (index_ + scenes.size() + (direction > 0 ? 1 : scenes.size() - 1)) % scenes.size();
-    scene_ = scenes[index_].make();  // the scene it replaces has ended: freed here
-    scene_->offerSceneSwitch(sceneList());
+  odelab::AbstractWindow& next(int offset, const odelab::RunOptions& options) override {
+    const long count = static_cast<long>(odelab::sceneRegistry().size());
+    index_ = static_cast<size_t>(((static_cast<long>(index_) + offset) % count + count) % count);
+    scene_ = odelab::sceneRegistry()[index_].make();  // the scene it replaces has ended: freed here
+    scene_->offerSceneSwitch(scenes(), current());
     scene_->setRunOptions(options);
     return *scene_;
   }
 
-  std::string sceneList() const override {
-    const auto& scenes = odelab::sceneRegistry();
-    return std::string(scenes.front().name) + " ... " + scenes.back().name + " (odelab --list)";
+  std::vector<odelab::SceneChoice> scenes() const override {
+    std::vector<odelab::SceneChoice> choices;
+    for (const odelab::SceneEntry& entry : odelab::sceneRegistry()) choices.push_back({entry.name, entry.description});
+    return choices;
   }
+
+  int current() const override { return static_cast<int>(index_); }
 
  private:
   size_t index_ = 0;

@@ -3,6 +3,7 @@
 #include <SDL2/SDL_keycode.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "WorldSettings.h"
@@ -31,6 +32,12 @@ struct SettingSpec {
   void (*set)(WorldSettings& settings, double value);  // value already clamped
   // One F-key press: the F2 increment (ERP, CFM), the ladder, or the other solver.
   void (*step)(WorldSettings& settings, int direction, const ParameterStepper& stepper);
+  // How the reports name it: the output files' header key ("step_seconds"),
+  // its words in the blow-up and ODE error messages ("# iterations", #: the
+  // value), and its place in both (they list step first, as ODE's manual).
+  const char* header;
+  const char* inMessage;
+  int reportRank;
 };
 
 const std::vector<SettingSpec>& settingsTable();
@@ -42,6 +49,12 @@ double settingValue(const WorldSettings& settings, SettingId id);
 void setSettingValue(WorldSettings& settings, SettingId id, double value);
 // "0.2", "20", "quick".
 std::string settingText(SettingId id, double value);
+
+// " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations, SOR w 1.3)":
+// every setting of the table, for the end of blow-up and ODE error messages.
+std::string settingsInForceText(const WorldSettings& settings);
+// Every setting of the table as output-file header pairs: {"step_seconds", "0.001"}, ...
+std::vector<std::pair<std::string, std::string>> settingsHeader(const WorldSettings& settings);
 
 // {"name": "erp", "option": "--erp", "key": "F3", "min": 0, "max": 1, "unit": "", "default": 0.2}
 // (the solver: "choices" in place of min and max).

@@ -117,7 +117,7 @@ int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* swi
   std::unique_ptr<AbstractWindow> scene;
   try {
     scene = entry.make();
-    if (switching) scene->offerSceneSwitch(switching->sceneList());
+    if (switching) scene->offerSceneSwitch(switching->scenes(), switching->current());
   } catch (const std::logic_error& error) {
     std::cerr << "error: scene declaration: " << error.what() << '\n';
     return exit_code::RUNTIME_ERROR;
@@ -129,9 +129,9 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   RunOptions options;
   CLI::App app{std::string(scene.title()) + "\n" + description};
   app.get_formatter()->column_width(34);
-  cli::addCommonOptions(app, options, scene.settings());
+  cli::addCommonOptions(app, options, scene.tuning().settings());
   scene.addOptions(app);
-  cli::addKnobOptions(app, scene.knobs());
+  cli::addKnobOptions(app, scene.tuning().knobs());
   scene.addContactOptions(app);
   bool listSettings = false;
   app.add_flag("--list-settings", listSettings,
@@ -141,15 +141,15 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     cli::validateRunOptions(options);
     cli::refuseOwnOutputs(options, scene.outputFileNames());
-    cli::refuseRunShorterThanStep(options, scene.settings().step);
-    cli::checkKnobs(app, scene.knobs(), scene.settings().step);
+    cli::refuseRunShorterThanStep(options, scene.tuning().settings().step);
+    cli::checkKnobs(app, scene.tuning().knobs(), scene.tuning().settings().step);
     scene.setRunOptions(options);
     scene.checkOptions();
   });
   if (refused) return *refused;
 
   if (listSettings) {
-    std::cout << cli::settingsJson(scene.settings(), scene.knobs());
+    std::cout << cli::settingsJson(scene.tuning().settings(), scene.tuning().knobs());
     return exit_code::OK;
   }
   installStopSignalHandlers();

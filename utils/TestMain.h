@@ -14,8 +14,11 @@ namespace odelab {
 class SceneSwitching {
  public:
   virtual ~SceneSwitching() = default;
-  virtual AbstractWindow& next(int direction, const RunOptions& options) = 0;
-  virtual std::string sceneList() const = 0;  // for the keys' help: "test0 ... test10"
+  // The scene `offset` places on from the one just ended (wrapping): Page
+  // Down +1, Page Up -1, a click in the panel's scene list any.
+  virtual AbstractWindow& next(int offset, const RunOptions& options) = 0;
+  virtual std::vector<SceneChoice> scenes() const = 0;  // every scene, in order
+  virtual int current() const = 0;                       // the index of the one on screen
 };
 
 // With `switching` (the launcher), a window run may go on to other scenes.

@@ -32,6 +32,15 @@ file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/out_test8_cfm_1e-2)
 odelab_check(test8_cfm_1e-2_stretches_through_the_ground test8
   EXPECT max_relative_elongation>1e-2 lowest_bob_height_m<0 non_finite==0
   ARGS --headless --seconds 60 --erp 0.4 --cfm 1e-2 --step 0.001 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/out_test8_cfm_1e-2)
+# ERP 0.4, CFM 1e-2 over 60 s: the soft hinge damps the swing, but it does not
+# stop. Peak to peak over the last 10 s (swing_last_10s_deg): measured 141
+# degrees, against 180 at CFM 0 (a swing from horizontal to horizontal; the
+# thesis says it settles and stops). Asserted: below 170 (damped) and above
+# 10 (still swinging), far from both measured figures.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/out_test8_swing)
+odelab_check(test8_cfm_1e-2_damps_but_keeps_swinging test8
+  EXPECT swing_last_10s_deg<170 swing_last_10s_deg>10 non_finite==0
+  ARGS --headless --seconds 60 --erp 0.4 --cfm 1e-2 --step 0.001 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/out_test8_swing)
 
 # The bob's mass and the sampling interval positive and finite; then one
 # common option and an unknown one (the shared options: common_options.cmake).

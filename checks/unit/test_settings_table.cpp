@@ -98,3 +98,28 @@ TEST(KeyTable, AKeyBoundTwiceIsAnError) {
   EXPECT_EQ(keys.find(SDLK_r)->description, "the scene's reset");
   EXPECT_THROW(keys.replace({SDLK_q, "Q", "nothing to replace", [](int) {}, true}), std::logic_error);
 }
+
+// The output-file header and the blow-up message are built from the table:
+// each row is in both, with its value, once.
+TEST(SettingsTable, EveryRowIsInTheOutputHeaderAndTheBlowUpMessage) {
+  WorldSettings settings;
+  settings.iterations = 37;
+  settings.sor = 1.45;
+  const auto header = settingsHeader(settings);
+  ASSERT_EQ(header.size(), settingsTable().size());
+  const std::string message = settingsInForceText(settings);
+  for (const SettingSpec& spec : settingsTable()) {
+    const std::string value = settingText(spec.id, settingValue(settings, spec.id));
+    int rows = 0;
+    for (const auto& [key, text] : header)
+      if (key == spec.header) {
+        ++rows;
+        EXPECT_EQ(text.rfind(value, 0), 0u) << key << ": " << text;
+      }
+    EXPECT_EQ(rows, 1) << spec.header;
+    std::string words = spec.inMessage;
+    words.replace(words.find('#'), 1, value);
+    EXPECT_NE(message.find(words), std::string::npos) << words << " not in" << message;
+  }
+  EXPECT_EQ(message, " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 37 iterations, SOR w 1.45)");
+}

@@ -35,13 +35,13 @@ TEST(SpaceKind, EverySwitchKeepsEveryGeomColliding) {
       scene.setSpaceKind(from);
       for (int i = 0; i < 100; ++i) ASSERT_TRUE(scene.stepOnce()) << which;
       scene.setSpaceKind(to);
-      EXPECT_EQ(scene.spaceKind(), to) << which;
-      EXPECT_EQ(dSpaceGetNumGeoms(scene.space()), 2) << which;
+      EXPECT_EQ(scene.run().spaceKind(), to) << which;
+      EXPECT_EQ(dSpaceGetNumGeoms(scene.run().space()), 2) << which;
       for (int i = 0; i < 500; ++i) ASSERT_TRUE(scene.stepOnce()) << which;
       // Still held up by the ground: the cube's centre 0.5 m above it, to
       // within the contacts' penetration (ERP 0.2, CFM 1e-6: well under 1 cm).
-      EXPECT_GT(scene.contactsLastStep(), 0) << which;
-      const dReal* position = dBodyGetPosition(scene.objects()[1]->getBody());
+      EXPECT_GT(scene.run().contactsLastStep(), 0) << which;
+      const dReal* position = dBodyGetPosition(scene.run().objects()[1]->getBody());
       EXPECT_NEAR(position[1], 0.5, 0.01) << which;
       scene.shutdown();
     }

@@ -37,7 +37,7 @@ RunOptions headless() {
 }
 
 void stepTo(AbstractWindow& scene, long long step) {
-  while (scene.steps() < step) ASSERT_TRUE(scene.stepOnce());
+  while (scene.run().steps() < step) ASSERT_TRUE(scene.stepOnce());
 }
 
 TEST(Timeline, ReplayReproducesKeysSettingsAndDragsBitForBit) {
@@ -50,26 +50,26 @@ TEST(Timeline, ReplayReproducesKeysSettingsAndDragsBitForBit) {
   scene.handleKey(SDLK_g, false);
   stepTo(scene, 300);
   const double origin[3] = {0, 10, 0}, down[3] = {0, -1, 0};
-  const PickHit hit = scene.pickAt(origin, down);
+  const PickHit hit = scene.run().pickAt(origin, down);
   ASSERT_GE(hit.objectIndex, 0);
   const double target[3] = {0.5, 2.5, 0};
   scene.beginDrag(hit, target);
   stepTo(scene, 400);
   scene.endDrag();
   stepTo(scene, 800);
-  const auto firstPass = scene.stateHash();
-  const double erp = scene.settings().erp;
+  const auto firstPass = scene.run().stateHash();
+  const double erp = scene.tuning().settings().erp;
 
   scene.replayTo(800);
-  EXPECT_EQ(scene.stateHash(), firstPass);
-  EXPECT_EQ(scene.settings().erp, erp);
+  EXPECT_EQ(scene.run().stateHash(), firstPass);
+  EXPECT_EQ(scene.tuning().settings().erp, erp);
   EXPECT_EQ(scene.gain, 2.0);  // restored to 1, then G replayed once
 
   // From an earlier snapshot, running on follows the same motion.
   scene.replayTo(250);
-  EXPECT_TRUE(scene.time().paused());
+  EXPECT_TRUE(scene.session().time().paused());
   stepTo(scene, 800);
-  EXPECT_EQ(scene.stateHash(), firstPass);
+  EXPECT_EQ(scene.run().stateHash(), firstPass);
 }
 
 TEST(Timeline, AnInputAfterARewindReplacesTheOldFuture) {
@@ -81,8 +81,8 @@ TEST(Timeline, AnInputAfterARewindReplacesTheOldFuture) {
   scene.replayTo(50);
   scene.handleKey(SDLK_g, false);  // a new branch: the spawn at 100 is gone
   stepTo(scene, 600);
-  EXPECT_EQ(scene.bodyCount(), 1);
-  EXPECT_EQ(scene.timeline().events().size(), 1u);
+  EXPECT_EQ(scene.run().bodyCount(), 1);
+  EXPECT_EQ(scene.session().timeline().events().size(), 1u);
 }
 
 TEST(Timeline, SnapshotsEveryQuarterSecondAndStayWithinTheHorizon) {
@@ -102,7 +102,7 @@ TEST(DragSpring, PullsThePickedBodyTowardTheTarget) {
   scene.initialize(headless());
   stepTo(scene, 1000);  // the sphere has landed
   const double origin[3] = {0, 10, 0}, down[3] = {0, -1, 0};
-  const PickHit hit = scene.pickAt(origin, down);
+  const PickHit hit = scene.run().pickAt(origin, down);
   ASSERT_EQ(hit.objectIndex, 1);  // the sphere, not the plane
   EXPECT_NEAR(hit.point[1], 0.6, 1e-3);
   const double target[3] = {1.0, 1.5, 0.0};

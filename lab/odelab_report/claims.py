@@ -15,13 +15,15 @@ rows whose cells equal `where` (numbers compared as numbers), and of their
 import csv
 import json
 import math
+import re
 import string
 from pathlib import Path
 
 from . import markdown as md
 
 _SAFE = {"abs": abs, "min": min, "max": max, "all": all, "any": any, "len": len, "sorted": sorted,
-         "sum": sum, "round": round, "zip": zip, "range": range, "enumerate": enumerate, "math": math, "str": str}
+         "sum": sum, "round": round, "zip": zip, "range": range, "enumerate": enumerate, "math": math, "str": str,
+         "float": float}
 
 
 def median(values):
@@ -184,6 +186,17 @@ class Claim:
                     values=json.dumps(self.values))
 
 
+FIRST_TABLE = "first table"  # where a claim shown in the table at the top stands
+HEADLINE = "headline"        # ... in the headline findings
+_SLOT = re.compile(r"\[\[claim:([\w.+-]+)\]\]")
+
+
+def slot(key):
+    """Where the sentence of the claims under `key` goes in an experiment's
+    markdown: Sentences.fill replaces it once every CSV is written."""
+    return f"[[claim:{key}]]"
+
+
 class Sentences:
     """The claims a report shows, for claims.csv."""
 
@@ -191,20 +204,31 @@ class Sentences:
         self.data = data
         self.shown = []
 
-    def say(self, *alternatives):
+    def say(self, *alternatives, place=FIRST_TABLE):
         """The text of the first alternative whose data exist and whose rule
-        holds, or None; the claim shown is recorded."""
+        holds, or None; the claim shown is recorded with where it stands."""
         for claim in alternatives:
             try:
                 row = claim.row(self.data)
             except (LookupError, ValueError, ZeroDivisionError):
                 continue
             if row["holds"]:
-                self.shown.append(row)
+                self.shown.append(dict(row, place=place))
                 return row["text"]
         return None
 
-    COLUMNS = ["key", "text", "rule", "holds", "template", "values"]
+    def fill(self, text, claims, place):
+        """`text` with each slot(key) replaced by the sentence of the first of
+        claims[key] (a Claim or a list of alternatives) that holds; a slot
+        whose claims all fail is left empty: no sentence rather than a false one."""
+        def sentence(match):
+            alternatives = claims[match.group(1)]
+            if isinstance(alternatives, Claim):
+                alternatives = [alternatives]
+            return self.say(*alternatives, place=place) or ""
+        return _SLOT.sub(sentence, text)
+
+    COLUMNS = ["key", "text", "rule", "holds", "template", "values", "place"]
 
 
 def recheck(folder, rows):

@@ -3,7 +3,7 @@ taken, then each section's experiments (their tables and embedded plots)."""
 
 from . import csvout, first_screen
 from . import markdown as md
-from .claims import Data, Sentences
+from .claims import HEADLINE, Claim, Data, Sentences
 from .experiments import SECTIONS
 
 TIMING = """Cost is wall time, because that is what a user waits for, and it is this
@@ -24,8 +24,9 @@ figures.
   above gives the share's median and minimum: well below 1 means the machine
   was busy and wall times are inflated by about 1 / share.
 - Speed-accuracy points are timed on runs of at least 30 000 steps (a run of
-  a few milliseconds is timed by the scheduler more than by ODE), three times
-  where a run is under 100 000 steps, and the median is used. The remedies'
+  a few milliseconds is timed by the scheduler more than by ODE), five times
+  where a run is under 100 000 steps, interleaved (every point's first run,
+  then every point's second...), and the median and range are used. The remedies'
   costs and test3's real-time factors: the median of three. test10's
   `--ccd` cost: eleven pairs (five in `--quick`), plain and `--ccd` run at
   the same time, the median of the pairs' ratios and their range.
@@ -51,7 +52,7 @@ def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partia
     lines += ["", "## At a glance", "", FIRST_SCREEN_INTRO, "", first_screen.table(sentences)]
     lines += ["", "## Run", "", md.table(["", ""], [[k, v] for k, v in header] +
                                           [["report time", elapsed_text], ["every run", f"[{runs_csv}]({runs_csv})"]])]
-    headline = [h for _, outcome in outcomes for h in outcome.headline]
+    headline = [h for _, outcome in outcomes for h in _headline(sentences, outcome)]
     if headline:
         lines += ["", "## Headline findings", ""] + [f"- {h}" for h in headline]
     missing = [m for _, outcome in outcomes for m in outcome.missing]
@@ -73,14 +74,16 @@ def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partia
                       md.table(["scene and error", "error at most", "cheapest setting", "step (s)", "its error",
                                 "wall s per simulated s"], summary)]
         for experiment, outcome in by_section[number]:
+            body = sentences.fill(outcome.markdown, outcome.claims, experiment.name)
             lines += ["", f'<a id="{_anchor(experiment)}"></a>', "",
-                      f"### {experiment.title} (`--only {experiment.name}`)", "", outcome.markdown.strip()]
+                      f"### {experiment.title} (`--only {experiment.name}`)", "", body.strip()]
     path.write_text("\n".join(lines) + "\n")
     if sentences.shown:
         csvout.write_csv(path.parent / "claims.csv", header, Sentences.COLUMNS, sentences.shown,
-                         notes=["every sentence of the table at the top of RESULTS.md: its text, the rule that let it "
-                                "appear, and the lookups into this folder's CSVs it was made from (lab/check_report.py "
-                                "recomputes each)"])
+                         notes=["every sentence of RESULTS.md made from data (the table at the top, the headline "
+                                "findings, each section's conclusions): its text, the rule that let it appear, the "
+                                "lookups into this folder's CSVs it was made from (lab/check_report.py recomputes each), "
+                                "and where it stands (place: first table, headline, or the experiment's section)"])
 
 
 FIRST_SCREEN_INTRO = """One row per scene, every cell read from this report's CSVs by a stated rule (claims.csv holds each
@@ -88,6 +91,19 @@ cell's lookups and rule; lab/check_report.py recomputes them). ODE at the thesis
 range is given. Cost is wall seconds per simulated second on this machine; "a tie within the timing's
 scatter" lists every setting whose fastest run is not slower than the cheapest's slowest, the default
 (QuickStep 20 at step 0.001) first."""
+
+
+def _headline(sentences, outcome):
+    """An experiment's headline findings: a Claim (or alternatives) is shown
+    when its rule holds; a plain string only from an experiment whose
+    sentences are not claims yet (check_report.py names which may)."""
+    for finding in outcome.headline:
+        if isinstance(finding, str):
+            yield finding
+            continue
+        text = sentences.say(*([finding] if isinstance(finding, Claim) else finding), place=HEADLINE)
+        if text:
+            yield text
 
 
 def _anchor(experiment):

@@ -10,7 +10,9 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import check_docs  # noqa: E402
-from odelab_report.claims import Claim, Data, Sentences, q, read_rows, recheck  # noqa: E402
+import check_report  # noqa: E402
+from odelab_report import csvout  # noqa: E402
+from odelab_report.claims import HEADLINE, Claim, Data, Sentences, q, read_rows, recheck, slot  # noqa: E402
 
 CSV = "# ODE: test\nsolver,step_s,error\nQuickStep 20,0.001,0.25\nQuickStep 20,0.01,0.5\ndWorldStep,0.001,1e-9\n"
 
@@ -54,6 +56,60 @@ class Claims(unittest.TestCase):
         self.assertEqual(len(read_rows(self.folder / "speed.csv")), 3)
 
 
+class SectionSentences(unittest.TestCase):
+    """A conclusion in a section's prose or the headline findings is a claim
+    like a cell of the first table: shown when its rule holds, recorded with
+    where it stands, and checked there by check_report.py."""
+
+    def setUp(self):
+        self.folder = Path(tempfile.mkdtemp())
+        (self.folder / "speed.csv").write_text(CSV)
+        self.smaller = Claim("speed.smaller", "A smaller step lowers the error: {c:n2} at 0.01, {f:n2} at 0.001.",
+                             {"c": q("speed.csv", "error", solver="QuickStep 20", step_s=0.01),
+                              "f": q("speed.csv", "error", solver="QuickStep 20", step_s=0.001)}, "f < c")
+        self.larger = Claim("speed.larger", "A smaller step does not lower the error.", dict(self.smaller.values),
+                            "f >= c")
+
+    def report(self, prose, headline):
+        """RESULTS.md and claims.csv as results_md writes them."""
+        sentences = Sentences(Data(self.folder))
+        body = sentences.fill(prose, {"step": [self.larger, self.smaller]}, "speed")
+        found = sentences.say(headline, place=HEADLINE)
+        text = "\n".join(["# report", "", "## Headline findings", "", f"- {found}", "",
+                           "### speed (`--only speed`)", "", body, ""])
+        (self.folder / "RESULTS.md").write_text(text)
+        csvout.write_csv(self.folder / "claims.csv", [("ODE", "test")], Sentences.COLUMNS, sentences.shown)
+        return text
+
+    def test_the_slot_takes_the_sentence_whose_rule_holds(self):
+        sentences = Sentences(Data(self.folder))
+        text = sentences.fill(f"How to read it: {slot('step')}", {"step": [self.larger, self.smaller]}, "speed")
+        self.assertEqual(text, "How to read it: A smaller step lowers the error: 0.5 at 0.01, 0.25 at 0.001.")
+        self.assertEqual([(row["key"], row["place"]) for row in sentences.shown], [("speed.smaller", "speed")])
+
+    def test_no_sentence_when_no_rule_holds(self):
+        sentences = Sentences(Data(self.folder))
+        self.assertEqual(sentences.fill(f"[{slot('step')}]", {"step": self.larger}, "speed"), "[]")
+
+    def test_the_check_passes_a_true_report(self):
+        text = self.report(f"How to read it: {slot('step')}", self.smaller)
+        self.assertEqual(check_report.check_sentences(self.folder, text), [])
+        self.assertEqual(recheck(self.folder, read_rows(self.folder / "claims.csv")), [])
+
+    def test_the_check_fails_a_sentence_whose_data_changed(self):
+        self.report(f"How to read it: {slot('step')}", self.smaller)
+        (self.folder / "speed.csv").write_text(CSV.replace("0.25", "0.75"))  # the step no longer helps
+        problems = recheck(self.folder, read_rows(self.folder / "claims.csv"))
+        self.assertTrue(any("does not hold" in p for p in problems), problems)
+
+    def test_the_check_fails_a_typed_headline_or_an_edited_sentence(self):
+        text = self.report(f"How to read it: {slot('step')}", self.smaller)
+        typed = text.replace("## Headline findings\n\n", "## Headline findings\n\n- test2: exact, whatever.\n")
+        self.assertTrue(any("no claim" in p for p in check_report.check_sentences(self.folder, typed)))
+        edited = text.replace("0.25 at 0.001", "0.2 at 0.001")
+        self.assertTrue(any("not in RESULTS.md's speed" in p for p in check_report.check_sentences(self.folder, edited)))
+
+
 class DocsFigures(unittest.TestCase):
     def written(self, text):
         return [w for _, w, _, _ in check_docs.figures(text)]
@@ -75,6 +131,57 @@ class DocsFigures(unittest.TestCase):
         self.assertTrue(check_docs.held(values, 11892, check_docs.half_unit("11892")))
         self.assertTrue(check_docs.held(values, 11900, check_docs.half_unit("11900")))
         self.assertFalse(check_docs.held(values, 11880, check_docs.half_unit("11880")))
+
+    def test_significant_digits(self):
+        self.assertEqual([check_docs.significant_digits(w) for w in ("5", "0.2", "500", "5e-3", "35", "0.064", "4.4%",
+                                                                       "11900", "0.0640")], [1, 1, 1, 1, 2, 2, 2, 3, 3])
+
+
+class DocsShortFigures(unittest.TestCase):
+    """A short figure (one or two significant digits) must be held by the
+    page's own data: a stale "0.2" is no longer passed by some other
+    scene's CSV that happens to hold 0.21."""
+
+    def setUp(self):
+        self.root = Path(tempfile.mkdtemp())
+        (self.root / "doc" / "tests").mkdir(parents=True)
+        (self.root / "doc" / "results").mkdir()
+        (self.root / "doc" / "results" / "limit-test4.csv").write_text("solver,kg,share\nQuickStep 20,11892,0.21\n")
+        (self.root / "doc" / "results" / "thesis.csv").write_text("test,value\ntest9,0.0031\ntest4,0.64\n")
+
+    def problems(self, page, text):
+        (self.root / "doc" / "tests" / page).write_text(text)
+        return [p for waiting, p in check_docs.check(self.root)[0] if not waiting]
+
+    def test_a_scenes_own_figures_pass(self):
+        # test4's CSV (its name) and test4's row of thesis.csv; 11900 (three digits) from anywhere.
+        self.assertEqual(self.problems("test4.md", "QuickStep holds 11900 kg, a share of 0.2 and 0.64 of it.\n"), [])
+
+    def test_a_stale_short_figure_now_fails(self):
+        # 0.0031 is in thesis.csv, but in test9's row: on test4's page it is a coincidence.
+        problems = self.problems("test4.md", "the error is 0.003 after 20 bounces.\n")
+        self.assertEqual(len(problems), 1, problems)
+        self.assertIn("0.003 (short)", problems[0])
+
+    def test_a_page_names_its_csv(self):
+        text = "From [the limits](../results/limit-test4.csv): a share of 0.2.\n"
+        self.assertEqual(self.problems("test9.md", text), [])
+        self.assertEqual(len(self.problems("test9.md", "a share of 0.2.\n")), 1)
+
+    def test_pending_lines_hold_back_a_page_its_short_figures_or_one_figure(self):
+        (self.root / "lab" / "reference").mkdir(parents=True)
+        pending = self.root / "lab" / "reference" / "docs-pending.txt"
+        text = "the error is 0.003 after 20 bounces; the build took 366 s.\n"
+        self.assertEqual(len(self.problems("test4.md", text)), 2)
+        pending.write_text('doc/tests/test4.md short  # why\ndoc/tests/test4.md "366 s"  # too long to redo\n')
+        self.assertEqual(self.problems("test4.md", text), [])
+        pending.write_text('doc/tests/test4.md "366 s"  # too long to redo\n')
+        self.assertEqual(len(self.problems("test4.md", text)), 1)
+
+    def test_the_committed_tree_passes(self):
+        root = Path(__file__).resolve().parents[2]
+        failing = [p for waiting, p in check_docs.check(root)[0] if not waiting]
+        self.assertEqual(failing, [])
 
 
 if __name__ == "__main__":

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "AbstractWindow.h"
@@ -26,6 +27,7 @@ constexpr double BOUNDARY_XZ = 50.0;       // (proposed) |x| or |z| beyond this 
 constexpr double BOUNDARY_Y = -20.0;       // (proposed) below this is removed
 constexpr double PLATFORM_HALF = 5.0;
 constexpr double REST_SPEED = 0.05;        // m/s: below this a body counts as at rest
+constexpr double SUPPORT_GAP = 0.05;       // m: a body with nothing this close below its lowest point hangs
 
 class BoxAndSphere : public AbstractWindow {
  public:
@@ -65,7 +67,8 @@ class BoxAndSphere : public AbstractWindow {
     platform.color = Color{0.45f, 0.5f, 0.55f};
     platform_ = &platform;
     bornAt_.clear();
-    spawned_ = removed_ = maxBodies_ = 0;
+    spawned_ = removed_ = maxBodies_ = maxHanging_ = hangingWoken_ = 0;
+    hanging_.clear();
     nextSpawn_ = 0.0;
   }
 
@@ -77,7 +80,9 @@ class BoxAndSphere : public AbstractWindow {
     }
     // Counted before this step's removals: the most that were ever alive.
     maxBodies_ = std::max(maxBodies_, bodyCount());
+    const int removedBefore = removed_;
     removeExpired();
+    trackHanging(removed_ > removedBefore);
   }
 
   void addHudLines(std::vector<std::string>& lines) const override {
@@ -111,6 +116,9 @@ class BoxAndSphere : public AbstractWindow {
     }
     m.set("bodies_resting_on_platform", resting);
     m.set("max_speed", maxSpeed);
+    m.set("hanging_disabled_bodies", int(hangingDisabledBodies().size()));
+    m.set("max_hanging_disabled_bodies", maxHanging_);
+    m.set("hanging_bodies_woken", hangingWoken_);
   }
 
  private:
@@ -141,6 +149,47 @@ class BoxAndSphere : public AbstractWindow {
     ++spawned_;
   }
 
+  // Disabled bodies left in the air: nothing (platform or body) within
+  // SUPPORT_GAP below their lowest point. "Below" is by bounding boxes: any
+  // other geom whose box overlaps the slab under this one's counts as support,
+  // so a body is called hanging only when nothing at all is under it.
+  std::vector<const AbstractObject*> hangingDisabledBodies() const {
+    std::vector<const AbstractObject*> hanging;
+    for (const auto& object : objects()) {
+      if (object->isFixed() || dBodyIsEnabled(object->getBody())) continue;
+      dReal box[6];
+      dGeomGetAABB(object->getGeom(), box);
+      bool supported = false;
+      for (const auto& other : objects()) {
+        if (other.get() == object.get()) continue;
+        dReal o[6];
+        dGeomGetAABB(other->getGeom(), o);
+        supported = o[0] < box[1] && o[1] > box[0] && o[4] < box[5] && o[5] > box[4] &&
+                    o[3] > box[2] - SUPPORT_GAP && o[2] < box[2] + SUPPORT_GAP;
+        if (supported) break;
+      }
+      if (!supported) hanging.push_back(object.get());
+    }
+    return hanging;
+  }
+
+  // A body starts hanging only when its support goes, i.e. after a removal;
+  // one that hangs stays disabled until something touches it and ODE wakes
+  // it: those are counted as woken.
+  void trackHanging(bool removedSome) {
+    for (auto it = hanging_.begin(); it != hanging_.end();) {
+      if (dBodyIsEnabled((*it)->getBody())) {
+        ++hangingWoken_;
+        it = hanging_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    if (!removedSome) return;
+    for (const AbstractObject* object : hangingDisabledBodies()) hanging_.insert(object);
+    maxHanging_ = std::max(maxHanging_, int(hanging_.size()));
+  }
+
   void removeExpired() {
     const double now = simulatedTime();
     removeIf([&](const AbstractObject& object) {
@@ -150,6 +199,7 @@ class BoxAndSphere : public AbstractWindow {
       const bool outside = std::fabs(p[0]) > BOUNDARY_XZ || std::fabs(p[2]) > BOUNDARY_XZ || p[1] < BOUNDARY_Y;
       if (!outside && now - born->second < LIFETIME_SECONDS) return false;
       bornAt_.erase(born);
+      hanging_.erase(&object);
       ++removed_;
       return true;
     });
@@ -160,6 +210,9 @@ class BoxAndSphere : public AbstractWindow {
   int spawned_ = 0;
   int removed_ = 0;
   int maxBodies_ = 0;  // the most bodies alive at once (after a step's spawn)
+  std::set<const AbstractObject*> hanging_;  // disabled bodies left in the air, until woken or removed
+  int maxHanging_ = 0;
+  int hangingWoken_ = 0;
   double nextSpawn_ = 0.0;
   double spawnInterval_ = 0.0;
   const Knob* spawnKnob_ = nullptr;

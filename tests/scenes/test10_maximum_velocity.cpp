@@ -38,8 +38,10 @@
 #include "Plane.h"
 #include "SweptCollision.h"
 #include "SceneRegistry.h"
-#include "shared/MechanicalEnergy.h"
 #include "shared/LaunchOutcome.h"
+#include "shared/LaunchTally.h"
+#include "shared/MechanicalEnergy.h"
+#include "shared/RandomTurn.h"
 #include "shared/SceneConstants.h"
 #include "shared/VelocityScan.h"
 
@@ -55,28 +57,6 @@ constexpr double DEFAULT_BAND_FACTOR = 1.5;      // keep scanning to 1.5x the fi
 
 // The window keeps launched cubes to show where they ended; farther away they go.
 constexpr double KEEP_RADIUS = 100.0;
-
-
-const char* outcomeName(Outcome outcome) {
-  switch (outcome) {
-    case Outcome::InFlight:
-      return "in flight";
-    case Outcome::Stopped:
-      return "stopped";
-    case Outcome::Passed:
-      return "passed through";
-  }
-  return "?";
-}
-
-struct Launch {
-  Box* cube;
-  SweptCollision::Body sweptBody;  // the cube's sizes, for the sweep
-  double velocity;
-  double launchedAt;
-  double launchEnergy;  // J, with the ground (y = 0) as zero of height
-  Outcome outcome = Outcome::InFlight;
-};
 
 class MaximumVelocity : public AbstractWindow {
  public:
@@ -147,9 +127,7 @@ class MaximumVelocity : public AbstractWindow {
     wall.color = Color{0.45f, 0.55f, 0.7f};
     sweep_.setStaticGeoms({ground.getGeom(), wall.getGeom()});
     sweep_.resetCounts();
-    launchesInScene_.clear();
-    launched_ = stopped_ = passed_ = 0;
-    maxStopEnergyRatio_ = 0.0;
+    tally_.clear();
     if (findMaxVelocity_ && !options().headless)
       notify("--find-max-velocity runs only with --headless; B launches here");
   }
@@ -160,33 +138,21 @@ class MaximumVelocity : public AbstractWindow {
     dVector3 gravity;
     dWorldGetGravity(world(), gravity);
     const double g[3] = {gravity[0], gravity[1], gravity[2]};
-    for (const Launch& l : launchesInScene_) sweep_.sweep(l.sweptBody, settings().step, g, world(), contactGroup());
+    for (const Launch& l : tally_.inScene) sweep_.sweep(l.sweptBody, settings().step, g, world(), contactGroup());
   }
 
   void afterStep() override {
-    for (Launch& l : launchesInScene_) {
-      if (l.outcome != Outcome::InFlight) continue;
-      l.outcome = classify(l);
-      if (l.outcome == Outcome::InFlight) continue;
-      (l.outcome == Outcome::Passed ? passed_ : stopped_) += 1;
-      if (l.outcome == Outcome::Stopped)
-        maxStopEnergyRatio_ =
-            std::max(maxStopEnergyRatio_, mechanicalEnergy(l.cube->getBody(), world()) / l.launchEnergy);
+    // test10's rule (shared/LaunchOutcome.h), which the peer engines use too.
+    tally_.classify(simulatedTime(), world(), [this](Launch& l) {
       l.cube->color = l.outcome == Outcome::Passed ? Color{0.9f, 0.25f, 0.2f} : Color{0.3f, 0.8f, 0.35f};
       if (l.outcome == Outcome::Passed && !options().headless) keepInView(*l.cube);
-      lastOutcome_ = l.outcome;
-      lastVelocity_ = l.velocity;
-    }
+    });
     removeFarCubes();
   }
 
   void addHudLines(std::vector<std::string>& lines) const override {
-    std::string counts = "launched " + std::to_string(launched_) + ": stopped " + std::to_string(stopped_) +
-                         ", passed through " + std::to_string(passed_);
-    if (lastOutcome_ != Outcome::InFlight)
-      counts += "   (last: " + std::string(outcomeName(lastOutcome_)) + " at " + formatValue(lastVelocity_) + " m/s)";
     // The headline (the compact HUD's line): what happened to the launches.
-    lines.push_back(counts + "   velocity " + formatValue(velocity_) + " m/s (B launches, F5 changes)");
+    lines.push_back(tally_.countsText() + "   velocity " + formatValue(velocity_) + " m/s (B launches, F5 changes)");
     lines.push_back("passing windows: none below (h + t/2)/step = " + formatValue(guaranteedStopVelocity()) +
                     " m/s; above it the phase at the wall decides, (h + t)/step = " +
                     formatValue(geometricPrediction()) + " m/s; --find-max-velocity scans them");
@@ -196,7 +162,7 @@ class MaximumVelocity : public AbstractWindow {
 
   // The live plot (L): the scene's headline measurement.
   bool plotValue(double& value) const override {
-    value = double(passed_);
+    value = double(tally_.passed);
     return true;
   }
   std::string plotLabel() const override { return "launches that passed the wall (of all launched)"; }
@@ -207,9 +173,9 @@ class MaximumVelocity : public AbstractWindow {
     reportScene(m);
     m.set("launch_velocity", findMaxVelocity_ ? 0.0 : velocity_);
     m.set("launch_spin", spin_);
-    m.set("launches", launched_);
-    m.set("stopped", stopped_);
-    m.set("passed_through", passed_);
+    m.set("launches", tally_.launched);
+    m.set("stopped", tally_.stopped);
+    m.set("passed_through", tally_.passed);
     m.set("geometric_prediction", geometricPrediction());
     m.set("guaranteed_stop_velocity", guaranteedStopVelocity());
     m.set("ccd", ccd_ ? 1 : 0);
@@ -217,7 +183,7 @@ class MaximumVelocity : public AbstractWindow {
     m.set("ccd_clamps", static_cast<double>(sweep_.counts().clamps));
     m.set("ccd_speculative_contacts", static_cast<double>(sweep_.counts().speculativeContacts));
     m.set("ccd_unresolved", static_cast<double>(sweep_.counts().unresolved));
-    m.set("max_stop_energy_ratio", maxStopEnergyRatio_);
+    m.set("max_stop_energy_ratio", tally_.maxStopEnergyRatio);
     if (findMaxVelocity_) VelocityScan::addMetrics(scan_, m);
   }
 
@@ -268,59 +234,21 @@ class MaximumVelocity : public AbstractWindow {
     if (phaseJitter_) startX -= std::uniform_real_distribution<double>(0.0, 1.0)(random()) * velocity * settings().step;
     cube.setPosition(startX, LAUNCH_Y, LAUNCH_Z);
     cube.setLinearVelocity(velocity, 0.0, 0.0);
-    if (randomOrientation_) turnAtRandom(cube);
-    if (spin_ > 0.0) spinAtRandom(cube);
+    if (randomOrientation_) turnAtRandom(cube.getBody(), random());
+    if (spin_ > 0.0) spinAtRandom(cube.getBody(), spin_, random());
     cube.color = Color{0.95f, 0.8f, 0.2f};
-    ++launched_;
-    launchesInScene_.push_back({&cube, SweptCollision::describeBody(cube.getBody(), cube.getGeom()), velocity,
-                                simulatedTime(), mechanicalEnergy(cube.getBody(), world())});
-  }
-
-  // A uniformly random orientation (Shoemake's unit quaternion from three
-  // uniform numbers): the cube meets the wall with a corner or an edge first.
-  void turnAtRandom(Box& cube) {
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    const double u1 = uniform(random()), u2 = uniform(random()), u3 = uniform(random());
-    const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1), turn = 2.0 * M_PI;
-    const dQuaternion q = {a * std::sin(turn * u2), a * std::cos(turn * u2), b * std::sin(turn * u3),
-                           b * std::cos(turn * u3)};
-    dBodySetQuaternion(cube.getBody(), q);
-  }
-
-  // A turn about a uniformly random axis (a normalised Gaussian vector).
-  void spinAtRandom(Box& cube) {
-    std::normal_distribution<double> normal(0.0, 1.0);
-    double axis[3] = {normal(random()), normal(random()), normal(random())};
-    const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-    dBodySetAngularVel(cube.getBody(), spin_ * axis[0] / n, spin_ * axis[1] / n, spin_ * axis[2] / n);
-  }
-
-  // test10's rule (shared/LaunchOutcome.h), which the peer engines use too.
-  Outcome classify(const Launch& l) const {
-    return launchOutcome(l.cube->getPosition()[0], dBodyGetLinearVel(l.cube->getBody())[0], l.velocity,
-                         simulatedTime() - l.launchedAt);
+    tally_.add({&cube, SweptCollision::describeBody(cube.getBody(), cube.getGeom()), velocity, simulatedTime(),
+                mechanicalEnergy(cube.getBody(), world())});
   }
 
   // Drops the cubes whose outcome is known and that flew far away, with their records.
-  // In a window a passed cube would fly out of sight at hundreds of m/s: it
-  // is held where it was seen to pass, red, just beyond the wall, and no
-  // longer collides, so it changes no later launch. (Headless runs leave it
-  // be: nothing is drawn there.)
-  static void keepInView(Box& cube) {
-    const dBodyID body = cube.getBody();
-    dBodySetLinearVel(body, 0, 0, 0);
-    dBodySetAngularVel(body, 0, 0, 0);
-    dBodySetKinematic(body);
-    dGeomDisable(cube.getGeom());
-  }
-
   void removeFarCubes() {
     removeIf([this](const AbstractObject& object) {
-      for (auto it = launchesInScene_.begin(); it != launchesInScene_.end(); ++it) {
+      for (auto it = tally_.inScene.begin(); it != tally_.inScene.end(); ++it) {
         if (it->cube != &object || it->outcome == Outcome::InFlight) continue;
         const dReal* p = object.getPosition();
         if (std::fabs(p[0]) < KEEP_RADIUS && p[1] > GROUND_Y - KEEP_RADIUS) return false;
-        launchesInScene_.erase(it);
+        tally_.inScene.erase(it);
         return true;
       }
       return false;
@@ -333,12 +261,12 @@ class MaximumVelocity : public AbstractWindow {
   // past KEEP_RADIUS in the step that decides it is removed with its record.
   Outcome launchAndResolve(double velocity) {
     removeIf([this](const AbstractObject& object) { return object.getBody() != nullptr; });
-    launchesInScene_.clear();
+    tally_.inScene.clear();
     launch(velocity);
-    const int decidedBefore = stopped_ + passed_;
-    while (stopped_ + passed_ == decidedBefore)
+    const int decidedBefore = tally_.decided();
+    while (tally_.decided() == decidedBefore)
       if (!runFor(settings().step)) return Outcome::InFlight;
-    return lastOutcome_;
+    return tally_.lastOutcome;
   }
 
   void findMaxVelocity() {
@@ -369,12 +297,8 @@ class MaximumVelocity : public AbstractWindow {
   double spin_ = 0.0;  // rad/s at launch
   bool ccd_ = false;
 
-  std::vector<Launch> launchesInScene_;
-  int launched_ = 0, stopped_ = 0, passed_ = 0;
+  LaunchTally tally_;
   SweptCollision sweep_;
-  double maxStopEnergyRatio_ = 0.0;
-  Outcome lastOutcome_ = Outcome::InFlight;
-  double lastVelocity_ = 0.0;
   VelocityScan::Result scan_;
   double surfaceLayer_ = SURFACE_LAYER;
 };

@@ -25,33 +25,13 @@
 #include "Plane.h"
 #include "SceneRegistry.h"
 #include "shared/BodyMeasures.h"
+#include "shared/SceneConstants.h"
 
 namespace {
 
 using namespace odelab;
 
-constexpr double DOMINO_THICKNESS = 0.2;  // along the path (proposed)
-constexpr double DOMINO_HEIGHT = 2.0;     // (proposed)
-constexpr double DOMINO_WIDTH = 1.0;      // across the path (proposed)
-constexpr double DOMINO_MASS = 1.0;       // (proposed)
-constexpr int DEFAULT_DOMINOES = 60;      // (proposed: 60 or more)
-constexpr double DOMINO_SPACING = 1.0;    // centre to centre along the path (proposed): half the height
-// Archimedean spiral r = SPIRAL_START_RADIUS + SPIRAL_PITCH * angle / 2 pi,
-// walked from the inside out, so any number of dominoes fits.
-constexpr double SPIRAL_START_RADIUS = 4.0;  // (proposed) tight enough to look like a spiral, loose
-                                             // enough that a 1 m wide plate still hits the next one
-constexpr double SPIRAL_PITCH = 2.5;         // m between turns (proposed): more than the plate width
-// The first domino starts leaning forward on its leading edge and is pushed:
-// without the push, a plate tipping from rest is slower than the 0.1
-// thresholds for the first 10 steps and auto-disable would freeze it.
-constexpr double FIRST_TILT_DEGREES = 10.0;  // (proposed) past the tipping angle atan(0.2 / 2) = 5.7 degrees
-constexpr double FIRST_PUSH = 1.0;           // rad/s about the leading edge (proposed): top moves at 2 m/s
-// A domino has fallen once it leans more than this from vertical: far past
-// the tipping angle (5.7 degrees), so it cannot stand up again; a fallen
-// domino rests on its successor at 50 degrees or more (see doc/tests/test3.md).
-constexpr double FALLEN_TILT_DEGREES = 30.0;
-constexpr double DEFAULT_MU = 1.0;  // the thesis's usual Coulomb coefficient
-constexpr double AUTO_DISABLE_THRESHOLD = 0.1;  // linear (m/s) and angular (rad/s), the thesis's
+using namespace scene::test3;  // the dominoes and their spiral: SceneConstants.h (shared with peers/)
 // F / G walk through these friction coefficients; the last is dInfinity.
 
 struct Placement {

@@ -15,16 +15,11 @@
 // effect on the cost can be measured (a single stack is one island).
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <cmath>
 #include <ctime>
-#include <deque>
 #include <iomanip>
 #include <memory>
-#include <stdexcept>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "AbstractWindow.h"
@@ -32,8 +27,8 @@
 #include "CommandLine.h"
 #include "SceneRegistry.h"
 #include "shared/SceneConstants.h"
-#include "shared/BodyMeasures.h"
 #include "shared/IslandThreads.h"
+#include "shared/PlateStack.h"
 #include "shared/StepCostWindow.h"
 
 #include <ode/threading_impl.h>
@@ -42,38 +37,12 @@ namespace {
 
 using namespace odelab;
 
-constexpr double PLATFORM_SIDE = 10.0;
-constexpr double PLATFORM_THICKNESS = 0.2;  // top face at y = 0
-using scene::test5::PLATE_MASS;  // the plate: SceneConstants.h (shared with peers/)
-using scene::test5::PLATE_THICKNESS;
-using scene::test5::PLATE_WIDTH;
-constexpr double SPAWN_HEIGHT = 6.0;       // plate centre when dropped
-constexpr double SPAWN_ABOVE_STACK = 1.0;  // (proposed) once the stack nears 6 m, drop this far above its top
-constexpr double DEFAULT_SPAWN_INTERVAL = 0.3;  // s, headless (proposed): 50 plates land within 20 s
-constexpr int DEFAULT_PLATES = 50;              // headless plate count (proposed)
-// A plate has landed once it is older than LANDING_MIN_AGE (so it had time to
-// start falling) and slower than LANDED_SPEED; from then on it is part of the stack.
-constexpr double LANDING_MIN_AGE = 0.1;  // s
-constexpr double LANDED_SPEED = 0.05;    // m/s
+using namespace scene::test5;  // the platform, the plates and their drops: SceneConstants.h (shared with peers/)
 constexpr double COST_WINDOW = 1.0;      // simulated seconds averaged by ms_per_step
-// Plates dropped in quick succession (N held down) start at least this far
-// apart, centre to centre, so a new plate never overlaps one still falling.
-constexpr double MIN_SPAWN_SEPARATION = 2 * PLATE_THICKNESS;
 // ODE's default auto-disable thresholds (m/s and rad/s); the thesis tried
 // raising the linear one to 0.3.
 constexpr double ODE_DEFAULT_DISABLE_THRESHOLD = 0.01;
 constexpr int MAX_THREADS = 64;
-// A disabled plate whose bottom face is this far above the top of the plate
-// (or platform) below it is not resting on the stack: auto-disable froze it
-// in the air.
-constexpr double FROZEN_GAP = 0.01;  // m
-
-struct Plate {
-  Box* box;
-  double bornAt;
-  bool landed;
-};
-
 
 WorldSettings settingsForThisScene() {
   WorldSettings settings;  // step 0.001, QuickStep with 20 iterations
@@ -135,7 +104,6 @@ class ManyCollisions : public AbstractWindow {
     platform.setPosition(0.0, -PLATFORM_THICKNESS / 2, 0.0);
     platform.color = Color{0.45f, 0.5f, 0.55f};
     plates_.clear();
-    firstInAir_ = 0;
     cost_.clear();
     cpuCost_.clear();
     lastCpuClock_ = std::clock();
@@ -158,7 +126,7 @@ class ManyCollisions : public AbstractWindow {
     cpuCost_.add(simulatedTime(), static_cast<double>(now - lastCpuClock_) / CLOCKS_PER_SEC);
     lastCpuClock_ = now;
     collidedSeconds_ += lastStepWallSeconds();
-    markLandedPlates();
+    plates_.markLanded(simulatedTime());
     const double interval = spawnInterval();
     if (interval > 0 && static_cast<int>(plates_.size()) < plateLimit() && simulatedTime() >= nextSpawn_) {
       spawnPlate();
@@ -168,9 +136,9 @@ class ManyCollisions : public AbstractWindow {
 
   void addHudLines(std::vector<std::string>& lines) const override {
     std::ostringstream s;
-    s << std::fixed << "plates " << plates_.size() << " (" << landedCount() << " landed)   stack height "
-      << std::setprecision(3) << stackHeight() << " m   max axis offset " << std::setprecision(4) << maxAxisOffset()
-      << " m   max twist " << std::setprecision(2) << maxTwistDegrees() << " deg";
+    s << std::fixed << "plates " << plates_.size() << " (" << plates_.landedCount() << " landed)   stack height "
+      << std::setprecision(3) << plates_.height() << " m   max axis offset " << std::setprecision(4) << plates_.maxAxisOffset()
+      << " m   max twist " << std::setprecision(2) << plates_.maxTwistDegrees() << " deg";
     lines.push_back(s.str());
     s.str("");
     s << std::setprecision(3) << "collide + step: " << cost_.meanMilliseconds()
@@ -180,7 +148,7 @@ class ManyCollisions : public AbstractWindow {
     s << "auto-disable ";
     if (autoDisable_)
       s << "on, thresholds " << disableLinear_ << " m/s / " << disableAngular_ << " rad/s ("
-        << frozenInAirCount() << " plates frozen in the air)";
+        << plates_.frozenInAirCount() << " plates frozen in the air)";
     else
       s << "off";
     s << "   island stepping threads " << threads_;
@@ -198,14 +166,14 @@ class ManyCollisions : public AbstractWindow {
   void addMetrics(Metrics& m) const override {
     m.set("reproducible", threads_ > 1 ? 0 : 1);
     m.set("plates", static_cast<double>(plates_.size()));
-    m.set("landed_plates", landedCount());
+    m.set("landed_plates", plates_.landedCount());
     m.set("ms_per_step", cost_.meanMilliseconds());
     m.set("cpu_ms_per_step", cpuCost_.meanMilliseconds());
-    m.set("max_axis_offset", maxAxisOffset());
-    m.set("stack_height", stackHeight());
+    m.set("max_axis_offset", plates_.maxAxisOffset());
+    m.set("stack_height", plates_.height());
     m.set("plate_thickness_m", PLATE_THICKNESS);  // the lab's stack rule needs it
-    m.set("max_twist_degrees", maxTwistDegrees());
-    m.set("plates_frozen_in_air", frozenInAirCount());
+    m.set("max_twist_degrees", plates_.maxTwistDegrees());
+    m.set("plates_frozen_in_air", plates_.frozenInAirCount());
     m.set("auto_disable", autoDisable_ ? 1 : 0);
     m.set("threads", threads_);
     // Wall time inside collide + step + empty over the whole run; the rest of
@@ -270,86 +238,10 @@ class ManyCollisions : public AbstractWindow {
 
   void spawnPlate() {
     Box& plate = add<Box>(world(), space(), PLATE_WIDTH, PLATE_THICKNESS, PLATE_WIDTH, PLATE_MASS);
-    plate.setPosition(0.0, spawnHeight(), 0.0);
+    plate.setPosition(0.0, plates_.spawnHeight(), 0.0);
     const float shade = 0.55f + 0.4f * static_cast<float>(plates_.size() % 5) / 4.0f;
     plate.color = Color{shade, 0.75f * shade, 0.35f};
-    plates_.push_back({&plate, simulatedTime(), false});
-  }
-
-  // 6 m, or 1 m above the stack once it nears 6 m, and clear of falling plates.
-  double spawnHeight() const {
-    double height = std::max(SPAWN_HEIGHT, stackHeight() + SPAWN_ABOVE_STACK);
-    for (const Plate& plate : plates_)
-      if (!plate.landed) height = std::max(height, plate.box->getPosition()[1] + MIN_SPAWN_SEPARATION);
-    return height;
-  }
-
-  // Only plates from the oldest one not yet landed on are checked, so the
-  // cost per step stays with the few falling plates, not the whole stack.
-  // A plate can come to rest on one still rocking below it: the one below
-  // is checked again until it is still too.
-  void markLandedPlates() {
-    for (std::size_t i = firstInAir_; i < plates_.size(); ++i) {
-      Plate& plate = plates_[i];
-      if (plate.landed) continue;
-      if (simulatedTime() - plate.bornAt < LANDING_MIN_AGE || speedOf(plate.box->getBody()) > LANDED_SPEED)
-        continue;
-      plate.landed = true;
-    }
-    while (firstInAir_ < plates_.size() && plates_[firstInAir_].landed) ++firstInAir_;
-  }
-
-  // Top face of the highest landed plate, where it is now (the stack settles
-  // under the weight of later plates).
-  double stackHeight() const {
-    double top = 0.0;
-    for (const Plate& plate : plates_)
-      if (plate.landed) top = std::max(top, plate.box->getPosition()[1] + PLATE_THICKNESS / 2);
-    return top;
-  }
-
-  // Plates auto-disable has put to rest away from the stack: disabled, with
-  // their bottom face more than FROZEN_GAP above the top of the next lower
-  // plate (or the platform). Always 0 without auto-disable.
-  int frozenInAirCount() const {
-    std::vector<std::pair<double, bool>> plates;  // centre height, disabled
-    for (const Plate& plate : plates_)
-      plates.push_back({plate.box->getPosition()[1], !dBodyIsEnabled(plate.box->getBody())});
-    std::sort(plates.begin(), plates.end());
-    int frozen = 0;
-    double below = 0.0;  // top of the platform, then of each plate
-    for (const auto& [y, disabled] : plates) {
-      if (disabled && y - PLATE_THICKNESS / 2 > below + FROZEN_GAP) ++frozen;
-      below = y + PLATE_THICKNESS / 2;
-    }
-    return frozen;
-  }
-
-  int landedCount() const {
-    return static_cast<int>(std::count_if(plates_.begin(), plates_.end(), [](const Plate& p) { return p.landed; }));
-  }
-
-  // Largest turn of a plate about the vertical from how it was dropped (square
-  // plates: 0 to 45 degrees), the "twist" the thesis saw with CFM > 0.
-  double maxTwistDegrees() const {
-    double largest = 0.0;
-    for (const Plate& plate : plates_) {
-      const dReal* r = dBodyGetRotation(plate.box->getBody());  // local x in world: (r[0], r[4], r[8])
-      double yaw = std::fabs(std::atan2(-r[8], r[0])) * 180.0 / M_PI;
-      yaw = std::fmod(yaw, 90.0);
-      largest = std::max(largest, std::min(yaw, 90.0 - yaw));
-    }
-    return largest;
-  }
-
-  // Largest horizontal distance of a plate centre from the axis x = z = 0.
-  double maxAxisOffset() const {
-    double largest = 0.0;
-    for (const Plate& plate : plates_) {
-      const dReal* p = plate.box->getPosition();
-      largest = std::max(largest, std::hypot(p[0], p[2]));
-    }
-    return largest;
+    plates_.add(&plate, simulatedTime());
   }
 
   void cycleSpace(int direction) {
@@ -364,8 +256,7 @@ class ManyCollisions : public AbstractWindow {
     notify("collision space " + before + " -> " + spaceKindName(next));
   }
 
-  std::vector<Plate> plates_;
-  std::size_t firstInAir_ = 0;  // plates_ before it have all landed
+  PlateStack plates_;
   StepCostWindow cost_{COST_WINDOW};
   StepCostWindow cpuCost_{COST_WINDOW};  // process CPU time per step (all threads, the whole step loop)
   std::clock_t lastCpuClock_ = 0;

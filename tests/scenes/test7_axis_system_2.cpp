@@ -25,33 +25,14 @@
 #include "SceneRegistry.h"
 #include "shared/AngularSpeedLimit.h"
 #include "shared/BodyMeasures.h"
+#include "shared/SceneConstants.h"
 
 namespace {
 
 using namespace odelab;
 
-// From the thesis.
-constexpr double ANCHOR_HEIGHT = 10.0;  // ball joint to the static world
-constexpr double PIVOT_MASS = 5.0;
-constexpr double BIG_MASS = 5000.0;
-constexpr double TEST_CUBE_MASS = 100.0;
-constexpr double THROW_SPEED = 30.0;
-constexpr double THESIS_MAX_ANGULAR_SPEED = 10.0;  // rad/s
+using namespace scene::test7;  // the hanging pair and the throws: SceneConstants.h (shared with peers/)
 
-// Sizes and the throw (proposed).
-constexpr double PIVOT_SIDE = 1.0;
-constexpr double BIG_SIDE = 5.0;
-constexpr double TEST_CUBE_SIDE = 1.0;
-constexpr double THROW_DISTANCE = 10.0;  // from the pivot's centre, level with it
-
-// The pivot hangs with its top-face centre on the fixed anchor; the big cube
-// hangs with its top-face centre on the pivot's bottom-face centre.
-constexpr double PIVOT_CENTRE_Y = ANCHOR_HEIGHT - PIVOT_SIDE / 2;
-constexpr double LOWER_ANCHOR_Y = ANCHOR_HEIGHT - PIVOT_SIDE;
-constexpr double BIG_CENTRE_Y = LOWER_ANCHOR_Y - BIG_SIDE / 2;
-
-constexpr int DEFAULT_THROWS = 3;               // headless (proposed)
-constexpr double DEFAULT_THROW_INTERVAL = 5.0;  // s between throws, headless (proposed)
 constexpr int THROWS_ON_HUD = 5;
 constexpr double ANCHOR_MARKER_RADIUS = 0.15;  // drawn only: it collides with nothing
 // The pair's resting energy is averaged while the first throw is in the air

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -77,6 +78,7 @@ class HingeStability : public PendulumScene {
     deflectionAtMax_ = deflection();
     lowestBob_ = bobClearance();
     measuredSteps_ = 0;
+    recent_.clear();
     sampler_ = FixedIntervalSampler(sampleInterval_);
     openOutputFile();
     sampleIfDue();  // the row at t = 0
@@ -91,6 +93,8 @@ class HingeStability : public PendulumScene {
     elongationSum_ += elongation_;
     lowestBob_ = std::min(lowestBob_, bobClearance());
     ++measuredSteps_;
+    recent_.push_back({simulatedTime(), deflection(), elongation_});
+    while (recent_.front().time < simulatedTime() - SETTLE_WINDOW) recent_.pop_front();
     sampleIfDue();
   }
 
@@ -130,6 +134,19 @@ class HingeStability : public PendulumScene {
     m.set("gravity_m_s2", settings().gravity);
     m.set("lowest_bob_height_m", lowestBob_);
     m.set("output_rows", static_cast<double>(log_.rows()));
+    // Whether the pendulum has settled: how far it still swings (peak to
+    // peak of the deflection) and stretches over the run's last SETTLE_WINDOW.
+    double lowAngle = 0.0, highAngle = 0.0, lowStretch = 0.0, highStretch = 0.0;
+    if (!recent_.empty()) {
+      lowAngle = highAngle = recent_.front().deflection;
+      lowStretch = highStretch = recent_.front().elongation;
+      for (const Recent& r : recent_) {
+        lowAngle = std::min(lowAngle, r.deflection), highAngle = std::max(highAngle, r.deflection);
+        lowStretch = std::min(lowStretch, r.elongation), highStretch = std::max(highStretch, r.elongation);
+      }
+    }
+    m.set("swing_last_10s_deg", (highAngle - lowAngle) * 180.0 / M_PI);
+    m.set("elongation_range_last_10s", highStretch - lowStretch);
   }
 
   double defaultHeadlessSeconds() const override { return RUN_SECONDS; }
@@ -169,6 +186,12 @@ class HingeStability : public PendulumScene {
   double deflectionAtMax_ = 0.0;
   double lowestBob_ = NaN;  // lowest point of the bob above the ground, m
   long measuredSteps_ = 0;
+  // The last SETTLE_WINDOW of the run, step by step, for the settling metrics.
+  struct Recent {
+    double time, deflection, elongation;
+  };
+  static constexpr double SETTLE_WINDOW = 10.0;  // s
+  std::deque<Recent> recent_;
 };
 
 }  // namespace

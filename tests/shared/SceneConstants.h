@@ -40,6 +40,32 @@ constexpr double START_DEFLECTION = 1.5707963267948966;  // pi / 2: released hor
 constexpr double RUN_SECONDS = 60.0;   // the thesis's run
 }  // namespace test2
 
+// ---- test3: Domino -----------------------------------------------------------
+namespace test3 {
+constexpr double DOMINO_THICKNESS = 0.2;  // along the path (proposed)
+constexpr double DOMINO_HEIGHT = 2.0;     // (proposed)
+constexpr double DOMINO_WIDTH = 1.0;      // across the path (proposed)
+constexpr double DOMINO_MASS = 1.0;       // (proposed)
+constexpr int DEFAULT_DOMINOES = 60;      // (proposed: 60 or more)
+constexpr double DOMINO_SPACING = 1.0;    // centre to centre along the path (proposed): half the height
+// Archimedean spiral r = SPIRAL_START_RADIUS + SPIRAL_PITCH * angle / 2 pi,
+// walked from the inside out, so any number of dominoes fits.
+constexpr double SPIRAL_START_RADIUS = 4.0;  // (proposed) tight enough to look like a spiral, loose
+                                             // enough that a 1 m wide plate still hits the next one
+constexpr double SPIRAL_PITCH = 2.5;         // m between turns (proposed): more than the plate width
+// The first domino starts leaning forward on its leading edge and is pushed:
+// without the push, a plate tipping from rest is slower than the 0.1
+// thresholds for the first 10 steps and auto-disable would freeze it.
+constexpr double FIRST_TILT_DEGREES = 10.0;  // (proposed) past the tipping angle atan(0.2 / 2) = 5.7 degrees
+constexpr double FIRST_PUSH = 1.0;           // rad/s about the leading edge (proposed): top moves at 2 m/s
+// A domino has fallen once it leans more than this from vertical: far past
+// the tipping angle (5.7 degrees), so it cannot stand up again; a fallen
+// domino rests on its successor at 50 degrees or more (see doc/tests/test3.md).
+constexpr double FALLEN_TILT_DEGREES = 30.0;
+constexpr double DEFAULT_MU = 1.0;  // the thesis's usual Coulomb coefficient
+constexpr double AUTO_DISABLE_THRESHOLD = 0.1;  // linear (m/s) and angular (rad/s), the thesis's
+}  // namespace test3
+
 // ---- test4: Different Weights ------------------------------------------------
 namespace test4 {
 constexpr double PLATFORM_SIDE = 10.0;
@@ -61,6 +87,23 @@ namespace test5 {
 constexpr double PLATE_WIDTH = 5.0;       // x and z (thesis: about [5.0, 0.05, 5.0])
 constexpr double PLATE_THICKNESS = 0.05;  // y
 constexpr double PLATE_MASS = 1.0;        // kg (proposed)
+constexpr double PLATFORM_SIDE = 10.0;
+constexpr double PLATFORM_THICKNESS = 0.2;  // top face at y = 0
+constexpr double SPAWN_HEIGHT = 6.0;       // plate centre when dropped
+constexpr double SPAWN_ABOVE_STACK = 1.0;  // (proposed) once the stack nears 6 m, drop this far above its top
+constexpr double DEFAULT_SPAWN_INTERVAL = 0.3;  // s, headless (proposed): 50 plates land within 20 s
+constexpr int DEFAULT_PLATES = 50;              // headless plate count (proposed)
+// A plate has landed once it is older than LANDING_MIN_AGE (so it had time to
+// start falling) and slower than LANDED_SPEED; from then on it is part of the stack.
+constexpr double LANDING_MIN_AGE = 0.1;  // s
+constexpr double LANDED_SPEED = 0.05;    // m/s
+// Plates dropped in quick succession (N held down) start at least this far
+// apart, centre to centre, so a new plate never overlaps one still falling.
+constexpr double MIN_SPAWN_SEPARATION = 2 * PLATE_THICKNESS;
+// A disabled plate whose bottom face is this far above the top of the plate
+// (or platform) below it is not resting on the stack: auto-disable froze it
+// in the air.
+constexpr double FROZEN_GAP = 0.01;  // m
 }  // namespace test5
 
 // ---- test6: Axis system -------------------------------------------------------
@@ -77,6 +120,32 @@ constexpr double UPRIGHT_TILT_DEGREES = 1.0;
 constexpr double UPRIGHT_SIDEWAYS_METRES = 0.05;
 constexpr double DEFAULT_SECONDS = 60.0;  // headless run (proposed): the thesis saw a fall within seconds
 }  // namespace test6
+
+// ---- test7: Axis system 2 ----------------------------------------------------
+namespace test7 {
+// From the thesis.
+constexpr double ANCHOR_HEIGHT = 10.0;  // ball joint to the static world
+constexpr double PIVOT_MASS = 5.0;
+constexpr double BIG_MASS = 5000.0;
+constexpr double TEST_CUBE_MASS = 100.0;
+constexpr double THROW_SPEED = 30.0;
+constexpr double THESIS_MAX_ANGULAR_SPEED = 10.0;  // rad/s
+
+// Sizes and the throw (proposed).
+constexpr double PIVOT_SIDE = 1.0;
+constexpr double BIG_SIDE = 5.0;
+constexpr double TEST_CUBE_SIDE = 1.0;
+constexpr double THROW_DISTANCE = 10.0;  // from the pivot's centre, level with it
+
+// The pivot hangs with its top-face centre on the fixed anchor; the big cube
+// hangs with its top-face centre on the pivot's bottom-face centre.
+constexpr double PIVOT_CENTRE_Y = ANCHOR_HEIGHT - PIVOT_SIDE / 2;
+constexpr double LOWER_ANCHOR_Y = ANCHOR_HEIGHT - PIVOT_SIDE;
+constexpr double BIG_CENTRE_Y = LOWER_ANCHOR_Y - BIG_SIDE / 2;
+
+constexpr int DEFAULT_THROWS = 3;               // headless (proposed)
+constexpr double DEFAULT_THROW_INTERVAL = 5.0;  // s between throws, headless (proposed)
+}  // namespace test7
 
 // ---- test8: Hinge stability --------------------------------------------------
 namespace test8 {

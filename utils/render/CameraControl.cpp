@@ -96,7 +96,7 @@ glm::vec3 positionOf(const AbstractObject& object) {
 }  // namespace
 
 void CameraControl::follow(int index, const AbstractWindow& scene) {
-  const auto& objects = scene.objects();
+  const auto& objects = scene.run().objects();
   followed_ = index >= 0 && index < static_cast<int>(objects.size()) ? index : -1;
   if (followed_ < 0) return;
   followedObject_ = objects[static_cast<size_t>(index)].get();
@@ -105,7 +105,7 @@ void CameraControl::follow(int index, const AbstractWindow& scene) {
 
 void CameraControl::keepFollowing(AbstractWindow& scene) {
   if (followed_ < 0) return;
-  const auto& objects = scene.objects();
+  const auto& objects = scene.run().objects();
   // A reset or a rewind builds new objects: the one followed is gone.
   if (followed_ >= static_cast<int>(objects.size()) || objects[static_cast<size_t>(followed_)].get() != followedObject_) {
     followed_ = -1;
@@ -120,7 +120,7 @@ void CameraControl::keepFollowing(AbstractWindow& scene) {
 void frameScene(AbstractWindow& scene) {
   glm::vec3 low(1e30f), high(-1e30f);
   bool any = false;
-  for (const auto& object : scene.objects()) {
+  for (const auto& object : scene.run().objects()) {
     if (object->shape() == Shape::Plane || !object->getGeom()) continue;
     dReal box[6];
     dGeomGetAABB(object->getGeom(), box);

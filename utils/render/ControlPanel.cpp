@@ -126,7 +126,7 @@ bool flowButton(const char* label) {
 std::string commandLineOf(const AbstractWindow& scene) {
   std::string line = scene.programName();
   for (const SettingSpec& spec : settingsTable())
-    line += std::string(" ") + spec.option + " " + settingText(spec.id, settingValue(scene.settings(), spec.id));
+    line += std::string(" ") + spec.option + " " + settingText(spec.id, settingValue(scene.tuning().settings(), spec.id));
   return line;
 }
 
@@ -202,9 +202,24 @@ bool ControlPanel::edit(const std::string& label, double& value, double min, dou
   return true;
 }
 
+void ControlPanel::sceneList(AbstractWindow& scene) {
+  SessionTools& session = scene.session();
+  const std::vector<SceneChoice>& choices = session.sceneChoices();
+  if (choices.empty()) return;
+  // Open at first: choosing a scene is what the launcher is for.
+  if (!ImGui::CollapsingHeader("Scenes (Page Down / Up)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  for (int i = 0; i < static_cast<int>(choices.size()); ++i) {
+    const bool current = i == session.currentScene();
+    const std::string row = choices[i].name + (current ? "   (on screen)" : "");
+    if (ImGui::Selectable(row.c_str(), current)) session.requestSceneSwitch(i - session.currentScene());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choices[i].description.c_str());
+  }
+  ImGui::Separator();
+}
+
 void ControlPanel::timeButtons(AbstractWindow& scene) {
   auto press = [&scene](SDL_Keycode key) { scene.handleKey(key, false); };
-  if (ImGui::Button(scene.time().paused() ? "Run (P)" : "Pause (P)")) press(SDLK_p);
+  if (ImGui::Button(scene.session().time().paused() ? "Run (P)" : "Pause (P)")) press(SDLK_p);
   if (flowButton("Step (O)")) press(SDLK_o);
   // R resets in most scenes; where the scene gave R an action of its own
   // (test7 throws), Shift+R resets.
@@ -214,7 +229,7 @@ void ControlPanel::timeButtons(AbstractWindow& scene) {
   if (ImGui::Button("Slower (-)")) press(SDLK_MINUS);
   if (flowButton("Faster (=)")) press(SDLK_EQUALS);
   ImGui::SameLine();
-  ImGui::Text("x%s", formatValue(scene.time().scale()).c_str());
+  ImGui::Text("x%s", formatValue(scene.session().time().scale()).c_str());
   if (ImGui::Button("Rewind (,)")) press(SDLK_COMMA);
   if (flowButton("Forward (.)")) press(SDLK_PERIOD);
   if (ImGui::Button("Start view (Home)")) scene.camera().goHome();
@@ -235,9 +250,9 @@ void ControlPanel::copyCommandLine(const AbstractWindow& scene) {
 
 void ControlPanel::timelineSlider(AbstractWindow& scene) {
   // Always there, so that the panel's rows keep their places.
-  long long last = std::max(1LL, scene.timeline().horizon());
+  long long last = std::max(1LL, scene.session().timeline().horizon());
   long long first = 0;
-  long long target = scrubbing_ ? scrubStep_ : std::min(scene.steps(), last);
+  long long target = scrubbing_ ? scrubStep_ : std::min(scene.run().steps(), last);
   ImGui::SetNextItemWidth(-1);
   ImGui::SliderScalar("##timeline", ImGuiDataType_S64, &target, &first, &last, "timeline: step %lld",
                       ImGuiSliderFlags_AlwaysClamp);
@@ -248,7 +263,7 @@ void ControlPanel::timelineSlider(AbstractWindow& scene) {
   // Released after a drag: the run as it was at that step, rebuilt by
   // replaying its recorded inputs (as , and . do), and paused there.
   if (ImGui::IsItemDeactivated()) {
-    if (scrubbing_ && scrubStep_ != scene.steps()) scene.replayTo(scrubStep_);
+    if (scrubbing_ && scrubStep_ != scene.run().steps()) scene.replayTo(scrubStep_);
     scrubbing_ = false;
   }
 }
@@ -269,7 +284,7 @@ void ControlPanel::sceneKeys(AbstractWindow& scene) {
 }
 
 void ControlPanel::viewToggles(AbstractWindow& scene) {
-  const ViewFlags& flags = scene.viewFlags();
+  const ViewFlags& flags = scene.session().viewFlags();
   const struct {
     const char* label;
     bool on;
@@ -289,14 +304,14 @@ void ControlPanel::viewToggles(AbstractWindow& scene) {
     if (twoColumns && column++ % 2 == 1) ImGui::SameLine(style.WindowPadding.x + columnWidth);
     if (ImGui::Checkbox(toggle.label, &on)) scene.handleKey(toggle.key, false);
   }
-  const std::string increment = "F2 increment " + formatValue(scene.f2Increment());
+  const std::string increment = "F2 increment " + formatValue(scene.tuning().f2Increment());
   if (ImGui::Button(increment.c_str())) scene.handleKey(SDLK_F2, false);
   if (flowButton("smaller")) scene.handleKey(SDLK_F2, true);
 }
 
 void ControlPanel::settings(AbstractWindow& scene) {
   for (const SettingSpec& spec : settingsTable()) {
-    double value = settingValue(scene.settings(), spec.id);
+    double value = settingValue(scene.tuning().settings(), spec.id);
     if (spec.id == SettingId::Solver) {
       ImGui::TextUnformatted("solver");
       int choice = value < 0.5 ? 0 : 1;
@@ -316,7 +331,7 @@ void ControlPanel::settings(AbstractWindow& scene) {
 }
 
 void ControlPanel::parameters(AbstractWindow& scene) {
-  const auto& all = scene.parameters().all();
+  const auto& all = scene.tuning().parameters().all();
   for (int i = 0; i < static_cast<int>(all.size()); ++i) {
     const SceneParameter& p = all[i];
     double value = *p.value;
@@ -348,7 +363,9 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
     ImGui::Begin("Controls (Tab hides)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                                       ImGuiWindowFlags_NoCollapse);
     // The world settings come first, where every scene has them at the
-    // same place; then the scene's own keys, the drawing and its values.
+    // same place (after the launcher's scene list); then the scene's own
+    // keys, the drawing and its values.
+    sceneList(scene);
     timeButtons(scene);
     ImGui::Separator();
     settings(scene);
@@ -357,7 +374,7 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
     timelineSlider(scene);
     sceneKeys(scene);
     viewToggles(scene);
-    if (!scene.parameters().all().empty()) {
+    if (!scene.tuning().parameters().all().empty()) {
       ImGui::Separator();
       parameters(scene);
     }

@@ -37,6 +37,9 @@ class ControlPanel {
  private:
   static constexpr int MARGIN = 10;
   bool contains(int x, int y) const;
+  // The launcher's scenes, one row each, the one on screen marked; a click
+  // switches as Page Down does. Absent in a program of its own.
+  void sceneList(AbstractWindow& scene);
   void timeButtons(AbstractWindow& scene);
   // A slider over the steps this run has reached: a drag goes back (or
   // forth again) to any of them.

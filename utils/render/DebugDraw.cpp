@@ -51,7 +51,7 @@ void wireBox(VertexList& list, const dReal aabb[6], Rgba color) {
 DebugDraw::DebugDraw(const std::string& shaderDir) : program_(shaderDir) {}
 
 void DebugDraw::addBoxes(const AbstractWindow& scene) {
-  for (const auto& object : scene.objects()) {
+  for (const auto& object : scene.run().objects()) {
     if (!object->visible) continue;
     const dGeomID geom = object->getGeom();
     if (dGeomGetClass(geom) == dPlaneClass) continue;  // infinite
@@ -64,7 +64,7 @@ void DebugDraw::addBoxes(const AbstractWindow& scene) {
 }
 
 void DebugDraw::addContacts(const AbstractWindow& scene, const glm::vec3& eye) {
-  for (const ContactMarker& contact : scene.contactMarkers()) {
+  for (const ContactMarker& contact : scene.session().contactMarkers()) {
     const glm::vec3 p = vec(contact.position);
     points_.point(p, CONTACT_COLOR);
     overlay_.line(p, p + vec(contact.normal) * (NORMAL_LENGTH * screenScale(p, eye)), NORMAL_COLOR);
@@ -72,7 +72,7 @@ void DebugDraw::addContacts(const AbstractWindow& scene, const glm::vec3& eye) {
 }
 
 void DebugDraw::addJoints(const AbstractWindow& scene, const glm::vec3& eye) {
-  for (const JointMarker& joint : scene.jointMarkers()) {
+  for (const JointMarker& joint : scene.run().jointMarkers()) {
     const glm::vec3 a = vec(joint.anchor), b = vec(joint.anchor2);
     const float scale = screenScale(a, eye);
     cross(overlay_, a, CROSS_SIZE * scale, ANCHOR_COLOR);
@@ -91,7 +91,7 @@ void DebugDraw::addJoints(const AbstractWindow& scene, const glm::vec3& eye) {
 // A ball joint has no visible part: its link, from each body's centre to
 // its anchor, is always drawn (test6, test7), over the bodies.
 void DebugDraw::addBallLinks(const AbstractWindow& scene) {
-  for (const JointMarker& joint : scene.jointMarkers()) {
+  for (const JointMarker& joint : scene.run().jointMarkers()) {
     if (joint.hasAxis) continue;
     if (joint.hasBody1) overlay_.line(vec(joint.body1), vec(joint.anchor), LINK_COLOR);
     if (joint.hasBody2) overlay_.line(vec(joint.body2), vec(joint.anchor2), LINK_COLOR);
@@ -101,7 +101,7 @@ void DebugDraw::addBallLinks(const AbstractWindow& scene) {
 
 void DebugDraw::draw(const AbstractWindow& scene, const glm::mat4& viewProjection, bool dragging,
                      const glm::vec3& dragFrom, const glm::vec3& dragTo) {
-  const ViewFlags& flags = scene.viewFlags();
+  const ViewFlags& flags = scene.session().viewFlags();
   lines_.clear();
   overlay_.clear();
   points_.clear();

@@ -112,7 +112,7 @@ void Renderer::render(const AbstractWindow& scene, int width, int height) {
   sceneProgram_.use();
   setLitPassUniforms(scene, width, height);
   shadowMap_.bindTexture(GL_TEXTURE0);
-  drawScene(scene, sceneUniforms_, scene.viewFlags().wireframe);
+  drawScene(scene, sceneUniforms_, scene.session().viewFlags().wireframe);
   glBindVertexArray(0);
 }
 
@@ -138,7 +138,7 @@ void Renderer::setLitPassUniforms(const AbstractWindow& scene, int width, int he
 
 void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& uniforms, bool wireframe) const {
   const glm::vec3 focus = scene.camera().position();
-  for (const auto& object : scene.objects()) {
+  for (const auto& object : scene.run().objects()) {
     if (!object->visible) continue;
     const Mesh* mesh = nullptr;
     glm::mat4 model;

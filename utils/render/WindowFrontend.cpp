@@ -68,7 +68,7 @@ void printTotals(const char* what, const FrameTotals& t) {
 }
 
 bool finished(const AbstractWindow& scene, const RunOptions& options) {
-  return scene.quitRequested() || stopSignal() != 0 || (options.seconds > 0.0 && scene.simulatedTime() >= options.seconds);
+  return scene.session().quitRequested() || stopSignal() != 0 || (options.seconds > 0.0 && scene.run().simulatedTime() >= options.seconds);
 }
 
 // Everything drawn in a window, built once the GL context exists and
@@ -163,7 +163,7 @@ void FrameLoop::pollEvents(long long frame) {
 
 // Page Down / Space and Page Up turn the help's pages while it is open.
 bool FrameLoop::turnHelpPage(const SDL_Event& event) {
-  if (!scene_.viewFlags().help) {
+  if (!scene_.session().viewFlags().help) {
     views_.help.close();
     return false;
   }
@@ -196,8 +196,8 @@ void FrameLoop::draw() {
   views_.text.setSizeFor(options_.textSize, height);
   std::vector<std::string> hud = scene_.hudLines();
   // The full HUD also says where the frame's time goes.
-  if (scene_.hudMode() == HudMode::Full && !profile_.text().empty()) hud.insert(hud.begin() + std::min<long>(3, static_cast<long>(hud.size())), profile_.text());
-  hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.hudMode() == HudMode::Full);
+  if (scene_.session().hudMode() == HudMode::Full && !profile_.text().empty()) hud.insert(hud.begin() + std::min<long>(3, static_cast<long>(hud.size())), profile_.text());
+  hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.session().hudMode() == HudMode::Full);
   const int sceneHeight = std::max(1, height - hudStrip_);
   scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(sceneHeight));
   views_.renderer.render(scene_, width, sceneHeight);
@@ -207,8 +207,8 @@ void FrameLoop::draw() {
   views_.renderer.present();
   glViewport(0, 0, width, height);
   views_.text.drawHud(width, height);
-  const ViewFlags& flags = scene_.viewFlags();
-  if (flags.plot) views_.plot.draw(scene_.chart(), views_.text, width, height);
+  const ViewFlags& flags = scene_.session().viewFlags();
+  if (flags.plot) views_.plot.draw(scene_.session().chart(), views_.text, width, height);
   drawNotice(width, height);
   views_.panel.draw(scene_, windowWidth, height);
   // The help is read, not worked beside: it takes the whole window, over
@@ -226,7 +226,7 @@ void FrameLoop::draw() {
 void FrameLoop::saveRequestedScreenshot() {
   // A second F12 at the same simulated time (paused) gets _2, _3, ...
   const std::string stem =
-      joinPath(options_.outDir, scene_.programName() + "_t" + formatFixed("%.3f", scene_.simulatedTime()));
+      joinPath(options_.outDir, scene_.programName() + "_t" + formatFixed("%.3f", scene_.run().simulatedTime()));
   std::string path = stem + ".png";
   std::error_code error;
   for (int n = 2; std::filesystem::exists(path, error); ++n) path = stem + "_" + std::to_string(n) + ".png";
@@ -251,7 +251,7 @@ void FrameLoop::recordFrame(long long frame) {
 // Paused, with no script playing, no key flying the camera and no drag:
 // nothing changes until an event comes.
 bool FrameLoop::idle() const {
-  return scene_.time().paused() && !player_.playing() && !cameraKeysHeld() && !scene_.dragging() &&
+  return scene_.session().time().paused() && !player_.playing() && !cameraKeysHeld() && !scene_.session().dragging() &&
          options_.recordDir.empty() && options_.screenshot.empty();
 }
 
@@ -271,9 +271,9 @@ double FrameLoop::runFrame() {
   const double elapsed = seconds(previous_, now);
   previous_ = now;
   moveCamera(scene_, elapsed);
-  const double simulatedBefore = scene_.simulatedTime();
-  const long long stepsBefore = scene_.steps();
-  const double collideBefore = scene_.collideWallSeconds();
+  const double simulatedBefore = scene_.run().simulatedTime();
+  const long long stepsBefore = scene_.run().steps();
+  const double collideBefore = scene_.run().collideWallSeconds();
   // An OdeError leaves through here; RAII cleans up.
   scene_.advanceFrame(recording ? RECORD_FRAME_SECONDS : elapsed,
                       recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET);
@@ -281,14 +281,14 @@ double FrameLoop::runFrame() {
   input_.followBody(scene_);
   // A reset or a rewind moves time back: only forward steps count.
   const double advanced =
-      scene_.steps() > stepsBefore ? std::max(0.0, scene_.simulatedTime() - simulatedBefore) : 0.0;
+      scene_.run().steps() > stepsBefore ? std::max(0.0, scene_.run().simulatedTime() - simulatedBefore) : 0.0;
 
   const Uint64 drawStart = SDL_GetPerformanceCounter();
   draw();
   const Uint64 drawEnd = SDL_GetPerformanceCounter();
   // Read the back buffer before the swap leaves its contents undefined.
   const bool screenshotNow = screenshotRun && frame == screenshotFrame;
-  if (scene_.takeScreenshotRequest()) saveRequestedScreenshot();
+  if (scene_.session().takeScreenshotRequest()) saveRequestedScreenshot();
   if (recording) recordFrame(frame);
   if (screenshotNow) saveScreenshot(options_.screenshot, window_.width(), window_.height());
 
@@ -298,10 +298,10 @@ double FrameLoop::runFrame() {
   if (!screenshotNow) window_.swap();  // a software renderer does much of its work here
   const Uint64 swapped = SDL_GetPerformanceCounter();
   const double busy = seconds(start, swapped);
-  profile_.add(scene_.collideWallSeconds() - collideBefore, stepping, seconds(drawStart, drawEnd),
+  profile_.add(scene_.run().collideWallSeconds() - collideBefore, stepping, seconds(drawStart, drawEnd),
                seconds(drawEnd, swapped), elapsed);
   totals_.busySeconds += busy;
-  scene_.time().endFrame(elapsed, advanced, stepping, busy, period_);
+  scene_.session().time().endFrame(elapsed, advanced, stepping, busy, period_);
   if (screenshotNow) {
     std::printf("screenshot: %s (%dx%d, frame %lld)\n", options_.screenshot.c_str(), window_.width(),
                 window_.height(), frame);
@@ -372,7 +372,7 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
 #ifdef __EMSCRIPTEN__
     // Built only now that the window can run, so that a refused window run
     // (no display, unusable shaders or font) leaves no output file behind.
-    if (!scene->world()) scene->initialize(options);
+    if (!scene->run().world()) scene->initialize(options);
     // The frames outlive this call and the caller's options: they keep a
     // copy for the page's life. A page runs one scene (no switching).
     const RunOptions& frameOptions = *new RunOptions(options);
@@ -393,11 +393,11 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
       // Built only now that the window can run, so that a refused window run
       // (no display, unusable shaders or font) leaves no output file behind;
       // a runner that built it already is fine too.
-      if (!scene->world()) scene->initialize(options);
+      if (!scene->run().world()) scene->initialize(options);
       FrameLoop loop(*scene, options, *window, *views, *player);
       const int status = loop.run();
-      if (!next || scene->switchRequest() == 0 || stopSignal() != 0) return finish(status);
-      scene = &next(scene->switchRequest());
+      if (!next || scene->session().switchRequest() == 0 || stopSignal() != 0) return finish(status);
+      scene = &next(scene->session().switchRequest());
       SDL_SetWindowTitle(window->sdlWindow(), scene->title().c_str());
     }
 #endif

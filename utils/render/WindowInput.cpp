@@ -23,14 +23,14 @@ bool WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& 
   ray(scene, button.x, button.y, view, origin, direction);
   const double o[3] = {origin.x, origin.y, origin.z};
   const double d[3] = {direction.x, direction.y, direction.z};
-  const PickHit hit = scene.pickAt(o, d);
+  const PickHit hit = scene.run().pickAt(o, d);
   if (hit.objectIndex < 0) {  // nothing there: the camera's (a double click stops following)
     if (button.clicks >= 2) camera_.follow(-1, scene);
     return false;
   }
   if (button.clicks >= 2) camera_.follow(hit.objectIndex, scene);
   scene.beginDrag(hit, hit.point);
-  if (!scene.dragging()) return false;  // a static object: nothing to pull
+  if (!scene.session().dragging()) return false;  // a static object: nothing to pull
   held_ = true;
   grabDistance_ = hit.distance;
   grabbed_ = scene.draggedObject();
@@ -41,10 +41,10 @@ bool WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& 
 bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, const ViewRect& view) {
   switch (event.type) {
     case SDL_QUIT:
-      scene.requestQuit();
+      scene.session().requestQuit();
       break;
     case SDL_KEYDOWN:
-      if (event.key.keysym.sym == SDLK_ESCAPE) scene.requestQuit();
+      if (event.key.keysym.sym == SDLK_ESCAPE) scene.session().requestQuit();
       if (camera_.handleKey(event.key, scene)) break;
       // Auto-repeat would toggle switches and step settings at the repeat
       // rate; one press is one action.
@@ -101,7 +101,7 @@ bool WindowInput::dragLine(const AbstractWindow& scene, glm::vec3& grabbed, glm:
     dBodyGetRelPointPos(object->getBody(), grabLocal_[0], grabLocal_[1], grabLocal_[2], p);
   else
     for (int k = 0; k < 3; ++k) p[k] = dBodyGetPosition(object->getBody())[k];
-  const double* t = scene.dragTarget();
+  const double* t = scene.session().dragTarget();
   grabbed = glm::vec3(p[0], p[1], p[2]);
   target = glm::vec3(t[0], t[1], t[2]);
   return true;
@@ -122,7 +122,7 @@ bool cameraKeysHeld() {
 }
 
 void syncMouseLook(const AbstractWindow& scene) {
-  const SDL_bool wanted = scene.mouseLook() ? SDL_TRUE : SDL_FALSE;
+  const SDL_bool wanted = scene.session().mouseLook() ? SDL_TRUE : SDL_FALSE;
   // May fail where relative mode is unsupported; the camera still turns by motion.
   if (SDL_GetRelativeMouseMode() != wanted) SDL_SetRelativeMouseMode(wanted);
 }

@@ -25,9 +25,12 @@ class Experiment:
 class Outcome:
     """An experiment's contribution to the report."""
 
-    def __init__(self, markdown, headline=(), missing=(), summary=()):
-        self.markdown = markdown
-        self.headline = list(headline)  # one-line findings for the top of RESULTS.md
+    def __init__(self, markdown, headline=(), missing=(), summary=(), claims=None):
+        self.markdown = markdown        # its conclusions as claims.slot(key), filled once every CSV is written
+        # One-line findings for the top of RESULTS.md: each a Claim, or a list
+        # of alternative Claims (the first that holds is shown).
+        self.headline = list(headline)
+        self.claims = dict(claims or {})  # slot key -> Claim or list of alternatives
         self.missing = list(missing)    # scene options the experiment needed and did not find
         self.summary = list(summary)    # rows for a table across a section's experiments
 

@@ -4,12 +4,39 @@ total energy of the pendulum over 60 s at ERP 0.4, CFM 0, step 0.001)."""
 import re
 
 from .. import markdown as md
+from ..claims import Claim, q, slot
 from ..plots import limits as plots
 from ..runner import RunSpec
 from .base import Experiment, Outcome
 from .thesis_choices import figure_of, read_csv, FIGURES
 
 FAILURE_FRACTION = 0.01  # the failure rule: total energy more than 1% from its start
+SUMMARY = "energy-test2-summary.csv"
+
+
+def figure(name):
+    return q(SUMMARY, name)
+
+
+HEADLINE = Claim("headline.test2.energy",
+                 "test2: over {s:n} s at the thesis's settings the total energy varies by {v:p2} as (max - min) / max, "
+                 "the thesis's definition (thesis: {t:p}); its largest |E - E0| / E0 is {w:p2}.",
+                 {"s": figure("seconds"), "v": figure("variation"), "t": figure("thesis_variation"),
+                  "w": figure("max_deviation")})
+RULE_HOLDS = Claim("energy-test2.rule.holds",
+                   "By the rule the energy holds: its largest |E - E0| / E0, {w:p3}, is within 1%.",
+                   {"w": figure("max_deviation")}, "w <= 0.01")
+RULE_FAILS = Claim("energy-test2.rule.fails",
+                   "By the rule the energy fails: its largest |E - E0| / E0 is {w:p3}, above 1%.",
+                   {"w": figure("max_deviation")}, "w > 0.01")
+THESIS = Claim("energy-test2.thesis",
+               "Like for like, (max - min) / max, this build's {v:p2} is {r:n2}x the thesis's {t:p}.",
+               {"v": figure("variation"), "t": figure("thesis_variation"), "r": "v / t"})
+_PERIOD = {"p": figure("period_s"), "e": figure("period_exact_s"), "d": "abs(p - e) / e"}
+PERIOD = [Claim("energy-test2.period.close", "The measured period, {p:n7} s, is within 1% of the exact {e:n7} s "
+                "({d:p2} off).", _PERIOD, "d < 0.01"),
+          Claim("energy-test2.period.off", "The measured period, {p:n7} s, is {d:p2} off the exact {e:n7} s.",
+                _PERIOD, "d >= 0.01")]
 
 
 def thesis_range():
@@ -61,6 +88,17 @@ class EnergyTest2(Experiment):
         thesis_min, thesis_max = thesis_range()
         thesis_variation = figure_of("test2", "ERP 0.4, CFM 0")[0]
         variation = r.m("energy_rel_variation")
+        summary = ctx.write_csv("energy-test2-summary", [
+            "seconds", "energy_start_J", "energy_min_J", "energy_max_J", "variation", "max_deviation", "drift",
+            "period_s", "period_exact_s", "thesis_min_J", "thesis_max_J", "thesis_variation"], [dict(
+                seconds=seconds, energy_start_J=start, energy_min_J=r.m("energy_min_J"),
+                energy_max_J=r.m("energy_max_J"), variation=variation, max_deviation=worst,
+                drift=r.m("energy_drift"), period_s=r.m("period_seconds"), period_exact_s=r.m("period_exact_seconds"),
+                thesis_min_J=thesis_min, thesis_max_J=thesis_max, thesis_variation=thesis_variation)],
+            notes=["test2's metrics over every step of the run above: variation = (max - min) / max of the total "
+                   "energy (the thesis's definition), max_deviation = largest |E - E0| / E0, drift = (last - first) / "
+                   "first; period_exact_s: the metric period_exact_seconds; thesis_*: "
+                   "lab/reference/thesis-figures.csv"])
         ctx.register_files(plots.energy_curves(ctx.out_dir, "energy-test2", rows, start,
                                                (thesis_min, thesis_max), FAILURE_FRACTION))
         table = md.table(["quantity", "thesis (ODE 0.11.1)", "this build"], [
@@ -83,8 +121,8 @@ from `Test2_output.txt` every 0.02 s, the extremes from the metrics (every step)
 {md.figure("energy-test2", "test2: potential, kinetic and total energy (top) and the total's deviation "
            "from its start (bottom), against the thesis's range")}
 
-{md.files_line([csv])}"""
-        headline = [f"test2: over {seconds} s at the thesis's settings the total energy varies by {md.pct(variation, 2)} "
-                    f"as (max - min) / max, the thesis's definition (thesis: {md.pct(thesis_variation)}); its largest "
-                    f"|E - E0| / E0 is {md.pct(worst, 2)}."]
-        return Outcome(text, headline)
+{md.files_line([csv, summary])}
+
+{slot("rule")} {slot("thesis")} {slot("period")}"""
+        return Outcome(text, [HEADLINE], claims={"rule": [RULE_HOLDS, RULE_FAILS], "thesis": THESIS,
+                                                  "period": PERIOD})

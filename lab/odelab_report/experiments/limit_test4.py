@@ -2,17 +2,45 @@
 5e-4, 2e-4, 1e-4, for QuickStep (20 iterations) and dWorldStep."""
 
 from .. import markdown as md
+from ..claims import Claim, q, slot
 from ..plots import limits as plots
 from ..runner import RunSpec
 from ..search import highest_passing
 from .base import Experiment, Outcome
-from .thesis_choices import FIGURES, read_csv
 
 MAX_PENETRATION = 0.05  # m: a tenth of the small cube's side
 SOLVERS = [("QuickStep 20", ["--solver", "quick", "--iterations", 20]), ("dWorldStep", ["--solver", "step"])]
 RULE = ("a run fails when the state becomes non-finite (exit 3) or ODE reports an error (exit 4), when the big "
         "cube's centre moves more than 0.5 m sideways or sinks more than 0.1 m below its start (test4's `held` = 0), "
         f"or when any overlap (`max_penetration`) exceeds {MAX_PENETRATION} m")
+
+
+def _held(column="heaviest_held_kg", agg="one", **where):
+    return q("limit-test4.csv", column, agg, **where)
+
+
+_AT_0001 = {"qs": _held(solver="QuickStep 20", step_s=0.001), "dw": _held(solver="dWorldStep", step_s=0.001),
+            "s": _held("hold_seconds", solver="QuickStep 20", step_s=0.001)}
+_HEADLINE = "test4: at step 0.001 QuickStep holds up to {qs:n} kg on the 5 kg cube for {s:n} s, dWorldStep {dw:n} kg"
+HEADLINE = [Claim("headline.test4", _HEADLINE + " (thesis: {thesis}; Havok {havok}).",
+                  dict(_AT_0001, thesis=q("thesis.csv", "thesis_ode_0_11_1", "text", key="test4_fast"),
+                       havok=q("thesis.csv", "havok_6_5_quoted", "text", key="test4_fast"))),
+            Claim("headline.test4.alone", _HEADLINE + ".", _AT_0001)]
+_BY_STEP = {"qs": _held(agg="list", solver="QuickStep 20"), "qh": _held("step_s", "list", solver="QuickStep 20"),
+            "dw": _held(agg="list", solver="dWorldStep"), "dh": _held("step_s", "list", solver="dWorldStep"),
+            "coarse": "qs[qh.index(max(qh))]", "fine": "qs[qh.index(min(qh))]", "hmin": "min(qh)",
+            "ratios": "[dw[dh.index(h)] / m for h, m in zip(qh, qs) if h in dh and m and dw[dh.index(h)]]"}
+READING = {
+    "step": [Claim("limit-test4.step", "A smaller step raises the mass QuickStep 20 holds: {coarse:n} kg at step "
+                   "0.001, {fine:n} kg at {hmin:n}.", _BY_STEP, "fine > coarse and max(qh) == 0.001"),
+             Claim("limit-test4.step.not", "A smaller step does not raise the mass QuickStep 20 holds: {coarse:n} kg "
+                   "at step 0.001, {fine:n} kg at {hmin:n}.", _BY_STEP, "fine <= coarse and max(qh) == 0.001")],
+    "solver": [Claim("limit-test4.solver", "dWorldStep (the exact LCP solver) holds more at every step measured: "
+                     "{ratios:r} times QuickStep 20's mass.", _BY_STEP, "len(ratios) > 0 and min(ratios) > 1"),
+               Claim("limit-test4.solver.mixed", "dWorldStep (the exact LCP solver) holds {ratios:r} times QuickStep "
+                     "20's mass across the steps: not more at every step.", _BY_STEP,
+                     "len(ratios) > 0 and min(ratios) <= 1")],
+}
 
 
 def hold_seconds(quick):
@@ -103,14 +131,5 @@ assumes failing is monotone in the mass (masses above the first failure are not 
 {md.files_line([csv, csv_probes])}
 
 How to read it: the bar between the heaviest held and the lightest failed mass
-is the limit's uncertainty. A smaller step raises the mass ratio QuickStep can
-carry; dWorldStep (the exact LCP solver) carries far more at the same step."""
-        by = {(x["step_s"], x["solver"]): x for x in limits}
-        headline = []
-        q3, s3 = by.get((1e-3, "QuickStep 20")), by.get((1e-3, "dWorldStep"))
-        thesis = next(r for r in read_csv(FIGURES) if r["test"] == "test4" and r["conditions"].startswith("step 0.001"))
-        if q3 and s3:
-            headline.append(f"test4: at step 0.001 QuickStep holds up to {md.num(q3['heaviest_held_kg'], 3)} kg on the "
-                            f"5 kg cube for {seconds:g} s, dWorldStep {md.num(s3['heaviest_held_kg'], 3)} kg (thesis: "
-                            f"{thesis['ode_0_11_1_thesis']}; Havok {thesis['havok_6_5_quoted_by_thesis']}).")
-        return Outcome(text, headline)
+is the limit's uncertainty. {slot("step")} {slot("solver")}"""
+        return Outcome(text, [HEADLINE], claims=READING)

@@ -2,6 +2,7 @@
 CFM 0, 1e-8, 1e-7, 1e-6, 1e-5 (ERP 0.2, step 0.001, QuickStep 20)."""
 
 from .. import markdown as md
+from ..claims import Claim, q, slot
 from ..plots import limits as plots
 from ..runner import RunSpec
 from .base import Experiment, Outcome
@@ -22,24 +23,35 @@ def drop_height(r):
     return r.m("start_height_m") - r.m("ball_radius_m")
 
 
-def reading(summary):
-    """What the table shows, each figure computed: how the error grows from
-    10 to 20 bounces (2x when the loss per bounce is constant), and how much
-    each decade of CFM multiplies the error after 20 bounces."""
-    twenty = [(c, e10, e20) for c, _, _, _, e10, e20, _ in summary if e10 and e20]
-    growth = [e20 / e10 for _, e10, e20 in twenty if e20 < FAILURE_FRACTION * 100]
-    parts = []
-    if growth:
-        parts.append(f"from 10 to 20 bounces the error grows {md.num(min(growth), 3)}x to {md.num(max(growth), 3)}x "
-                     f"across the CFMs (2x is a constant loss per bounce)")
-    decades = [(a, b, eb / ea) for (a, _, ea), (b, _, eb) in zip(twenty, twenty[1:]) if a > 0 and b == 10 * a]
-    if decades:
-        parts.append("each decade of CFM multiplies the error after 20 bounces by " +
-                     ", ".join(f"{md.num(ratio, 2)}x ({md.num(a)} to {md.num(b)})" for a, b, ratio in decades))
-    zero = [e20 for c, _, e20 in twenty if c == 0]
-    if zero:
-        parts.append(f"CFM 0 loses {md.num(zero[0] / 20, 2)} of the drop per bounce")
-    return "; ".join(parts) + "." if parts else "no CFM gave 20 bounces."
+def _apex(column, agg="list", **where):
+    return q("limit-test9.csv", column, agg, **where)
+
+
+# The error after 10 and 20 bounces by CFM (a CFM whose run gave fewer apexes has none).
+_BY_CFM = {"c10": _apex("cfm", bounce=10), "e10": _apex("relative_error", bounce=10),
+           "c20": _apex("cfm", bounce=20), "e20": _apex("relative_error", bounce=20),
+           "d20": "{c: e for c, e in zip(c20, e20)}",
+           "growth": "[d20[c] / e for c, e in zip(c10, e10) if c in d20 and e and d20[c] < 1]",
+           "decades": "[(a, b, d20[b] / d20[a]) for a in sorted(d20) for b in sorted(d20) "
+                      "if a > 0 and math.isclose(b, 10 * a)]",
+           "each": "', '.join(num(r, 2) + 'x (' + num(a) + ' to ' + num(b) + ')' for a, b, r in decades)",
+           "zero": "d20[0] / 20 if 0 in d20 else None"}
+READING = {
+    "growth": Claim("limit-test9.growth", "From 10 to 20 bounces the error grows {growth:r} times across the CFMs "
+                    "(2 times is a constant loss per bounce).", _BY_CFM, "len(growth) > 0"),
+    "decades": Claim("limit-test9.decades", "Each decade of CFM multiplies the error after 20 bounces by {each}.",
+                     _BY_CFM, "len(decades) > 0"),
+    "zero": Claim("limit-test9.zero", "CFM 0 loses {zero:n2} of the drop per bounce.", _BY_CFM, "zero is not None"),
+}
+_LOST = {"z": _apex("relative_error", "one", cfm=0, bounce=20),
+         "m6": _apex("relative_error", "one", cfm=1e-6, bounce=20),
+         "m5": _apex("relative_error", "one", cfm=1e-5, bounce=20)}
+_LOSSES = "; CFM 1e-6 loses {m6:p} of the height after 20 bounces, CFM 1e-5 {m5:p}."
+# Exact as the thesis has it: to six decimals of the drop.
+HEADLINE = [Claim("headline.test9.exact", "test9: a perfect bounce stays exact to six decimals at CFM 0 ({z:.1e} "
+                  "after 20 bounces)" + _LOSSES, _LOST, "z < 1e-6"),
+            Claim("headline.test9.inexact", "test9: a perfect bounce is not exact to six decimals at CFM 0 ({z:.1e} "
+                  "after 20 bounces)" + _LOSSES, _LOST, "z >= 1e-6")]
 
 
 class LimitTest9(Experiment):
@@ -88,12 +100,6 @@ iterations, {seconds} s per run.
 
 {md.files_line([csv])}
 
-How to read it: {reading(summary)}"""
-        lost = {c: e20 for c, _, _, _, _, e20, _ in summary}
-        headline = []
-        if lost.get(1e-6) is not None and lost.get(0.0) is not None:
-            headline.append(f"test9: a perfect bounce stays exact at CFM 0 ({lost[0.0]:.1e} after 20 bounces); "
-                            f"CFM 1e-6 loses {md.pct(lost[1e-6])} of the height after 20 bounces, "
-                            f"CFM 1e-5 {md.pct(lost.get(1e-5))}.")
-        return Outcome(text, headline)
+How to read it: {slot("growth")} {slot("decades")} {slot("zero")}"""
+        return Outcome(text, [HEADLINE], claims=READING)
 

@@ -4,6 +4,7 @@ the plain setting: the velocity limit, and the cost in the ordinary scene."""
 import re
 
 from .. import markdown as md
+from ..claims import Claim, q
 from ..plots import remedies as plots
 from ..runner import RunSpec, median
 from .base import Experiment, Outcome
@@ -30,14 +31,41 @@ def spread_text(row, name):
             f"{100 * row[name + '_max']:+.1f}%)")
 
 
-def goal_text(low, high, goal):
-    """What the pairs' range says about a cost goal: a range that holds both
-    sides of the goal (or of zero) names no answer."""
-    parts = ["every pair within the goal" if high <= goal else
-             "no pair within the goal" if low > goal else "the pairs' range straddles the goal"]
-    if low <= 0 <= high:
-        parts.append("the range includes no extra cost at all")
-    return "; ".join(parts)
+
+def _limit_text(name, setting, case):
+    """Lookups and the expression `name`: the scan's limit at step 0.001 as
+    words ("none through up to the scan limit" when no launch passed)."""
+    where = dict(kind="scan", setting=setting, case=case, step_s=0.001)
+    return {name + "_ff": q("remedy-test10.csv", "first_failure_velocity", "text", **where),
+            name + "_v": q("remedy-test10.csv", "max_velocity", **where),
+            name: f"'none through up to the scan limit {SCAN_LIMIT:.0f} m/s' if not ({name}_ff and float({name}_ff)) "
+                  f"else num({name}_v, 4) + ' m/s'"}
+
+
+def _ccd_headline():
+    cost = dict(kind="cost", setting="--ccd", launch_velocity=ORDINARY_VELOCITY)
+    values = {}
+    for name, setting, case in (("ccd_face", "--ccd", CASES[0][0]), ("plain_face", "plain", CASES[0][0]),
+                                ("ccd_any", "--ccd", CASES[3][0]), ("plain_any", "plain", CASES[3][0])):
+        values.update(_limit_text(name, setting, case))
+    for what in ("wall", "cpu"):
+        for end in ("", "_min", "_max"):
+            values[what + end] = q("remedy-test10.csv", f"extra_{what}_per_launch{end}", **cost)
+        values[what + "_text"] = f"'%+.1f%% (%+.1f%% to %+.1f%%)' % (100 * {what}, 100 * {what}_min, 100 * {what}_max)"
+    values["pairs"] = q("remedy-test10.csv", "repeats", **cost)
+    # A range holding both sides of the goal (or of zero) names no answer.
+    values["goal"] = ("'every pair within the goal' if wall_max <= 0.1 else 'no pair within the goal' "
+                      "if wall_min > 0.1 else 'the pairs\\' range straddles the goal'")
+    values["zero"] = "'; the range includes no extra cost at all' if wall_min <= 0 <= wall_max else ''"
+    return Claim("headline.test10.ccd", "test10 --ccd at step 0.001: face on, {ccd_face} (plain: {plain_face}); turned "
+                 "at random and at a random phase, {ccd_any} (plain: {plain_any}); {wall_text} wall time ({cpu_text} "
+                 "CPU time) per launch in the ordinary scene (" + md.num(ORDINARY_VELOCITY) + " m/s, {pairs:n} pairs; "
+                 "goal: at most +10%): {goal}{zero}.", values)
+
+
+HEADLINE = [_ccd_headline(),
+            Claim("headline.test10.no-ccd", "test10: no --ccd option in this build; remedy not measured.",
+                  {"n": q("remedy-test10.csv", "setting", "count", setting="--ccd")}, "n == 0")]
 
 
 class RemedyTest10(Experiment):
@@ -164,24 +192,4 @@ two sooner).
            "without --ccd, for each way of meeting the wall (left); wall time per launch (right)")}
 
 {md.files_line([csv])}"""
-        headline = []
-        if has_ccd:
-            def limit_text(setting, case):
-                x = next((x for x in rows if x["kind"] == "scan" and x["setting"] == setting and x["case"] == case
-                          and x["step_s"] == 1e-3), None)
-                if x is None:
-                    return "not measured"
-                return (f"none through up to the scan limit {md.num(SCAN_LIMIT)} m/s" if not x["first_failure_velocity"]
-                        else f"{md.num(x['max_velocity'], 4)} m/s")
-            ordinary = next(c for c in cost_table if c[0] == "--ccd" and c[1] == md.num(ORDINARY_VELOCITY))
-            row = next(x for x in rows if x["kind"] == "cost" and x["setting"] == "--ccd"
-                       and x["launch_velocity"] == ORDINARY_VELOCITY)
-            headline.append(f"test10 --ccd at step 0.001: face on, {limit_text('--ccd', CASES[0][0])} (plain: "
-                            f"{limit_text('plain', CASES[0][0])}); turned at random and at a random phase, "
-                            f"{limit_text('--ccd', CASES[3][0])} (plain: {limit_text('plain', CASES[3][0])}); "
-                            f"{ordinary[3]} wall time ({ordinary[5]} CPU time) per launch in the ordinary scene "
-                            f"({md.num(ORDINARY_VELOCITY)} m/s, {repeats} pairs; goal: at most +10%): "
-                            + goal_text(row["extra_wall_per_launch_min"], row["extra_wall_per_launch_max"], 0.10) + ".")
-        else:
-            headline.append("test10: no --ccd option in this build; remedy not measured.")
-        return Outcome(text, headline, missing)
+        return Outcome(text, [HEADLINE], missing)

@@ -5,6 +5,7 @@ iterations, a larger step, auto-disable (the thesis's linear threshold 0.3,
 and 0.05 for both thresholds) and ODE's threaded island stepping (2 threads)."""
 
 from .. import markdown as md
+from ..claims import Claim, q, slot
 from ..plots import remedies as plots
 from .base import Experiment, Outcome
 from . import stack_tuning
@@ -19,6 +20,44 @@ EXTRAS = [
                                                "--auto-disable-angular", 0.05), AUTO_DISABLE_CAP),
     ("2 threads (threaded island stepping)", ("--threads", 2), None),
 ]
+
+
+
+def _settings(column, agg="list"):
+    return q("remedy-test5.csv", column, agg)
+
+
+# The tallest setting (the first of equals), against the thesis's default.
+_BEST = {"names": _settings("setting", "texts"), "t": _settings("tallest_plates"),
+         "g": _settings("gain_over_thesis_default"), "o": _settings("options", "texts"),
+         "w": _settings("whole_run_ms_per_step_at_tallest"),
+         "default": q("remedy-test5.csv", "tallest_plates", thesis_default=1),
+         "i": "max(range(len(t)), key=lambda j: t[j] or 0)", "best": "names[i]", "plates": "t[i]", "gain": "g[i]",
+         "whole": "w[i]", "auto": "'--auto-disable' in o[i]"}
+_HEADLINE = ("test5 remedy: {best} keeps {plates:n} plates aligned in real time, {gain:.1f}x the thesis's default "
+             "({default:n})")
+HEADLINE = [Claim("headline.test5.remedy.auto", _HEADLINE + " (auto-disable: the timed last second is a stack at rest; "
+                  "building it costs {whole:n} ms per step over the run).", _BEST, "auto"),
+            Claim("headline.test5.remedy", _HEADLINE + ".", _BEST, "not auto")]
+
+# Where the descent ended (its last value kept) and how tall that setting stacks.
+_SEARCH, _ROWS = "remedy-test5-search.csv", "remedy-test5.csv"
+_ENDED = {"chosen": q(_SEARCH, "chosen", "list"), "settings": q(_SEARCH, "setting", "texts"),
+          "margins": q(_SEARCH, "margin", "list"), "limits": q(_SEARCH, "binding_limit", "texts"),
+          "k": "max(j for j in range(len(chosen)) if chosen[j] == 1)", "ended": "settings[k]", "m": "margins[k]",
+          "bound": "limits[k]", "names": q(_ROWS, "setting", "texts"), "t": q(_ROWS, "tallest_plates", "list"),
+          "ff": q(_ROWS, "first_failing_plates", "list"), "why": q(_ROWS, "failure", "texts"),
+          "i": "[j for j, n in enumerate(names) if n.startswith('tuned')][0]",
+          "plates": "t[i]", "first": "num(ff[i])", "reason": "why[i] or '-'"}
+ENDED = Claim("remedy-test5.ended", "The descent ended at {ended} (margin {m:n}, bound by {bound}); limit-test5's "
+              "height search from there (x1.2 steps, bisection to 8%, the stricter rule) gives {plates:n} plates "
+              "(first failing: {first}, {reason}).", _ENDED, "names[i].endswith(ended)")
+_REPEATS = {"costs": q("remedy-test5-repeats.csv", "ms_per_step", "list"),
+            "passed": q("remedy-test5-repeats.csv", "passed", "list"),
+            "plates": q("remedy-test5-repeats.csv", "plates", "list"),
+            "n": "len(costs)", "ok": "sum(passed)", "each": "', '.join(num(c) for c in costs)"}
+REPEATED = Claim("remedy-test5.repeated", "The same setting at {plates[0]:n} plates, {n} runs in all: cost {each} ms "
+                 "per step (the stricter rule), {ok:.0f} of {n} passing:", _REPEATS, "n > 1")
 
 
 class RemedyTest5(Experiment):
@@ -103,6 +142,13 @@ class RemedyTest5(Experiment):
               f"{md.num(r['first_failing_plates'])}: {r['failure']}" if r["first_failing_plates"] else "-"]
              for r in rows])
         best = max(rows, key=lambda r: r["tallest_plates"] or 0)
+        why_text, why_claims = stack_tuning.why_it_wins(descent, search_csv)
+        repeats_csv = ctx.write_csv("remedy-test5-repeats", ["repeat", "plates", "ms_per_step", "passed"],
+                                    [dict(repeat=n, plates=stack_tuning.TARGET[quick], ms_per_step=cost,
+                                          passed=int(passed)) for n, (cost, passed) in enumerate(repeats)],
+                                    notes=["the descent's final setting at the target plate count, run again to "
+                                           "show the timing's scatter (the first: the descent's own run); "
+                                           "ms_per_step: the stricter rule's cost"])
         text = f"""Each setting is searched with limit-test5's rule (real time: the program's CPU time per
 step over the last simulated second, `cpu_ms_per_step`, at most the step; aligned: every plate in the stack, no plate centre more than
 0.1 m off the axis or turned more than 2 degrees). The spaces and iteration
@@ -143,16 +189,9 @@ and the height missing from N x plate thickness / 5%; infinite for a blow-up or 
 plate frozen in the air. Its real-time part is stricter than the rows
 above: the larger of the last second's and the whole run's cost per step
 (CPU time), so a stack auto-disable puts to rest for the timed
-second must also have been built in real time. The descent ended at
-{stack_tuning.describe(tuned_setting)} (margin {md.num(tuned_margin[0], 3)},
-bound by {tuned_margin[1]}); limit-test5's height search from there (x1.2
-steps, bisection to 8%, the stricter rule) gives
-{md.num(tuned_row['tallest_plates'])} plates (first failing:
-{md.num(tuned_row['first_failing_plates'])}, {tuned_row['failure'] or '-'}).
+second must also have been built in real time. {slot("ended")}
 
-The same setting at {stack_tuning.TARGET[quick]} plates, {len(repeats)} runs in all: cost
-{", ".join(md.num(c, 3) for c, _ in repeats)} ms per step (the stricter rule), {sum(p for _, p in repeats)} of
-{len(repeats)} passing: the scatter of the timing, against which the margins below are to be read.
+{slot("repeated")} the scatter of the timing, against which the margins below are to be read.
 ERP, CFM, SOR w, the surface layer and the max correcting velocity do not change the solver's work
 per step (the same contact rows, the same iterations): where real time binds, their differences are
 within that scatter unless they change the stack itself (its height or offset).
@@ -160,14 +199,9 @@ within that scatter unless they change the stack itself (its height or offset).
 Why it wins, coordinate by coordinate (the margin at {stack_tuning.TARGET[quick]} plates of the
 value kept and of the others):
 
-{stack_tuning.why_it_wins(descent)}
+{why_text}
 
 {stack_tuning.descent_table(descent)}
 
-{md.files_line([csv, search_csv])}"""
-        headline = [f"test5 remedy: {best['setting']} keeps {md.num(best['tallest_plates'])} plates aligned in real time, "
-                    f"{best['gain_over_thesis_default']:.1f}x the thesis's default ({md.num(default['tallest_plates'])})"
-                    + (" (auto-disable: the timed last second is a stack at rest; building it costs "
-                       f"{md.num(best['whole_run_ms_per_step_at_tallest'], 3)} ms per step over the run)"
-                       if "--auto-disable" in best["options"] else "") + "."]
-        return Outcome(text, headline)
+{md.files_line([csv, search_csv, repeats_csv])}"""
+        return Outcome(text, [HEADLINE], claims=dict(why_claims, ended=ENDED, repeated=REPEATED))

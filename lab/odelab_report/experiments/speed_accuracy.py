@@ -5,6 +5,8 @@ steps log-spaced from 1e-2 to 1e-4. The cheapest setting reaching 1%, 0.1%
 and 0.01% is marked and tabulated."""
 
 from .. import markdown as md
+from ..claims import Claim, q, slot
+from ..first_screen import speed_lookups
 from ..plots import speed as plots
 from ..runner import RunSpec, median
 from .base import Experiment, Outcome, log_space
@@ -18,11 +20,16 @@ ZERO_FLOOR = 1e-16  # an error of exactly 0 is drawn here (below double precisio
 MIN_TIMED_STEPS = 30000
 
 
+# Timings per point where a run is cheap: the cheapest setting is picked by
+# its median and its ties by the range, so a handful is needed.
+REPEATS = 5
+
+
 def repeats_for(step, sim_seconds, quick):
-    """Three timings (median) where a run is cheap, one where it is not."""
+    """REPEATS timings (median and range) where a run is cheap, one where it is not."""
     if quick:
         return 1
-    return 3 if sim_seconds / step <= 100000 else 1
+    return REPEATS if sim_seconds / step <= 100000 else 1
 
 
 class SpeedAccuracy(Experiment):
@@ -42,21 +49,29 @@ class SpeedAccuracy(Experiment):
         steps = log_space(1e-2, 1e-4, 3 if ctx.quick else 9)
         args, sim_seconds = self.scene_args(ctx.quick)
         plan = [(solver, solver_args, step) for solver, solver_args in SOLVERS for step in steps]
-        ctx.expect(len(plan))
-
-        def one(point):
-            """(the accuracy run, the timed runs) of one point."""
-            solver, solver_args, step = point
+        timing = []  # (timed seconds, repeats, timed arguments) per point
+        for _, solver_args, step in plan:
             timed_seconds = sim_seconds if ctx.quick else max(sim_seconds, round(MIN_TIMED_STEPS * step, 6))
-            repeats = repeats_for(step, timed_seconds, ctx.quick)
-            timed_args = [*self.with_seconds(args, timed_seconds), *solver_args, "--step", step]
-            timed = ctx.runner.run_timed(self.program, timed_args, repeats)
-            accuracy = timed[0] if timed_seconds == sim_seconds else ctx.runner.run(
-                RunSpec(self.program, [*args, *solver_args, "--step", step]))
-            ctx.advance()
-            return accuracy, timed
-
-        measured = ctx.runner.parallel([lambda p=p: one(p) for p in plan])
+            timing.append((timed_seconds, repeats_for(step, timed_seconds, ctx.quick),
+                           [*self.with_seconds(args, timed_seconds), *solver_args, "--step", step]))
+        separate = [i for i, (seconds, _, _) in enumerate(timing) if seconds != sim_seconds]
+        ctx.expect(sum(repeats for _, repeats, _ in timing) + len(separate))
+        # Interleaved: every point's first timing, then every point's second...,
+        # so that a busy spell of the machine falls on many settings, not on
+        # all the repeats of one.
+        timed = [[] for _ in plan]
+        for round_ in range(max(repeats for _, repeats, _ in timing)):
+            points = [i for i, (_, repeats, _) in enumerate(timing) if repeats > round_]
+            results = ctx.runner.map([RunSpec(self.program, timing[i][2], timed=True, repeat=round_) for i in points])
+            for i, result in zip(points, results):
+                timed[i].append(result)
+            ctx.advance(len(points))
+        accuracy = [t[0] for t in timed]
+        for i, result in zip(separate, ctx.runner.map(
+                [RunSpec(self.program, [*args, *plan[i][1], "--step", plan[i][2]]) for i in separate])):
+            accuracy[i] = result
+        ctx.advance(len(separate))
+        measured = list(zip(accuracy, timed))
         rows = []
         for (solver, _, step), (first, results) in zip(plan, measured):
             walls = [r.m("wall_seconds") for r in results]
@@ -93,14 +108,11 @@ class SpeedAccuracy(Experiment):
             else:
                 table_rows.append([md.pct(threshold), best["solver"], md.num(best["step_s"]),
                                    md.num(best["error"], 2), md.num(best["wall_per_sim_second"], 3)])
-        blown = [r for r in rows if r["exit_status"] != 0]
-        blown_text = ("Runs that blew up (not plotted): " + ", ".join(
-            f"{r['solver']} at step {md.num(r['step_s'])}" for r in blown) + ".") if blown else ""
         text = f"""Error: {self.error_name}; the exact answer is {self.exact}. {self.settings_text(ctx.quick)}
 One point per solver setting and step. The error comes from one run of the
 length above; x is the program's own `wall_seconds` per simulated second, from
-{"the same run" if ctx.quick else f"runs of at least {MIN_TIMED_STEPS} steps (longer than the accuracy run at large steps; the median of 3 where a run is under 100 000 steps, else 1)"}.
-{blown_text}
+{"the same run" if ctx.quick else f"runs of at least {MIN_TIMED_STEPS} steps (longer than the accuracy run at large steps; the median of {REPEATS} interleaved runs where a run is under 100 000 steps, else 1)"}.
+{slot("blown")}
 
 {md.table(["error at most", "cheapest setting", "step (s)", "its error", "wall s per simulated s"], table_rows)}
 
@@ -116,10 +128,27 @@ smaller step does not)."""
         summary = [[f"{self.program}: {self.error_name}", md.pct(t)] +
                    ([b["solver"], md.num(b["step_s"]), md.num(b["error"], 2), md.num(b["wall_per_sim_second"], 3)]
                     if b else ["not reached", "-", "-", "-"]) for t, b in cheapest]
-        headline = [f"{self.program} ({self.error_name}): cheapest for " + "; ".join(
-            f"{md.pct(t)}: {b['solver']} at step {md.num(b['step_s'])} ({md.num(b['wall_per_sim_second'], 2)} s/s)"
-            if b else f"{md.pct(t)}: not reached" for t, b in cheapest) + "."]
-        return Outcome(text, headline, summary=summary)
+        return Outcome(text, [self.headline()], summary=summary, claims={"blown": self.blown()})
+
+    def blown(self):
+        """The runs that ended with a non-zero status (not plotted), from the CSV."""
+        f = f"speed-{self.program}.csv"
+        return Claim(f"{self.name}.blown", "Runs that blew up (not plotted): {which}.",
+                     {"solvers": q(f, "solver", "texts"), "steps": q(f, "step_s", "list"),
+                      "status": q(f, "exit_status", "list"),
+                      "which": "', '.join(s + ' at step ' + num(h) for s, h, x in zip(solvers, steps, status) if x)"},
+                     "any(status)")
+
+    def headline(self):
+        """The cheapest settings per error level, ties within the timing's
+        scatter as a set (claims.cheapest), from the CSV."""
+        values = speed_lookups(self.program)
+        levels = []
+        for n, level in enumerate(THRESHOLDS):
+            values[f"c{n}"] = f"cheapest(names, errors, cost, lo, hi, {level!r}, 'QuickStep 20 at 0.001')"
+            levels.append(f"{md.pct(level)}: {{c{n}}}")
+        return Claim(f"headline.{self.program}.cheapest", f"{self.program} ({self.error_name}): cheapest for "
+                     + "; ".join(levels) + ".", values, "len(names) > 0")
 
     def settings_text(self, quick):
         return ""

@@ -22,6 +22,7 @@ at rest that cost more than real time to build."""
 import math
 
 from .. import markdown as md
+from ..claims import Claim, q, slot
 
 from ..runner import RunSpec
 from ..search import highest_passing
@@ -166,21 +167,25 @@ def search_columns():
             "stack_height_m", "cpu_share", "exit_status"]
 
 
-def why_it_wins(rows):
-    """One sentence per coordinate, from the descent's own runs: what the chosen
-    value did to the margin against the value it replaced."""
-    lines = []
-    previous = None
+def why_it_wins(rows, csv_name):
+    """One sentence per coordinate, from the descent's own runs in `csv_name`:
+    the value kept, its margin and what bound it, beside the others; shown
+    only if the value kept has the smallest margin of its coordinate (the
+    descent's rule). Returns (markdown with a slot per coordinate, claims)."""
+    lines, claims = [], {}
     for name in dict.fromkeys(r["coordinate"] for r in rows):  # in the order searched
-        trials = [r for r in rows if r["coordinate"] == name]
-        chosen = next(r for r in trials if r["chosen"])
-        others = ", ".join(f"{r['value']}: {md.num(r['margin'], 3)} ({r['binding_limit']})"
-                           for r in trials if not r["chosen"])
-        change = "" if previous is None else f" (from {md.num(previous, 3)})"
-        lines.append(f"- {name} = {chosen['value']}: margin {md.num(chosen['margin'], 3)}{change}, "
-                     f"bound by {chosen['binding_limit']}; the others: {others}")
-        previous = chosen["margin"]
-    return "\n".join(lines)
+        values = {"values": q(csv_name, "value", "texts", coordinate=name),
+                  "margins": q(csv_name, "margin", "list", coordinate=name),
+                  "limits": q(csv_name, "binding_limit", "texts", coordinate=name),
+                  "chosen": q(csv_name, "chosen", "list", coordinate=name),
+                  "i": "chosen.index(1)", "kept": "values[i]", "m": "margins[i]", "bound": "limits[i]",
+                  "others": "', '.join(values[j] + ': ' + num(margins[j]) + ' (' + limits[j] + ')' "
+                            "for j in range(len(values)) if j != i)"}
+        claims[f"why.{name}"] = Claim(f"remedy-test5.why.{name}",
+                                      "- " + name + " = {kept}: margin {m:n}, bound by {bound}; the others: {others}",
+                                      values, "m == min(x for x in margins if x is not None)")
+        lines.append(slot(f"why.{name}"))
+    return "\n".join(lines), claims
 
 
 def descent_table(rows):

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <ode/ode.h>
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "AbstractObject.h"
+#include "BodyStateWatch.h"
+#include "DebugMarkers.h"
+#include "DragSpring.h"
+#include "SpaceKind.h"
+
+namespace odelab {
+
+// One run of the ODE world: the world, its collision space, contact group
+// and step threading, the scene's objects, the step counters and the test
+// for a state that blew up. AbstractWindow builds and steps it; the front
+// end and checks read it through AbstractWindow::run(). Fields are protected
+// so the step loop, which lives with the hooks it calls, names them directly.
+class WorldRun {
+ public:
+  dWorldID world() const { return world_; }
+  dSpaceID space() const { return space_; }
+  dJointGroupID contactGroup() const { return contactGroup_; }
+  SpaceKind spaceKind() const { return spaceKind_; }
+  const std::vector<std::unique_ptr<AbstractObject>>& objects() const { return objects_; }
+  double simulatedTime() const { return simulatedTime_; }
+  long long steps() const { return steps_; }
+  int contactsLastStep() const { return contactsLastStep_; }
+  // Real seconds spent in dSpaceCollide since the program started (the window's frame profile).
+  double collideWallSeconds() const { return collideWallSeconds_; }
+  double lastStepWallSeconds() const { return lastStepWallSeconds_; }  // 0 unless the scene called timeSteps()
+  const std::string& blowUpReason() const { return blowUpReason_; }
+  int bodyCount() const;
+  int disabledBodyCount() const;
+  // A hash of every body's exact state (the determinism check).
+  std::uint64_t stateHash() const;
+  std::vector<JointMarker> jointMarkers() const { return collectJointMarkers(objects_); }
+  PickHit pickAt(const double origin[3], const double direction[3]) const;
+
+ protected:
+  WorldRun() = default;
+  ~WorldRun() = default;  // AbstractWindow's destructor has torn the world down
+  WorldRun(const WorldRun&) = delete;
+  WorldRun& operator=(const WorldRun&) = delete;
+
+  void destroyWorld();     // objects first, then contact group, space and world
+  void freeThreading();    // after destroyWorld(), before dCloseODE()
+  // The cheap test behind stateProblem(), inline: it runs after every step.
+  bool stateSuspicious() const { return watch_.suspicious(objects_); }
+  std::string stateProblem() const;
+  std::mt19937& random() { return random_; }
+  // Measure every step's wall time (lastStepWallSeconds()); off by default.
+  void timeSteps() { timeSteps_ = true; }
+
+  std::vector<std::unique_ptr<AbstractObject>> objects_;
+  BodyStateWatch watch_;  // stateSuspicious()'s view of the bodies
+  std::mt19937 random_;
+  dWorldID world_ = nullptr;
+  dSpaceID space_ = nullptr;
+  dJointGroupID contactGroup_ = nullptr;
+  SpaceKind spaceKind_ = SpaceKind::Simple;
+  dThreadingImplementationID stepThreading_ = nullptr;  // the world's; see AbstractWindow::createWorld()
+
+  double simulatedTime_ = 0.0;
+  long long steps_ = 0;
+  int contactsLastStep_ = 0;
+  int contactsThisStep_ = 0;
+  double lastStepWallSeconds_ = 0.0;
+  double collideWallSeconds_ = 0.0;
+  bool profileCollision_ = false;
+  bool timeSteps_ = false;
+  bool unattended_ = false;  // inside runFor(): no input, rewind or plot, so stepOnce() skips them
+  double wallSeconds_ = 0.0;  // real time spent in this run (headless) or its frames (window)
+  std::string blowUpReason_;
+};
+
+}  // namespace odelab
