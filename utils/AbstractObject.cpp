@@ -5,11 +5,13 @@ namespace odelab {
 AbstractObject::AbstractObject(Shape shape, dGeomID geom, dBodyID body)
     : shape_(shape), geom_(geom), ownBody_(body) {
   if (body) dGeomSetBody(geom, body);
+  ++bodyChanges_;
 }
 
 AbstractObject::~AbstractObject() {
   dGeomDestroy(geom_);
   if (ownBody_) dBodyDestroy(ownBody_);
+  ++bodyChanges_;
 }
 
 bool AbstractObject::isEnabled() const {
@@ -21,6 +23,7 @@ void AbstractObject::setAsFixedGeom() {
   dGeomSetBody(geom_, nullptr);
   if (ownBody_) dBodyDestroy(ownBody_);
   ownBody_ = nullptr;
+  ++bodyChanges_;
 }
 
 namespace {
@@ -107,6 +110,7 @@ bool AbstractObject::attach(AbstractObject& other) {
 
   if (ownBody_) dBodyDestroy(ownBody_);
   ownBody_ = nullptr;
+  ++bodyChanges_;
   return true;
 }
 

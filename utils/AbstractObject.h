@@ -3,6 +3,7 @@
 #include <ode/ode.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
@@ -60,6 +61,11 @@ class AbstractObject {
   Color color{0.8f, 0.8f, 0.8f};
   bool visible = true;
 
+  // Counts every change of which bodies exist or which body a geom rides on
+  // (an object made or destroyed, fixed or attached), so that a per-step
+  // cache of bodies (BodyStateWatch) knows when to look again.
+  static std::uint64_t bodyChanges() { return bodyChanges_; }
+
  protected:
   AbstractObject(Shape shape, dGeomID geom, dBodyID body);
 
@@ -68,6 +74,7 @@ class AbstractObject {
   dGeomID geom_;
   dBodyID ownBody_;  // the body this object created and still owns, or 0
   std::vector<unsigned char> data_;
+  inline static std::uint64_t bodyChanges_ = 0;
 };
 
 }  // namespace odelab

@@ -208,10 +208,15 @@ bool AbstractWindow::stepOnce() {
   // The clock only for scenes that measure a step's wall time (test5): two
   // clock reads a step are a tenth of a one-ball scene's framework cost.
   const auto start = timeSteps_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-  rewind_.timeline().applyDue(steps_, [this](const TimelineEvent& event) { applyEvent(event); });
-  drag_.pull(objects_, settings_.gravity);
+  // Inputs, the drag, contact markers, rewind marks and the live plot: none
+  // can come or be seen inside runFor(), which skips their cost.
+  const bool attended = !unattended_;
+  if (attended) {
+    rewind_.timeline().applyDue(steps_, [this](const TimelineEvent& event) { applyEvent(event); });
+    drag_.pull(objects_, settings_.gravity);
+    if (viewFlags_.contacts) contactMarkers_.clear();
+  }
   contactsThisStep_ = 0;
-  if (viewFlags_.contacts) contactMarkers_.clear();
   beforeStep();
   try {
     // Collision is timed only for the window's frame profile: a headless run
@@ -235,21 +240,20 @@ bool AbstractWindow::stepOnce() {
   ++steps_;
   if (timeSteps_) lastStepWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   afterStep();
-  rewind_.afterStep(simulatedTime_, steps_);
-  if (simulatedTime_ >= nextChartTime_) {
-    double value;
-    if (plotValue(value)) chart_.add(simulatedTime_, value);
-    nextChartTime_ += CHART_INTERVAL;
+  if (attended) {
+    rewind_.afterStep(simulatedTime_, steps_);
+    if (simulatedTime_ >= nextChartTime_) {
+      double value;
+      if (plotValue(value)) chart_.add(simulatedTime_, value);
+      nextChartTime_ += CHART_INTERVAL;
+    }
   }
   // Every step: a few multiplications per body; the message only when one looks wrong.
-  const std::string problem = stateSuspicious() ? stateProblem() : std::string();
-  if (!problem.empty()) {
-    std::ostringstream reason;
-    reason << "simulation blew up: " << problem << momentAndSettings();
-    blowUpReason_ = reason.str();
-    return false;
-  }
-  return true;
+  if (!stateSuspicious()) return true;
+  const std::string problem = stateProblem();
+  if (problem.empty()) return true;
+  blowUpReason_ = "simulation blew up: " + problem + momentAndSettings();
+  return false;
 }
 
 std::string AbstractWindow::momentAndSettings() const {
@@ -311,7 +315,14 @@ bool AbstractWindow::runFor(double seconds) {
   const long long total = steps_ + std::llround(seconds / settings_.step);
   const auto start = std::chrono::steady_clock::now();
   bool finite = blowUpReason_.empty();
-  while (steps_ < total && finite && stopSignal() == 0) finite = stepOnce();
+  {
+    // Set for the loop only, and cleared even when a step throws.
+    struct Unattended {
+      bool& flag;
+      ~Unattended() { flag = false; }
+    } unattended{unattended_ = true};
+    while (steps_ < total && finite && stopSignal() == 0) finite = stepOnce();
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   wallSeconds_ += wall;
   time_.addRun(wall, seconds);

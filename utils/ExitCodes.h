@@ -8,6 +8,6 @@ constexpr int RUNTIME_ERROR = 1;   // I/O failure or other unexpected error
 constexpr int USAGE = 2;           // invalid option or value; nothing written
 constexpr int BLEW_UP = 3;         // simulation state became non-finite
 constexpr int ODE_ERROR = 4;       // ODE reported an error through dError/dDebug
-constexpr int MISSING_RESOURCE = 5;  // shaders or font not found
+constexpr int MISSING_RESOURCE = 5;  // shaders, font or the window module not found
 constexpr int NO_DISPLAY = 6;      // a window was needed but none could be opened
 }  // namespace odelab::exit_code

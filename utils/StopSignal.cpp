@@ -7,27 +7,25 @@
 
 namespace odelab {
 
-namespace {
-volatile std::sig_atomic_t received = 0;
+volatile std::sig_atomic_t detail::stopSignalReceived = 0;
 
+namespace {
 extern "C" void onStopSignal(int signal) {
   // A second signal while the first is being handled kills as usual, so a
   // stuck run can still be ended.
-  if (received != 0) {
+  if (detail::stopSignalReceived != 0) {
     std::signal(signal, SIG_DFL);
     std::raise(signal);
     return;
   }
-  received = signal;
+  detail::stopSignalReceived = signal;
 }
 }  // namespace
 
 void installStopSignalHandlers() { platform::onStopRequest(onStopSignal); }
 
-int stopSignal() { return received; }
-
 const char* stopSignalName() {
-  switch (received) {
+  switch (detail::stopSignalReceived) {
     case SIGINT: return "SIGINT";
     case SIGTERM: return "SIGTERM";
 #ifdef SIGHUP

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <csignal>
+
 namespace odelab {
 
 // SIGINT, SIGTERM and SIGHUP ask a run to stop rather than kill it: the step loops
@@ -9,8 +11,11 @@ namespace odelab {
 // shell reports a process killed by it. SDL's own handlers, which would turn
 // the signal into an ordinary window close (status 0), are switched off.
 void installStopSignalHandlers();
-// The signal that asked for a stop, or 0.
-int stopSignal();
+namespace detail {
+extern volatile std::sig_atomic_t stopSignalReceived;  // StopSignal.cpp's handler sets it
+}
+// The signal that asked for a stop, or 0. Inline: the step loops read it every step.
+inline int stopSignal() { return detail::stopSignalReceived; }
 // "SIGINT", "SIGTERM", or "signal N".
 const char* stopSignalName();
 

@@ -10,7 +10,7 @@
 #include "ExitCodes.h"
 #include "OdeMessages.h"
 #include "StopSignal.h"
-#include "render/WindowFrontend.h"
+#include "WindowEntry.h"
 
 namespace odelab {
 
@@ -86,8 +86,10 @@ int run(AbstractWindow& first, const RunOptions& options, SceneSwitching* switch
   // The window builds the scene itself once the window, shaders, font and
   // --events script are ready, so a missing resource leaves no output file.
   // The options by value: in a browser the callback runs after this call.
+  const WindowEntry* window = windowEntry();
+  if (!window) return exit_code::MISSING_RESOURCE;
   if (!switching)
-    return runWindow(first, options, [&first, options](int status) { return afterWindow(first, options, status); });
+    return window->run(first, options, [&first, options](int status) { return afterWindow(first, options, status); });
   AbstractWindow* current = &first;
   // A scene switched to is torn down here, before ODE closes (the runner
   // tears down the first); not while an error unwinds (see runScene).
@@ -98,7 +100,7 @@ int run(AbstractWindow& first, const RunOptions& options, SceneSwitching* switch
       if (current != &first && std::uncaught_exceptions() == 0) current->shutdown();
     }
   } tearDown{first, current};
-  return runWindowSwitching(
+  return window->runSwitching(
       first, options,
       [&](int direction) -> AbstractWindow& {
         current->endOutputs("");

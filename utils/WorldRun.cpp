@@ -10,13 +10,9 @@ namespace odelab {
 
 namespace {
 
-// A blow-up that stays finite (runaway energy): no scene comes near these.
-// 1e8 m/s is ten times the fastest launch any scene allows (test10's
-// --velocity, at most 1e7 m/s); free fall at 1 g needs 118 days to reach it. There
-// is no bound on distance: a body that falls off a platform (test4, test5)
-// is 1e8 m down after 75 minutes, which a window session can last.
-constexpr double RUNAWAY_SPEED = 1e8;  // m/s
-constexpr double RUNAWAY_SPIN = 1e8;   // rad/s
+// The bounds of a blow-up that stays finite: BodyStateWatch.h.
+constexpr double RUNAWAY_SPEED = BodyStateWatch::RUNAWAY_SPEED;  // m/s
+constexpr double RUNAWAY_SPIN = BodyStateWatch::RUNAWAY_SPIN;    // rad/s
 
 // Distinct bodies: the geoms of a composite body share one.
 std::set<dBodyID> bodiesOf(const std::vector<std::unique_ptr<AbstractObject>>& objects) {
@@ -41,22 +37,6 @@ void WorldRun::destroyWorld() {
 void WorldRun::freeThreading() {
   if (stepThreading_) dThreadingFreeImplementation(stepThreading_);
   stepThreading_ = nullptr;
-}
-
-bool WorldRun::stateSuspicious() const {
-  // NaN fails every comparison, infinity the bounds: both land in stateProblem().
-  constexpr double SPEED2 = RUNAWAY_SPEED * RUNAWAY_SPEED, SPIN2 = RUNAWAY_SPIN * RUNAWAY_SPIN;
-  for (const auto& object : objects_) {
-    const dBodyID body = object->getBody();
-    if (!body) continue;
-    const dReal* p = dBodyGetPosition(body);
-    const dReal* v = dBodyGetLinearVel(body);
-    const dReal* w = dBodyGetAngularVel(body);
-    if (!(std::fabs(p[0]) + std::fabs(p[1]) + std::fabs(p[2]) <= std::numeric_limits<double>::max()) ||
-        !(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= SPEED2) || !(w[0] * w[0] + w[1] * w[1] + w[2] * w[2] <= SPIN2))
-      return true;
-  }
-  return false;
 }
 
 std::string WorldRun::stateProblem() const {

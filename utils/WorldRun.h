@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "AbstractObject.h"
+#include "BodyStateWatch.h"
 #include "DebugMarkers.h"
 #include "DragSpring.h"
 #include "SpaceKind.h"
@@ -49,13 +50,15 @@ class WorldRun {
 
   void destroyWorld();     // objects first, then contact group, space and world
   void freeThreading();    // after destroyWorld(), before dCloseODE()
-  bool stateSuspicious() const;  // the cheap test behind stateProblem()
+  // The cheap test behind stateProblem(), inline: it runs after every step.
+  bool stateSuspicious() const { return watch_.suspicious(objects_); }
   std::string stateProblem() const;
   std::mt19937& random() { return random_; }
   // Measure every step's wall time (lastStepWallSeconds()); off by default.
   void timeSteps() { timeSteps_ = true; }
 
   std::vector<std::unique_ptr<AbstractObject>> objects_;
+  BodyStateWatch watch_;  // stateSuspicious()'s view of the bodies
   std::mt19937 random_;
   dWorldID world_ = nullptr;
   dSpaceID space_ = nullptr;
@@ -71,6 +74,7 @@ class WorldRun {
   double collideWallSeconds_ = 0.0;
   bool profileCollision_ = false;
   bool timeSteps_ = false;
+  bool unattended_ = false;  // inside runFor(): no input, rewind or plot, so stepOnce() skips them
   double wallSeconds_ = 0.0;  // real time spent in this run (headless) or its frames (window)
   std::string blowUpReason_;
 };

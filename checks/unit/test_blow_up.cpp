@@ -73,5 +73,37 @@ TEST(BlowUp, FarAwayIsNoBlowUp) {
   EXPECT_EQ(firstBlowUp(1e7, 0.0, 11000), "");
 }
 
+// The blow-up test keeps the bodies' state vectors between steps: a body made
+// mid-run is watched from the next step, and one destroyed (removed, or made
+// static) is no longer read.
+class GrowingScene : public OneBall {
+ public:
+  GrowingScene() : OneBall(0.0, 0.0) {}
+  Sphere& addRunaway() {
+    Sphere& ball = add<Sphere>(world(), space(), 0.5, 1.0);
+    ball.setPosition(5.0, 10.0, 0.0);
+    ball.setLinearVelocity(2e8, 0.0, 0.0);
+    return ball;
+  }
+  void drop(const AbstractObject& object) { remove(&object); }
+};
+
+TEST(BlowUp, BodiesMadeOrDestroyedMidRunAreWatchedFromTheNextStep) {
+  GrowingScene scene;
+  RunOptions options;
+  options.headless = true;
+  scene.initialize(options);
+  for (int i = 0; i < 10; ++i) ASSERT_TRUE(scene.stepOnce());
+  scene.drop(scene.addRunaway());
+  EXPECT_TRUE(scene.stepOnce()) << scene.run().blowUpReason();
+  scene.addRunaway().setAsFixedGeom();
+  EXPECT_TRUE(scene.stepOnce()) << scene.run().blowUpReason();
+  scene.addRunaway();
+  EXPECT_FALSE(scene.stepOnce());
+  const std::string& reason = scene.run().blowUpReason();
+  EXPECT_NE(reason.find("runaway energy: a body moves at"), std::string::npos) << reason;
+  scene.shutdown();
+}
+
 }  // namespace
 }  // namespace odelab
