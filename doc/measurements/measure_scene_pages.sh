@@ -1,0 +1,73 @@
+#!/bin/sh
+# Runs the headless commands whose figures the scene pages doc/tests/test1, 3,
+# 4, 5, 6, 7 and 10 .md quote and that the report does not run, and writes the
+# figures quoted as a CSV with its run header:
+#
+#   doc/measurements/measure_scene_pages.sh [CSV]
+#
+# CSV defaults to doc/measurements/scene_pages.csv: one row per figure
+# (program, arguments, repeat, metric, value, exit status). The metrics are the
+# programs' own (deterministic: one run each), except test3's cost: its runs
+# are repeated three times, interleaved, and cpu_seconds is the run's CPU time
+# (user + system, from the kernel's account of the child). Uses the Release
+# build in BUILD_DIR (default: build/). About a minute.
+set -eu
+USAGE_LINES=2,13p
+. "$(dirname "$0")/common.sh"
+csv=${1:-$root/doc/measurements/scene_pages.csv}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+measurement_header "doc/measurements/measure_scene_pages.sh" > "$work/csv"
+python3 - "$build/tests" "$work" >> "$work/csv" <<'PY'
+import json, resource, subprocess, sys
+from pathlib import Path
+
+programs, work = Path(sys.argv[1]), Path(sys.argv[2])
+BOUNCE = ("max_rebound_error", "worst_ball", "balls_measured", "balls_bounced")
+HOLD = ("held", "seconds_held", "max_tilt_degrees", "max_penetration")
+UPRIGHT = ("fell", "seconds_upright")
+STOP = ("launches", "passed_through", "stopped", "max_stop_energy_ratio")
+COST = ("cpu_seconds", "real_time_factor", "bodies", "disabled_bodies")
+# (program, arguments, metrics kept, repeats): the commands as the pages write them.
+RUNS = [("test1", f"--seconds 15 --cfm 0 {a}", BOUNCE, 1) for a in ("--erp 0.2", "--erp 0.8", "--erp 0 --bounce-velocity 2")]
+RUNS += [("test3", a, COST, 3) for a in ("--seconds 20", "--seconds 20 --no-auto-disable",
+                                         "--seconds 20 --no-auto-disable --iterations 20",
+                                         "--seconds 9", "--seconds 9 --no-auto-disable")]
+RUNS += [("test4", f"--seconds {t} --big-mass 5000 --seed {s}", HOLD, 1) for t in (20, 60) for s in range(1, 7)]
+RUNS += [("test4", a, HOLD, 1) for a in ("--cfm 1e-5", "--cfm 1e-4", "--cfm 1e-3", "--erp 0.05")]
+RUNS += [("test5", f"--seconds 20 --plates 50 --spawn-interval 0.3 --seed {s}",
+          ("landed_plates", "max_axis_offset", "stack_height", "max_twist_degrees"), 1) for s in (2, 3)]
+RUNS += [("test6", f"--seconds 20 {a}", UPRIGHT, 1) for a in ("--mu 1", "--mu 0.5", "--max-contacts 4", "--max-contacts 1")]
+RUNS += [("test7", f"--max-angular-speed 10 --throws 3 --seed {s}", ("max_joint_error", "max_angular_speed"), 1)
+         for s in range(1, 11)]
+RUNS += [("test7", f"--max-angular-speed 0 --throws 3 --seed {s}", ("max_joint_error", "max_angular_speed"), 1)
+         for s in range(1, 6)]
+RUNS += [("test10", f"--ccd --velocity {a}", STOP, 1) for a in ("200 --launches 5", "10000 --launches 5",
+                                                                "10000 --launches 20",
+                                                                "10000 --launches 100 --random-orientation")]
+
+rows = []
+for repeat in range(1, max(r[3] for r in RUNS) + 1):  # interleaved: every command once per round
+    for program, arguments, kept, repeats in RUNS:
+        if repeat > repeats:
+            continue
+        out = work / "metrics.json"
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        rc = subprocess.run([str(programs / program), "--headless", *arguments.split(), "--metrics-json", str(out)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        if not out.exists():
+            sys.exit(f"measure_scene_pages: {program} {arguments} wrote no metrics (status {rc})")
+        metrics = json.loads(out.read_text())
+        out.unlink()
+        metrics["cpu_seconds"] = round(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime, 3)
+        for name in kept:
+            if name not in metrics:
+                sys.exit(f"measure_scene_pages: {program} {arguments} reported no {name}")
+            rows.append((program, arguments, repeat, name, metrics[name], rc))
+print("program,arguments,repeat,metric,value,exit_status")
+for row in rows:
+    print(",".join(str(cell) for cell in row))
+PY
+mv "$work/csv" "$csv"
+echo "measure_scene_pages: wrote $csv"
