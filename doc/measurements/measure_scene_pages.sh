@@ -34,6 +34,8 @@ RUNS += [("test3", a, COST, 3) for a in ("--seconds 20", "--seconds 20 --no-auto
                                          "--seconds 20 --no-auto-disable --iterations 20",
                                          "--seconds 9", "--seconds 9 --no-auto-disable")]
 RUNS += [("test4", f"--seconds {t} --big-mass 5000 --seed {s}", HOLD, 1) for t in (20, 60) for s in range(1, 7)]
+RUNS += [("test4", f"--seconds {t} --big-mass {m} --seed {s}", HOLD, 1)
+         for t, m in ((60, 10000), (20, 15000), (20, 20000)) for s in range(1, 4)]
 RUNS += [("test4", a, HOLD, 1) for a in ("--cfm 1e-5", "--cfm 1e-4", "--cfm 1e-3", "--erp 0.05")]
 RUNS += [("test5", f"--seconds 20 --plates 50 --spawn-interval 0.3 --seed {s}",
           ("landed_plates", "max_axis_offset", "stack_height", "max_twist_degrees"), 1) for s in (2, 3)]
@@ -42,6 +44,7 @@ RUNS += [("test7", f"--max-angular-speed 10 --throws 3 --seed {s}", ("max_joint_
          for s in range(1, 11)]
 RUNS += [("test7", f"--max-angular-speed 0 --throws 3 --seed {s}", ("max_joint_error", "max_angular_speed"), 1)
          for s in range(1, 6)]
+RUNS += [("test7", "--max-angular-speed 0 --throws 1", ("max_joint_error", "max_angular_speed"), 1)]
 RUNS += [("test10", f"--ccd --velocity {a}", STOP, 1) for a in ("200 --launches 5", "10000 --launches 5",
                                                                 "10000 --launches 20",
                                                                 "10000 --launches 100 --random-orientation")]
