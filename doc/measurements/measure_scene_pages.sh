@@ -49,6 +49,9 @@ RUNS += [("test10", f"--ccd --velocity {a}", STOP, 1) for a in ("200 --launches 
                                                                 "10000 --launches 20",
                                                                 "10000 --launches 100 --random-orientation")]
 
+missing = sorted({program for program, *_ in RUNS if not (programs / program).is_file()})
+if missing:
+    sys.exit(f"measure_scene_pages: no {', '.join(missing)} in {programs} (build them, or set BUILD_DIR)")
 rows = []
 for repeat in range(1, max(r[3] for r in RUNS) + 1):  # interleaved: every command once per round
     for program, arguments, kept, repeats in RUNS:
