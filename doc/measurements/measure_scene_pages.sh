@@ -7,12 +7,13 @@
 #
 # CSV defaults to doc/measurements/scene_pages.csv: one row per figure
 # (program, arguments, repeat, metric, value, exit status). The metrics are the
-# programs' own (deterministic: one run each), except test3's cost: its runs
-# are repeated three times, interleaved, and cpu_seconds is the run's CPU time
-# (user + system, from the kernel's account of the child). Uses the Release
-# build in BUILD_DIR (default: build/). About a minute.
+# programs' own (deterministic: one run each), except the costs of test3 and
+# test5: those runs are repeated (three times, interleaved), and cpu_seconds
+# is the run's CPU time (user + system, from the kernel's account of the
+# child). Uses the Release build in BUILD_DIR (default: build/). About five
+# minutes.
 set -eu
-USAGE_LINES=2,13p
+USAGE_LINES=2,14p
 . "$(dirname "$0")/common.sh"
 csv=${1:-$root/doc/measurements/scene_pages.csv}
 work=$(mktemp -d)
@@ -39,6 +40,13 @@ RUNS += [("test4", f"--seconds {t} --big-mass {m} --seed {s}", HOLD, 1)
 RUNS += [("test4", a, HOLD, 1) for a in ("--cfm 1e-5", "--cfm 1e-4", "--cfm 1e-3", "--erp 0.05")]
 RUNS += [("test5", f"--seconds 20 --plates 50 --spawn-interval 0.3 --seed {s}",
           ("landed_plates", "max_axis_offset", "stack_height", "max_twist_degrees"), 1) for s in (2, 3)]
+PLATES = "--seconds 20 --plates 50 --spawn-interval 0.3"
+RUNS += [("test5", f"{PLATES} {a}".rstrip(), ("ms_per_step", "real_time_factor", "max_axis_offset"), 3)
+         for a in ("", *(f"--auto-disable --auto-disable-linear {v} --auto-disable-angular {w}"
+                         for v, w in (("0.01", "0.01"), ("0.3", "0.01"), ("0.01", "0.05"), ("0.05", "0.05"),
+                                      ("0.3", "0.05"))))]
+RUNS += [("test5", f"--plates 100 --seconds 35 --space {s}", ("cpu_seconds", "max_axis_offset"), r)
+         for s, r in (("simple", 3), ("hash", 3), ("sap", 1), ("quadtree", 1))]
 RUNS += [("test6", f"--seconds 20 {a}", UPRIGHT, 1) for a in ("--mu 1", "--mu 0.5", "--max-contacts 4", "--max-contacts 1")]
 RUNS += [("test7", f"--max-angular-speed 10 --throws 3 --seed {s}", ("max_joint_error", "max_angular_speed"), 1)
          for s in range(1, 11)]
