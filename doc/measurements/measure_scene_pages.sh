@@ -8,19 +8,20 @@
 # CSV defaults to doc/measurements/scene_pages.csv: one row per figure
 # (program, arguments, repeat, metric, value, exit status). The metrics are the
 # programs' own (deterministic: one run each), except the costs of test3 and
-# test5: those runs are repeated (three times, interleaved), and cpu_seconds
+# test5, and build/checks/bench_swept_collision's timings: those are repeated
+# (three times, interleaved; the benchmark twice), and cpu_seconds
 # is the run's CPU time (user + system, from the kernel's account of the
 # child). Uses the Release build in BUILD_DIR (default: build/). About five
 # minutes.
 set -eu
-USAGE_LINES=2,14p
+USAGE_LINES=2,15p
 . "$(dirname "$0")/common.sh"
 csv=${1:-$root/doc/measurements/scene_pages.csv}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 measurement_header "doc/measurements/measure_scene_pages.sh" > "$work/csv"
 python3 - "$build/tests" "$work" >> "$work/csv" <<'PY'
-import json, resource, subprocess, sys
+import csv, json, re, resource, subprocess, sys
 from pathlib import Path
 
 programs, work = Path(sys.argv[1]), Path(sys.argv[2])
@@ -53,11 +54,16 @@ RUNS += [("test7", f"--max-angular-speed 10 --throws 3 --seed {s}", ("max_joint_
 RUNS += [("test7", f"--max-angular-speed 0 --throws 3 --seed {s}", ("max_joint_error", "max_angular_speed"), 1)
          for s in range(1, 6)]
 RUNS += [("test7", "--max-angular-speed 0 --throws 1", ("max_joint_error", "max_angular_speed"), 1)]
+RUNS += [("test10", "--find-max-velocity", ("launches", "passed_through", "band_upper_velocity",
+                                            "velocities_passed_in_band"), 1)]
 RUNS += [("test10", f"--ccd --velocity {a}", STOP, 1) for a in ("200 --launches 5", "10000 --launches 5",
                                                                 "10000 --launches 20",
                                                                 "10000 --launches 100 --random-orientation")]
 
+# test10.md's cost of the sweep: the benchmark's own lines ("what: 15.9 ns"), two runs.
+BENCH = programs.parent / "checks" / "bench_swept_collision"
 missing = sorted({program for program, *_ in RUNS if not (programs / program).is_file()})
+missing += [] if BENCH.is_file() else [BENCH.name]
 if missing:
     sys.exit(f"measure_scene_pages: no {', '.join(missing)} in {programs} (build them, or set BUILD_DIR)")
 rows = []
@@ -79,9 +85,14 @@ for repeat in range(1, max(r[3] for r in RUNS) + 1):  # interleaved: every comma
             if name not in metrics:
                 sys.exit(f"measure_scene_pages: {program} {arguments} reported no {name}")
             rows.append((program, arguments, repeat, name, metrics[name], rc))
-print("program,arguments,repeat,metric,value,exit_status")
-for row in rows:
-    print(",".join(str(cell) for cell in row))
+for repeat in (1, 2):
+    run = subprocess.run([str(BENCH)], capture_output=True, text=True)
+    timed = [re.fullmatch(r"(.+?):\s+([0-9.]+)( ns)?", line.strip()) for line in run.stdout.splitlines()]
+    rows += [(BENCH.name, "", repeat, m.group(1) + (" (ns)" if m.group(3) else ""), m.group(2), run.returncode)
+             for m in timed if m]
+out = csv.writer(sys.stdout, lineterminator="\n")
+out.writerow(("program", "arguments", "repeat", "metric", "value", "exit_status"))
+out.writerows(rows)
 PY
 mv "$work/csv" "$csv"
 echo "measure_scene_pages: wrote $csv"
