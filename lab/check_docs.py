@@ -14,7 +14,7 @@ measured figure when it is
   measure: s, ms, us, min, kg, t, m, cm, mm, m/s, J, N, x (a ratio),
   plates, fps, deg, degrees, Hz;
 
-and it is not
+both ends of a range count (0.24-0.27 s: 0.24 and 0.27); and it is not
 
 - part of a word or a name (test10, x86_64, H100, libode8, 0x1f),
 - a version (two points or more: 0.16.2; or a decimal after ODE, version,
@@ -63,7 +63,7 @@ UNITS = r"(?:m/s|ms|us|µs|min|kg|cm|mm|s|t|m|J|N|x|plates|fps|degrees|deg|Hz)"
 NAMES_BEFORE_VERSION = ("ode", "version", "v", "havok", "bullet", "mujoco", "python", "cmake", "c++", "gcc", "g++",
                         "debian", "ubuntu", "windows", "gtest", "matplotlib", "jolt", "rapier", "libode", "release")
 SECTION_WORDS = ("chapter", "section", "thesis", "thesis's", "figure", "table", "issue", "§", "chapters", "sections")
-NUMBER = re.compile(r"(?<![\w.\-/])(-?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:[eE][-+]?\d+)?)(?![\w.]*\d)"
+NUMBER = re.compile(r"(?<![\w./])(-?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:[eE][-+]?\d+)?)(?![\w.]*\d)"
                     r"(\s?%|\s?" + UNITS + r"(?![\w]))?")
 
 

@@ -118,6 +118,9 @@ class DocsFigures(unittest.TestCase):
         self.assertEqual(self.written("energy varies by 0.064% and 2.5x faster, 20 s long"),
                          ["0.064%", "2.5", "20"])
 
+    def test_both_ends_of_a_range(self):
+        self.assertEqual(self.written("CPU 0.24-0.27 s, 14.2-16.4 s"), ["0.24", "0.27", "14.2", "16.4"])
+
     def test_what_does_not(self):
         text = ("ODE 0.16.2 and ODE 0.11 on 2 cores, `--step 0.001`, exit status 2, chapter 5.10, test10, "
                 "a 1280 x 720 window, 2026-11-24 at 6:16, [a](doc/x1.5.md)\n## 5.4 The scene")
