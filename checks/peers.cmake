@@ -2,7 +2,7 @@
 # one source of truth for the scenes. CTest label: peers.
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 
-# Each claim below was measured first (doc/peers.md has the figures); the
+# Each claim below was measured first (the report's peers section (doc/results/RESULTS.md) has the figures); the
 # bound states what is physically true, with the margin said beside it.
 set(ODELAB_PEER_CHECKS)
 
