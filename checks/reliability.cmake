@@ -70,7 +70,7 @@ foreach(_peer bullet_lab mujoco_lab)
   odelab_refusals(${_peer} refuses_what_the_ode_programs_refuse headless 2
                   --step=nan --step=inf --step=0 --step=<empty> --seconds=0 --seconds=-1 --seconds=nan
                   --seconds=1e-9 "--seconds=1e-8 --step=1e-7" --velocity=nan --big-mass=nan --bob-mass=inf
-                  --scene=test7 --setting=maybe --metrics-json=/dev/null --metrics-json=/nonexistent/m.json
+                  --scene=test0 --setting=maybe --metrics-json=/dev/null --metrics-json=/nonexistent/m.json
                   --metrics-json=. --no-such-option "--step=0.001 --step=0.002")
 endforeach()
 
