@@ -79,6 +79,9 @@ for case in "$@"; do
         if [ "$exe" = "$program" ] && ! $as_nobody sh -c 'test -x "$1"' sh "$program"; then
           exe="$root/program"
           cp "$program" "$exe" && chmod 755 "$exe"
+          # The window side is a module the program loads from beside itself.
+          module=$(dirname "$program")/odelab_window.so
+          if [ -f "$module" ]; then cp "$module" "$root/" && chmod 755 "$root/odelab_window.so"; fi
         fi
         [ -d "$value" ] && [ "$value" != "$root/unwritable$n" ] && chmod -R a+rX "$value" && chmod 000 "$value/scene.frag"
         dropped=yes
