@@ -73,6 +73,7 @@ int runPeer(int argc, char** argv, Engine& engine) {
   app.add_option("--metrics-json", metricsJson, "write the metrics to this file as JSON");
   app.add_option("--write-model", modelFile,
                  "write the scene's model as the engine reads it (MuJoCo: MJCF, test2 and test9) to this file and exit");
+  app.set_version_flag("--version", engine.name() + " " + engine.version(), "print the engine and its version, and exit");
   app.add_flag("--headless", headless, "accepted for the lab's sake; the peers never open a window");
   cli::rejectEmptyValues(app);
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {

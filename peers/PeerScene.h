@@ -140,6 +140,8 @@ class Engine {
  public:
   virtual ~Engine() = default;
   virtual std::string name() const = 0;
+  // The engine's version as the library linked reports it ("3.24"), for --version.
+  virtual std::string version() const = 0;
   virtual bool hasContinuousCollision() const { return false; }
   // The scene's model as a file the engine reads (MuJoCo: MJCF); "" where
   // the engine builds the scene in code only.

@@ -469,6 +469,10 @@ class Bullet : public EngineOf<BulletPendulum, BulletBall, BulletStack, BulletLa
                                BulletUpright, BulletDominoes, BulletPlates> {
  public:
   std::string name() const override { return "bullet"; }
+  std::string version() const override {  // btGetVersion(): 324 for 3.24
+    const int v = btGetVersion();
+    return std::to_string(v / 100) + "." + std::to_string(v % 100);
+  }
   bool hasContinuousCollision() const override { return true; }
   std::string settingText(const RunOptions& o) const override {
     const bool best = o.setting == Setting::Best;

@@ -552,6 +552,10 @@ class Mujoco : public EngineOf<MujocoPendulum, MujocoBall, MujocoStack, MujocoLa
                                MujocoUpright, MujocoDominoes, MujocoPlates> {
  public:
   std::string name() const override { return "mujoco"; }
+  std::string version() const override {  // mj_version(): 222 for 2.2.2
+    const int v = mj_version();
+    return std::to_string(v / 100) + "." + std::to_string(v / 10 % 10) + "." + std::to_string(v % 10);
+  }
   // The MJCF of the scenes that the MuJoCo 3 cross-check runs (peers/wasm/mujoco3.js).
   std::string modelText(const RunOptions& o) const override {
     if (o.scene == "test2") return MujocoPendulum::xml(scene::test2::BOB_MASS, o);

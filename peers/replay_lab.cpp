@@ -167,6 +167,7 @@ class Replay : public Engine {
  public:
   explicit Replay(const Trajectory& t) : t_(t) {}
   std::string name() const override { return "replay"; }
+  std::string version() const override { return "(a recorded trajectory)"; }
   std::string settingText(const RunOptions&) const override { return "a recorded trajectory"; }
   std::unique_ptr<PendulumModel> pendulum(double, const RunOptions&) override {
     return std::make_unique<ReplayPendulum>(t_);

@@ -279,8 +279,8 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const 
   try {
     app.parse(argc, argv);
     checks();
-  } catch (const CLI::CallForHelp& help) {
-    return app.exit(help);
+  } catch (const CLI::Success& done) {  // --help, --version
+    return app.exit(done);
   } catch (const CLI::ParseError& error) {
     std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
     return exit_code::USAGE;

@@ -15,7 +15,7 @@ MAX_CACHE_BYTES = 16 * 1024 * 1024
 MAX_SMALL_FILE_BYTES = 16 * 1024 * 1024
 
 
-def _first_line(command, cwd=None):
+def first_line(command, cwd=None):
     try:
         out = subprocess.run(command, cwd=cwd, capture_output=True, text=True, timeout=30)
     except (OSError, subprocess.TimeoutExpired):
@@ -39,8 +39,8 @@ def ode_version(build_dir):
                 return f"{version.group(1).strip()}, {precision.group(1).strip()} precision (reported by test2)"
         except (OSError, subprocess.TimeoutExpired, InputError):
             pass
-    version = _first_line(["pkg-config", "--modversion", "ode"])
-    precision = _first_line(["pkg-config", "--variable=precision", "ode"])
+    version = first_line(["pkg-config", "--modversion", "ode"])
+    precision = first_line(["pkg-config", "--variable=precision", "ode"])
     return f"{version or 'unknown'}, precision {precision or 'unknown'} (pkg-config)"
 
 
@@ -61,7 +61,7 @@ def compiler(build_dir):
     if not path:
         raise InputError(f"the build's CMake cache {cache} names no C++ compiler (no CMAKE_CXX_COMPILER entry); "
                          f"is it a CMake cache?")
-    version = _first_line([path, "--version"])
+    version = first_line([path, "--version"])
     text = f"{version or 'unknown version'} ({path})"
     return text + (f", CMAKE_BUILD_TYPE {build_type}" if build_type else "")
 
@@ -79,7 +79,7 @@ def cpu():
 
 
 def git_commit(repo_root):
-    commit = _first_line(["git", "-C", str(repo_root), "rev-parse", "HEAD"])
+    commit = first_line(["git", "-C", str(repo_root), "rev-parse", "HEAD"])
     if not commit:
         return "unknown (not a git checkout)"
     status = subprocess.run(["git", "-C", str(repo_root), "status", "--porcelain", "--untracked-files=no"],

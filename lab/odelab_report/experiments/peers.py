@@ -16,6 +16,7 @@ from pathlib import Path
 
 from .. import markdown as md
 from ..plots import peers as plots
+from ..header import first_line
 from ..runner import LabError, RunSpec
 from ..search import highest_passing
 from .base import Experiment, Outcome
@@ -146,6 +147,14 @@ def web_versions():
     return {e: f"`{p}` {packages.get('node_modules/' + p, {}).get('version', '?')}" for e, p in WEB_PEERS.items()}
 
 
+def native_version(peers_dir, engine):
+    """"Bullet 3.24": the engine and the version of the library its peer
+    program links, as `<engine>_lab --version` prints them."""
+    line = first_line([str(peers_dir / PEER_PROGRAMS[engine]), "--version"])
+    words = (line or "").split()
+    return f"{engine.capitalize()} {words[1] if len(words) == 2 and words[0] == engine else '(version unknown)'}"
+
+
 def program_of(engine, scene):
     return scene.name if engine == "ode" else "../peers/" + PEER_PROGRAMS[engine]
 
@@ -186,7 +195,7 @@ class Peers(Experiment):
     name = "peers"
     title = "ODE, Bullet, MuJoCo, Havok, Jolt and Rapier on the same scenes"
     section = 5
-    programs = ("test1", "test2", "test3", "test4", "test5", "test6", "test7", "test8", "test9", "test10")
+    programs = tuple(scene.name for scene in SCENES)
     cost = (1200.0, 40.0)
 
     def run(self, ctx):
@@ -244,7 +253,8 @@ float32, so an error below {FLOAT32_ROUNDING:g} is rounding, not physics.""" if 
                          f"in {peers_dir}: install Node.js, run `npm ci` in peers/wasm and configure again).")
         not_built = ("\n\nNot yet on any peer (the peer programs do not build these scenes; every engine here has "
                      f"the parts): {'; '.join(f'{k}, {v}' for k, v in NOT_BUILT.items())}." if NOT_BUILT else "")
-        intro = f"""Each scene runs on ODE (its own program), Bullet 3.24 and MuJoCo 2.2.2 (the
+        intro = f"""Each scene runs on ODE (its own program), {native_version(peers_dir, "bullet")} and
+{native_version(peers_dir, "mujoco")} (the
 programs in `peers/`, doc/peers.md) with the same geometry, masses, gravity,
 step and run length, and each engine at its defaults and at its best for the
 scene. Cost is wall (and CPU) seconds per simulated second on this machine.

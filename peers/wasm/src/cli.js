@@ -30,12 +30,14 @@ const OPTIONS = {
   '--metrics-json': { kind: 'text', key: 'metricsJson', help: 'write the metrics to this file as JSON' },
   '--headless': { kind: 'flag', key: 'headless', help: "accepted for the lab's sake; the peers never open a window" },
   '--help': { kind: 'flag', key: 'help', help: 'print this help and exit' },
+  '--version': { kind: 'flag', key: 'version', help: 'print the engine and its npm package version, and exit' },
 };
 const ALIASES = { '-h': '--help' };
 
 function defaults() {
   return { scene: 'test2', step: 0.001, seconds: -1, setting: 'default', ccd: false, velocity: 200,
-    findMaxVelocity: false, bigMass: 0, bobMass: 0, plates: 0, spawnInterval: 0, metricsJson: '', headless: false, help: false };
+    findMaxVelocity: false, bigMass: 0, bobMass: 0, plates: 0, spawnInterval: 0, metricsJson: '', headless: false, help: false,
+    version: false };
 }
 
 function usage(engineName) {
@@ -93,7 +95,7 @@ function parseArguments(argv, engine) {
       options[o.key] = value;
     }
   }
-  if (options.help) return options;
+  if (options.help || options.version) return options;
   if (options.scene === 'test3' && !argv.some((a) => a === '--step' || a.startsWith('--step='))) options.step = scene.test3.SCENE_STEP;
   if (options.ccd && !engine.hasContinuousCollision)
     throw new UsageError(`--ccd: ${engine.name} has no continuous collision switch`);

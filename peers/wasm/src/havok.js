@@ -302,4 +302,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'havok', hasContinuousCollision: false, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'havok', packageName: '@babylonjs/havok', hasContinuousCollision: false, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

@@ -301,4 +301,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'jolt', hasContinuousCollision: true, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'jolt', packageName: 'jolt-physics', hasContinuousCollision: true, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };

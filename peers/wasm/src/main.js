@@ -2,6 +2,8 @@
 // One web peer's whole program: options, the engine loaded, the scene's
 // measurement, metrics. Exit status 0 done, 1 the engine or the metrics
 // file failed, 2 bad usage, 3 the state became non-finite (as the C++ peers).
+const fs = require('fs');
+const path = require('path');
 const { performance } = require('perf_hooks');
 const { parseArguments, usage, UsageError } = require('./cli');
 const { Metrics } = require('./metrics');
@@ -9,6 +11,17 @@ const m = require('./measurements');
 const { scene } = require('./constants');
 const { measureRebounds } = require('./rebound');
 const { measureUpright } = require('./upright');
+
+// The version npm installed (the lockfile's), read from the package's own
+// package.json: a package's "exports" may hide that file from require().
+function installedVersion(packageName) {
+  try {
+    const file = path.join(__dirname, '..', 'node_modules', packageName, 'package.json');
+    return JSON.parse(fs.readFileSync(file, 'utf8')).version;
+  } catch (error) {
+    return `(not installed: run \`npm ci\` in peers/wasm)`;
+  }
+}
 
 function measure(engine, lib, options, metrics) {
   switch (options.scene) {
@@ -50,6 +63,10 @@ async function runPeer(engine, argv = process.argv.slice(2)) {
   }
   if (options.help) {
     process.stdout.write(usage(engine.name));
+    return 0;
+  }
+  if (options.version) {
+    process.stdout.write(`${engine.name} ${engine.packageName} ${installedVersion(engine.packageName)}\n`);
     return 0;
   }
   let lib;

@@ -280,4 +280,4 @@ function settingText(options) {
   return text;
 }
 
-module.exports = { name: 'rapier', hasContinuousCollision: true, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
+module.exports = { name: 'rapier', packageName: '@dimforge/rapier3d-compat', hasContinuousCollision: true, load, settingText, plateStack: plates, dominoes, balls, axisSystem, hangingPair, pendulum, ball, stack, launch };
