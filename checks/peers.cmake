@@ -327,3 +327,10 @@ if(ODELAB_WEB_PEERS_READY)
   endforeach()
   set_tests_properties(${ODELAB_WEB_CHECKS} PROPERTIES LABELS peers)
 endif()
+
+# Without Node.js the project configures with no web-peer check, and the lab's
+# peers section runs ODE, Bullet and MuJoCo and names the three it skipped.
+add_test(NAME peers_without_node_skipped_and_said
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/scripts/without_node.sh ${CMAKE_SOURCE_DIR} $<TARGET_FILE_DIR:test2>
+                 ${CMAKE_BINARY_DIR}/without-node)
+set_tests_properties(peers_without_node_skipped_and_said PROPERTIES PROCESSORS 2 TIMEOUT 600 LABELS peers)
