@@ -76,7 +76,7 @@ def solver_decides(scene):
                  values, "solver_span > 10 * step_span")
 
 
-def peer_cell(scene, quantity, higher_better):
+def peer_cell(scene, quantity, higher_better, figure="{v:n}"):
     """The best engine other than ODE at step 0.001 in peers.csv; no cell
     when no other engine ran the scene."""
     f = "peers.csv"
@@ -89,7 +89,7 @@ def peer_cell(scene, quantity, higher_better):
                    f"[costs[j] for j in others], {higher_better})]",
               "name": "engines[i] + ' (' + settings[i] + ')'",
               "v": "vals[i]", "c": "costs[i]"}
-    return Claim(f"first.{scene}.peer", "{name}: {v:n} " + quantity + " at {c:n2} wall s per simulated s",
+    return Claim(f"first.{scene}.peer", "{name}: " + figure + " " + quantity + " at {c:n2} wall s per simulated s",
                  values, "len(others) > 0")
 
 
@@ -111,7 +111,7 @@ def rows():
         ("test1", "largest |apex2 / apex1 - e^2| over the balls, e >= 0.1", [
             [figure_from_thesis("test1", "test1", "rebound_error")], [thesis_cell("test1")],
             [Claim("first.test1.decides", "CFM: at CFM 1e-3 {b:n} balls rebound", {"b": value("test1", "bounced_cfm")})],
-            [], []]),
+            [], [peer_cell("test1", "largest rebound error", False)]]),
         ("test2", "total energy (max - min) / max over 60 s, as the thesis", [
             [figure_from_thesis("test2", "test2", "variation", "{v:p2}")], [thesis_cell("test2")],
             [step_decides("test2"), solver_decides("test2")], [cheapest_cell("test2")],
@@ -126,7 +126,8 @@ def rows():
             [thesis_cell("test3")],
             [Claim("first.test3.decides", "auto-disable and iterations: without auto-disable {a:n} x at 8 "
                    "iterations, {b:n} x at 20", {"a": value("test3", "real_time_factor_8"),
-                                                 "b": value("test3", "real_time_factor_20")})], [], []]),
+                                                 "b": value("test3", "real_time_factor_20")})], [],
+            [peer_cell("test3", "of the dominoes fallen in 20 s", True, "{v:p2}")]]),
         ("test4", "heaviest big cube (kg) held on the 5 kg cube, QuickStep 20, step 0.001", [
             [Claim("first.test4.figure", "{v:n} kg held {h:n} s", {
                 "v": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.001),
@@ -149,7 +150,7 @@ def rows():
                    "(simple space, every search)", STACKS, "min(ten) > max(twenty) or min(twenty) > max(ten)"),
              Claim("first.test5.decides.overlap", "no choice measured stands out: 10 iterations {ten:r} plates, "
                    "20 iterations {twenty:r}, the ranges overlap (simple space); the spaces at 20 iterations "
-                   "{spaces:r}", STACKS, "True")], [], []]),
+                   "{spaces:r}", STACKS, "True")], [], [peer_cell("test5", "plates", True)]]),
         ("test6", "seconds the ball-joint axis system stays upright, QuickStep 20 (median over seeds)", [
             [Claim("first.test6.figure", "{v:n} s (seeds {all:r}, {n:n} seeds)",
                    {"v": q("remedy-test6.csv", "seconds_upright", "median", step_s=0.001,
@@ -161,9 +162,10 @@ def rows():
             [Claim("first.test6.decides", "the solver: over the seeds dWorldStep stays up {dw:r} s, QuickStep 20 {qs:r} s",
                    {"dw": q("remedy-test6.csv", "seconds_upright", "list", setting="dWorldStep, step 0.001 (remedy)"),
                     "qs": q("remedy-test6.csv", "seconds_upright", "list", setting="QuickStep 20, step 0.001 (plain)")},
-                   "min(dw) > max(qs)")], [], []]),
+                   "min(dw) > max(qs)")], [], [peer_cell("test6", "s upright (of 60)", True)]]),
         ("test7", "largest joint error (m) over 3 throws", [
-            [figure_from_thesis("test7", "test7", "joint_error", "{v:n} m")], [thesis_cell("test7")], [], [], []]),
+            [figure_from_thesis("test7", "test7", "joint_error", "{v:n} m")], [thesis_cell("test7")], [], [],
+            [peer_cell("test7", "m joint error (no angular speed cap)", False)]]),
         ("test8", "largest |l - l0| / l0 of the hinge over 60 s, 5000 kg bob, ERP 0.4, CFM 1e-4", [
             [figure_from_thesis("test8", "test8_a", "elongation")], [thesis_cell("test8_a")],
             [Claim("first.test8.decides", "CFM: {c0:n2} at CFM 0, {c4:n2} at 1e-4 (ERP 0.4)",
