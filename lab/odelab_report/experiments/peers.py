@@ -152,7 +152,8 @@ def native_version(peers_dir, engine):
     program links, as `<engine>_lab --version` prints them."""
     line = first_line([str(peers_dir / PEER_PROGRAMS[engine]), "--version"])
     words = (line or "").split()
-    return f"{engine.capitalize()} {words[1] if len(words) == 2 and words[0] == engine else '(version unknown)'}"
+    name = {"bullet": "Bullet", "mujoco": "MuJoCo"}[engine]
+    return f"{name} {words[1] if len(words) == 2 and words[0] == engine else '(version unknown)'}"
 
 
 def program_of(engine, scene):
