@@ -334,3 +334,22 @@ add_test(NAME peers_without_node_skipped_and_said
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/scripts/without_node.sh ${CMAKE_SOURCE_DIR} $<TARGET_FILE_DIR:test2>
                  ${CMAKE_BINARY_DIR}/without-node)
 set_tests_properties(peers_without_node_skipped_and_said PROPERTIES PROCESSORS 2 TIMEOUT 600 LABELS peers)
+
+# --version names the engine and the version the lab's report quotes: status 0
+# and one line, the library's version for the C++ peers, the npm package's
+# installed version for the web peers.
+set(_version_rows "bullet_lab|bullet [0-9]+[.][0-9]+" "mujoco_lab|mujoco [0-9]+[.][0-9]+[.][0-9]+")
+if(ODELAB_WEB_PEERS_READY)
+  list(APPEND _version_rows "havok_lab|havok @babylonjs/havok [0-9]+[.][0-9]+[.][0-9]+"
+       "jolt_lab|jolt jolt-physics [0-9]+[.][0-9]+[.][0-9]+"
+       "rapier_lab|rapier @dimforge/rapier3d-compat [0-9]+[.][0-9]+[.][0-9]+")
+endif()
+foreach(_row IN LISTS _version_rows)
+  string(REPLACE "|" ";" _row "${_row}")
+  list(GET _row 0 _lab)
+  list(GET _row 1 _pattern)
+  add_test(NAME peers_${_lab}_prints_its_version
+           COMMAND sh -c "out=$(\"$0\" --version) && printf '%s\\n' \"$out\" | grep -Eqx \"$1\""
+                   $<TARGET_FILE:${_lab}> "${_pattern}")
+  set_tests_properties(peers_${_lab}_prints_its_version PROPERTIES LABELS peers)
+endforeach()
