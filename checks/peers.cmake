@@ -353,3 +353,19 @@ foreach(_row IN LISTS _version_rows)
                    $<TARGET_FILE:${_lab}> "${_pattern}")
   set_tests_properties(peers_${_lab}_prints_its_version PROPERTIES LABELS peers)
 endforeach()
+
+# A web peer started as `node peers/wasm/<engine>_lab.js`, without the flag that
+# keeps Node 20 from hanging at exit, starts itself again with it
+# (peers/wasm/src/safe_exit.js) and ends with its child's status: 0 for
+# --version, 2 for a refused option, 143 when stopped by SIGTERM (passed on
+# to the child, which is seen running with the flag).
+if(ODELAB_WEB_PEERS_READY)
+  add_test(NAME peers_web_entry_restarts_with_its_node_flag
+           COMMAND sh -c "n=$0; f=$1; \"$n\" \"$f\" --version | grep -q '^havok ' || exit 1
+                          \"$n\" \"$f\" --step nan 2>/dev/null; [ $? -eq 2 ] || exit 1
+                          \"$n\" \"$f\" --scene test2 --seconds 3000 >/dev/null & p=$!; sleep 2
+                          pgrep -f -- \"--no-concurrent-recompilation $f\" >/dev/null; restarted=$?
+                          kill -TERM $p; wait $p; [ $? -eq 143 ] && [ $restarted -eq 0 ] || exit 1"
+                   ${ODELAB_NODE} ${CMAKE_SOURCE_DIR}/peers/wasm/havok_lab.js)
+  set_tests_properties(peers_web_entry_restarts_with_its_node_flag PROPERTIES LABELS peers)
+endif()

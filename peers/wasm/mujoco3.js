@@ -71,7 +71,9 @@ async function main(argv) {
   return tally.finite ? 0 : 3;
 }
 
-main(process.argv.slice(2)).then((status) => { process.exitCode = status; }, (error) => {
-  process.stderr.write(`error: ${error.stack || error}\n`);
-  process.exitCode = 1;
-});
+if (!require('./src/safe_exit').restartedWithSafeExit(__filename)) {
+  main(process.argv.slice(2)).then((status) => { process.exitCode = status; }, (error) => {
+    process.stderr.write(`error: ${error.stack || error}\n`);
+    process.exitCode = 1;
+  });
+}

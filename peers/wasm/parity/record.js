@@ -89,4 +89,6 @@ function recordPlates(engine, lib, options) {
   return 0;
 }
 
-main(process.argv.slice(2)).then((status) => { process.exitCode = status; });
+if (!require('../src/safe_exit').restartedWithSafeExit(__filename)) {
+  main(process.argv.slice(2)).then((status) => { process.exitCode = status; });
+}

@@ -89,4 +89,6 @@ function main([file]) {
   process.stdout.write(metrics.json());
 }
 
-main(process.argv.slice(2));
+if (!require('../src/safe_exit').restartedWithSafeExit(__filename)) {
+  main(process.argv.slice(2));
+}
