@@ -27,6 +27,13 @@ constexpr int MAX_CONTACTS = ContactChoices::MOST_CONTACTS;
 constexpr double CHART_INTERVAL = 0.01;
 constexpr size_t MAX_CONTACT_MARKERS = 4096;
 
+// Whether a window run given --seconds (0: none) has reached it. Headless
+// runs take round(seconds / step) steps: within half a step of --seconds is
+// that step at a constant step, and the nearest one after a change of step.
+bool runLengthReached(double seconds, double simulatedTime, double step) {
+  return seconds > 0 && simulatedTime >= seconds - 0.5 * step;
+}
+
 }  // namespace
 
 AbstractWindow::AbstractWindow(std::string title, WorldSettings defaults)
@@ -266,6 +273,10 @@ void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) 
   const int stepsNow = time_.stepsFor(elapsedSeconds, settings_.step);
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < stepsNow; ++i) {
+    // A run given --seconds ends on the step a headless run ends on, not
+    // wherever the frame that crossed it ends: the last picture, the output
+    // files and the metrics are those of that moment on any machine.
+    if (runLengthReached(options_.seconds, simulatedTime_, settings_.step)) break;
     if (i > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > steppingBudget) {
       time_.dropSteps(stepsNow - i);
       break;
@@ -291,7 +302,7 @@ void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) 
       return;
     }
   }
-  if (options_.seconds > 0 && simulatedTime_ >= options_.seconds) quitRequested_ = true;
+  if (runLengthReached(options_.seconds, simulatedTime_, settings_.step)) quitRequested_ = true;
 }
 
 // A blow-up or an ODE error in a window: the run is replayed to the step

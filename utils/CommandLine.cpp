@@ -122,7 +122,7 @@ CLI::Validator positive(double max) {
 void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& settings) {
   app.add_flag("--headless", options.headless, "run with no window and no GL calls; print metrics and exit");
   app.add_option("--seconds", options.seconds,
-                 "simulated seconds to run (headless default: the scene's; window: quit after, default never)")
+                 "simulated seconds to run (headless default: the scene's; window: quit on the step a headless run ends on, default never)")
       ->check(positive(1e7));
   // The world settings, from the same table as the F-keys and the panel.
   for (const SettingSpec& spec : settingsTable()) {
