@@ -202,8 +202,8 @@ void AbstractWindow::useContactChoices(double defaultMu) {
   bindKey(SDLK_f, "F", "lower the contact friction mu (ladder 0 ... 5, dInfinity)", [step](int) { step(-1); });
   bindKey(SDLK_g, "G", "raise the contact friction mu (ladder 0 ... 5, dInfinity)", [step](int) { step(+1); });
   // --mu and --max-contacts are ContactChoices' own options (mu takes inf).
-  declare(Knob::real("mu", "contact friction mu (G: dInfinity)", "", contact_.mu, 0.0, ContactChoices::PANEL_MU_MAX));
-  declare(Knob::real("max_contacts", "contacts per pair", "", contact_.maxContacts, 1.0,
+  declare(Knob::real(ContactChoices::MU_KNOB, "contact friction mu (G: dInfinity)", "", contact_.mu, 0.0, ContactChoices::PANEL_MU_MAX));
+  declare(Knob::real(ContactChoices::MAX_CONTACTS_KNOB, "contacts per pair", "", contact_.maxContacts, 1.0,
                      double(ContactChoices::MOST_CONTACTS)));
 }
 

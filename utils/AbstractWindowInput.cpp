@@ -32,10 +32,10 @@ Knob& AbstractWindow::declare(Knob declared) {
     rewind_.keep(*knob.count);
   else
     rewind_.keep(*knob.value);
-  if (knob.panel && knob.value) {
-    parameters_.add({knob.label, knob.unit, knob.value, knob.offAtZero ? 0.0 : knob.min, knob.max, knob.logScale});
-    panelKnobs_.push_back(&knob);
-  }
+  // Every knob has its panel row, so that whatever the command line sets
+  // can be tuned there too.
+  parameters_.add({&knob, knob.offAtZero ? 0.0 : knob.min, knob.max});
+  panelKnobs_.push_back(&knob);
   if (knob.key != SDLK_UNKNOWN) {
     Knob* stepped = &knob;
     bindKey(knob.key, knob.keyName, knob.keyHelp,

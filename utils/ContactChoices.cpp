@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "Knob.h"
+
 namespace odelab {
 
 int ContactChoices::contactLimit() const { return static_cast<int>(std::lround(maxContacts)); }
@@ -32,6 +34,16 @@ std::string ContactChoices::muText(double mu) {
 }
 
 double ContactChoices::muMetric(double mu) { return std::isinf(mu) ? -1.0 : mu; }
+
+std::string ContactChoices::optionOfKnob(const std::string& knobName) {
+  if (knobName == MU_KNOB) return "--mu";
+  if (knobName == MAX_CONTACTS_KNOB) return "--max-contacts";
+  return {};
+}
+
+std::string ContactChoices::optionText(double value) {
+  return std::isinf(value) ? "inf" : jsonNumber(value);  // parseMu takes "inf"
+}
 
 void ContactChoices::addOptions(CLI::App& app) {
   app.add_option_function<std::string>(

@@ -36,6 +36,15 @@ struct ContactChoices {
   static std::string muText(double mu);
   // mu for a JSON metric, which has no infinity: -1 stands for dInfinity.
   static double muMetric(double mu);
+  // The knobs useContactChoices() declares for the panel and rewind; their
+  // options are --mu and --max-contacts below, not the knobs' own.
+  static constexpr const char* MU_KNOB = "mu";
+  static constexpr const char* MAX_CONTACTS_KNOB = "max_contacts";
+  // The option of one of those knobs ("--mu"), "" for any other knob.
+  static std::string optionOfKnob(const std::string& knobName);
+  // A value of one of them as its option reads it back exactly: mu's
+  // dInfinity as "inf", a number in its shortest exact form.
+  static std::string optionText(double value);
   // --mu and --max-contacts, with the scene's defaults in the help.
   void addOptions(CLI::App& app);
 };

@@ -18,6 +18,7 @@ Knob Knob::real(std::string name, std::string label, std::string unit, double& v
   knob.value = &value;
   knob.min = min;
   knob.max = max;
+  knob.initial = value;
   return knob;
 }
 
@@ -29,7 +30,7 @@ Knob Knob::integer(std::string name, std::string label, int& value, int min, int
   knob.min = min;
   knob.max = max;
   knob.kind = KnobKind::Integer;
-  knob.panel = false;  // the panel edits doubles; counts are set on the command line
+  knob.initial = value;
   return knob;
 }
 
@@ -68,13 +69,18 @@ Knob& Knob::logarithmic() {
   return *this;
 }
 
-Knob& Knob::hidden() {
-  panel = false;
+Knob& Knob::rebuildsScene() {
+  rebuilds = true;
   return *this;
 }
 
-Knob& Knob::rebuildsScene() {
-  rebuilds = true;
+Knob& Knob::onlyHeadless() {
+  headlessOnly = true;
+  return *this;
+}
+
+Knob& Knob::defaultPickedByScene() {
+  sceneDefault = true;
   return *this;
 }
 
@@ -117,6 +123,18 @@ std::string Knob::rangeText() const {
   return offAtZero ? "0 (off) or " + range : range;
 }
 
+std::string Knob::optionText() const {
+  // jsonNumber's text is the shortest that reads back as the same double,
+  // which is what CLI11's number parser does with it; counts are whole.
+  return jsonNumber(get());
+}
+
+std::string Knob::effectText() const {
+  if (rebuilds) return "rebuilds the scene";
+  if (headlessOnly) return "headless runs only";
+  return {};
+}
+
 std::string jsonString(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
@@ -142,7 +160,8 @@ std::string Knob::json() const {
          ", \"key\": " + jsonString(keyName) + ", \"min\": " + jsonNumber(min) + ", \"max\": " + jsonNumber(max) +
          ", \"unit\": " + jsonString(unit) + ", \"default\": " + jsonNumber(get()) +
          ", \"kind\": " + jsonString(kind == KnobKind::Integer ? "integer" : kind == KnobKind::Interval ? "interval" : "real") +
-         ", \"off_at_zero\": " + (offAtZero ? "true" : "false") + ", \"only_with\": " + jsonString(companion) + "}";
+         ", \"off_at_zero\": " + (offAtZero ? "true" : "false") + ", \"only_with\": " + jsonString(companion) +
+         ", \"scene_default\": " + (sceneDefault ? "true" : "false") + "}";
 }
 
 }  // namespace odelab

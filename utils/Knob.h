@@ -37,8 +37,13 @@ struct Knob {
   std::vector<double> ladder;  // the key's values, ascending; empty: the key's own stepper
   std::function<double(double current, int direction)> stepper;
   bool logScale = false;  // the panel's slider spans decades
-  bool panel = true;      // shown on the control panel (Real and Interval knobs)
   bool rebuilds = false;  // a new value starts a new run (the scene is built again)
+  bool headlessOnly = false;  // only a headless run reads it (throws, launches)
+  // Its declared value stands for a default the scene picks itself (headless
+  // or window, scanning or not): the copied command line names it only once
+  // it is given or changed, so that the line leaves that choice to the scene.
+  bool sceneDefault = false;
+  double initial = 0;  // the value it was declared with
   std::string companion;  // a flag the option is refused without ("--auto-disable")
   CLI::Option* parsed = nullptr;  // the command-line option, once added
 
@@ -51,8 +56,9 @@ struct Knob {
   Knob& steppedBy(std::function<double(double, int)> next);
   Knob& zeroIsOff();
   Knob& logarithmic();
-  Knob& hidden();  // not on the panel
   Knob& rebuildsScene();
+  Knob& onlyHeadless();
+  Knob& defaultPickedByScene();
   Knob& onlyWith(std::string flag);
 
   double get() const;
@@ -63,7 +69,13 @@ struct Knob {
   double next(int direction) const;
   bool accepts(double candidate) const;
   std::string rangeText() const;  // "[1, 1e+09]" or "0 or [1e-06, 1e+06]"
-  // {"name": ..., "option": ..., "key": ..., "min": ..., "max": ..., "unit": ..., "default": ...}
+  // The value as its option reads it back to the same double ("0.30000000000000004", "20").
+  std::string optionText() const;
+  // What the panel's row says beside the value, "" for a knob that acts at once:
+  // "rebuilds the scene", "headless runs only".
+  std::string effectText() const;
+  // {"name": ..., "option": ..., "key": ..., "min": ..., "max": ..., "unit": ..., "default": ...,
+  //  "kind": ..., "off_at_zero": ..., "only_with": ..., "scene_default": ...}
   std::string json() const;
 };
 

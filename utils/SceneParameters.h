@@ -3,21 +3,21 @@
 #include <string>
 #include <vector>
 
+#include "Knob.h"
+
 namespace odelab {
 
 // A knob (utils/Knob.h) as the control panel shows it: a row made from the
-// knob's declaration; changes go through AbstractWindow::changeParameter.
+// knob's declaration (label, unit, kind, what a change does); changes go
+// through AbstractWindow::changeParameter.
 struct SceneParameter {
-  std::string label;  // "big cube mass"
-  std::string unit;   // "kg", "" for none
-  double* value;
-  double min, max;
-  bool logScale = false;  // the panel's slider spans decades
+  const Knob* knob;
+  double min, max;  // the row's range: an off-at-zero knob's starts at 0
 };
 
 class SceneParameters {
  public:
-  void add(SceneParameter parameter) { parameters_.push_back(std::move(parameter)); }
+  void add(SceneParameter parameter) { parameters_.push_back(parameter); }
   const std::vector<SceneParameter>& all() const { return parameters_; }
   bool valid(int index) const { return index >= 0 && index < static_cast<int>(parameters_.size()); }
 

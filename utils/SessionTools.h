@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "CopyLine.h"
 #include "DebugMarkers.h"
 #include "Metrics.h"
 #include "MouseDrag.h"
@@ -59,6 +60,10 @@ class SessionTools {
   void notify(const std::string& message);
   std::string notice() const;  // the notice of the last few seconds ("" when none)
   bool dragging() const { return drag_.active(); }
+  // The scene's own options the command line gave (--ccd, --space sap):
+  // nothing on the panel sets them, so the copied command line repeats them.
+  const std::vector<LineOption>& givenSceneOptions() const { return givenSceneOptions_; }
+  void setGivenSceneOptions(std::vector<LineOption> options) { givenSceneOptions_ = std::move(options); }
   const double* dragTarget() const { return drag_.target(); }
 
  protected:
@@ -81,6 +86,7 @@ class SessionTools {
   long long failures_ = 0;    // blow-ups and ODE errors a window recovered from
   double noticeUntil_ = 0.0;  // in real seconds of window time
   Metrics marks_;             // mark() and the drag's distances
+  std::vector<LineOption> givenSceneOptions_;
 };
 
 }  // namespace odelab

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "CommandLine.h"
+#include "CopyLine.h"
 #include "ExitCodes.h"
 #include "OdeMessages.h"
 #include "StopSignal.h"
@@ -130,12 +131,20 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   CLI::App app{std::string(scene.title()) + "\n" + description};
   app.get_formatter()->column_width(34);
   cli::addCommonOptions(app, options, scene.tuning().settings());
+  // The scene's own options, which the copied command line repeats as given.
+  const size_t sharedOptions = app.get_options().size();
   scene.addOptions(app);
+  const std::vector<CLI::Option*> added = app.get_options();
+  const std::vector<const CLI::Option*> sceneOptions(added.begin() + static_cast<long>(sharedOptions), added.end());
   cli::addKnobOptions(app, scene.tuning().knobs());
   scene.addContactOptions(app);
   bool listSettings = false;
   app.add_flag("--list-settings", listSettings,
                "print every setting and scene knob as JSON (name, option, key, min, max, unit, default) and exit");
+  bool printCommandLine = false;
+  app.add_flag("--print-command-line", printCommandLine,
+               "at the run's end print \"command line: \" and the command line that starts it again with every "
+               "value it is tuned by then (as the panel's Copy as command line)");
   cli::rejectEmptyValues(app);
   app.footer(cli::keysHelp(scene));
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
@@ -147,6 +156,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     scene.checkOptions();
   });
   if (refused) return *refused;
+  scene.session().setGivenSceneOptions(givenOptions(sceneOptions));
 
   if (listSettings) {
     std::cout << cli::settingsJson(scene.tuning().settings(), scene.tuning().knobs());
@@ -179,6 +189,7 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     markCutShort(scene, error.what());
     status = exit_code::RUNTIME_ERROR;
   }
+  if (printCommandLine) std::cout << "command line: " << copyLine(scene) << std::endl;
   scene.shutdown();
   return status;
 }

@@ -87,7 +87,8 @@ TEST(Knob, ListsItselfAsJson) {
   Knob knob = Knob::real("big_mass", "big cube mass", "kg", mass, 1.0, 1e9).withOption("--big-mass", "");
   EXPECT_EQ(knob.json(),
             "{\"name\": \"big_mass\", \"option\": \"--big-mass\", \"key\": \"\", \"min\": 1, \"max\": 1e+09, "
-            "\"unit\": \"kg\", \"default\": 5000, \"kind\": \"real\", \"off_at_zero\": false, \"only_with\": \"\"}");
+            "\"unit\": \"kg\", \"default\": 5000, \"kind\": \"real\", \"off_at_zero\": false, \"only_with\": \"\", "
+            "\"scene_default\": false}");
 }
 
 TEST(KeyTable, AKeyBoundTwiceIsAnError) {

@@ -41,7 +41,8 @@ class BoxAndSphere : public AbstractWindow {
                                           "spawn a box, then a sphere, ... every S simulated seconds; 0: off "
                                           "(default: 1 headless, off in the window)")
                               .zeroIsOff()
-                              .logarithmic());
+                              .logarithmic()
+                              .defaultPickedByScene());  // spawnInterval(): 1 s headless unless given
     declare(Knob::integer("spawn_count", "spawn count (0: no limit)", spawnLimit_, 0, 1000000000)
                 .withOption("--spawn-count", "stop spawning after N objects (0 = no limit)"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides

@@ -70,22 +70,24 @@ class MaximumVelocity : public AbstractWindow {
                 .logarithmic());
     declare(Knob::real("surface_layer", "contact surface layer", "m", surfaceLayer_, 0.0, 1.0)
                 .withOption("--surface-layer", "contact surface layer, m: overlap ODE leaves uncorrected (the thesis: 0)")
-                .hidden());
+                .rebuildsScene());  // set in configureWorld()
     launchesKnob_ = &declare(Knob::integer("launches", "launches", launches_, 1, 100000)
                                   .withOption("--launches",
                                               "headless: cubes launched one at a time (the previous one removed) at "
                                               "--velocity; with --find-max-velocity, launches per tested velocity "
-                                              "(default 5, or 1 when scanning)"));
+                                              "(default 5, or 1 when scanning)")
+                                  .onlyHeadless()
+                                  .defaultPickedByScene());  // launchCount() picks it unless given
     declare(Knob::real("scan_limit", "scan limit", "m/s", scanLimit_, 1.0, 1e7)
                 .withOption("--scan-limit", "--find-max-velocity gives up above this velocity (m/s)")
                 .onlyWith("--find-max-velocity")
-                .hidden());
+                .onlyHeadless());
     declare(Knob::real("band_factor", "band factor", "", bandFactor_, 1.0, 100.0)
                 .withOption("--band-factor",
                             "--find-max-velocity keeps scanning up to this multiple of the first failing velocity, "
                             "to show whether stops reappear above it")
                 .onlyWith("--find-max-velocity")
-                .hidden());
+                .onlyHeadless());
     declare(Knob::real("spin", "launch spin", "rad/s", spin_, 0.0, 1e6)
                 .withOption("--spin",
                             "launch each cube turning at this rate (rad/s) about a random axis (from --seed): a limit "

@@ -91,23 +91,24 @@ class Pendulum : public PendulumScene {
     // large --step gives a row every step).
     declare(Knob::interval("sample_interval", "row interval", sampleInterval_, 1e-6, 3600.0)
                 .withOption("--sample-interval", "simulated seconds between rows of Test2_output.txt")
-                .hidden());
-    // The rig's shape is not in the thesis; it sets how much of the kinetic
+                .rebuildsScene());
+    // The rig is built with these (and the sampler with the row interval):
+    // a new value rebuilds the scene. The rig's shape is not in the thesis; it sets how much of the kinetic
     // energy is spin about the centre of mass. Each range keeps the bob above
     // the ground (anchor at 7 m) with the others at their defaults, and ODE's
     // mass valid (a radius or a mass that underflows fails dMassCheck).
     declare(Knob::real("rod_length", "rod length", "m", shape_.rodLength, 0.01, 6.0)
                 .withOption("--rod-length", "rod length, m (proposed)")
-                .hidden());
+                .rebuildsScene());
     declare(Knob::real("rod_thickness", "rod thickness", "m", shape_.rodThickness, 0.001, 1.0)
                 .withOption("--rod-thickness", "rod thickness (square section), m (proposed)")
-                .hidden());
+                .rebuildsScene());
     declare(Knob::real("rod_mass", "rod mass", "kg", shape_.rodMass, 0.001, 1e6)
                 .withOption("--rod-mass", "rod mass, kg (proposed)")
-                .hidden());
+                .rebuildsScene());
     declare(Knob::real("bob_radius", "bob radius", "m", shape_.bobRadius, 0.001, 1.0)
                 .withOption("--bob-radius", "bob radius, m (proposed; its centre is at rod length + radius)")
-                .hidden());
+                .rebuildsScene());
   }
 
   void addOptions(CLI::App& app) override {

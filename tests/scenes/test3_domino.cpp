@@ -72,7 +72,8 @@ class Domino : public AbstractWindow {
  public:
   Domino() : AbstractWindow("test3 - Domino", settingsForThisScene()) {
     declare(Knob::integer("dominoes", "dominoes", dominoCount_, 2, 1000)
-                .withOption("--dominoes", "number of dominoes along the spiral"));
+                .withOption("--dominoes", "number of dominoes along the spiral")
+                .rebuildsScene());  // the spiral is laid when the scene is built
     useContactChoices(DEFAULT_MU);
   }
 

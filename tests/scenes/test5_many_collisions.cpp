@@ -196,37 +196,40 @@ class ManyCollisions : public AbstractWindow {
  private:
   // The scene's knobs; 0 in
   // --plates and --spawn-interval stands for the scene's default (refused
-  // when typed).
+  // when typed). The world values are set in configureWorld(), when the
+  // scene is built: a new one rebuilds it.
   void declareKnobs() {
     declare(Knob::integer("plates", "plates", plateLimit_, 1, 100000)
-                .withOption("--plates", "timed spawning stops after N plates (default: 50 headless)"));
+                .withOption("--plates", "timed spawning stops after N plates (default: 50 headless)")
+                .defaultPickedByScene());
     declare(Knob::interval("spawn_interval", "spawn interval", spawnInterval_, 1e-6, 1e6)
                 .withOption("--spawn-interval",
                             "drop a plate every S simulated seconds (default: 0.3 headless, off in the window)")
-                .hidden());
+                .defaultPickedByScene());
     declare(Knob::real("auto_disable_linear", "auto-disable linear threshold", "m/s", disableLinear_, 0.0, 1e6)
                                .withOption("--auto-disable-linear",
                                            "auto-disable linear velocity threshold, m/s (default ODE's 0.01; the "
                                            "thesis tried 0.3)")
                                .onlyWith("--auto-disable")
-                               .hidden());
+                               .rebuildsScene());
     declare(Knob::real("auto_disable_angular", "auto-disable angular threshold", "rad/s", disableAngular_,
                                        0.0, 1e6)
                                 .withOption("--auto-disable-angular",
                                             "auto-disable angular velocity threshold, rad/s (default ODE's 0.01)")
                                 .onlyWith("--auto-disable")
-                                .hidden());
+                                .rebuildsScene());
     declare(Knob::real("contact_max_correcting_vel", "contact max correcting velocity", "m/s", maxCorrectingVel_, 1e-6, 1e9)
                 .withOption("--contact-max-correcting-vel",
                             "dWorldSetContactMaxCorrectingVel: the fastest a contact pushes bodies apart to undo "
                             "penetration, m/s (default ODE's: unlimited)")
-                .hidden());
+                .rebuildsScene());
     declare(Knob::real("contact_surface_layer", "contact surface layer", "m", surfaceLayer_, 0.0, 0.1)
                 .withOption("--contact-surface-layer",
                             "dWorldSetContactSurfaceLayer: penetration depth a contact leaves alone, m (default ODE's 0)")
-                .hidden());
+                .rebuildsScene());
     declare(Knob::integer("threads", "threads", threads_, 1, MAX_THREADS)
-                .withOption("--threads", "threads for ODE's threaded island stepping (default 1: not threaded)"));
+                .withOption("--threads", "threads for ODE's threaded island stepping (default 1: not threaded)")
+                .rebuildsScene());
   }
 
   double spawnInterval() const {

@@ -86,11 +86,12 @@ class AxisSystem2 : public AbstractWindow {
                 .withKey(SDLK_F5, "F5", "max angular speed of every body up (Shift: down): off, 1, 3, 10, 30, 100 rad/s",
                          ANGULAR_SPEED_LADDER));
     declare(Knob::integer("throws", "throws", throws_, 1, 1000)
-                .withOption("--throws", "headless: how many times the test cube is thrown"));
+                .withOption("--throws", "headless: how many times the test cube is thrown")
+                .onlyHeadless());
     // A throw interval below one step would count throws that no step separates.
     declare(Knob::interval("throw_interval", "throw interval", throwInterval_, 1e-6, 1e4)
                 .withOption("--throw-interval", "headless: simulated seconds between throws")
-                .hidden());
+                .onlyHeadless());
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 

@@ -62,7 +62,7 @@ class HingeStability : public PendulumScene {
     // large --step gives a row every step).
     declare(Knob::interval("sample_interval", "row interval", sampleInterval_, 1e-6, 3600.0)
                 .withOption("--sample-interval", "simulated seconds between rows of Test8_output.txt")
-                .hidden());
+                .rebuildsScene());  // the sampler is made when the scene is built
   }
 
   std::vector<std::string> outputFileNames() const override {

@@ -12,8 +12,7 @@ namespace odelab {
 
 inline Knob bounceVelocityKnob(double& bounceVelocity, const std::string& source) {
   return Knob::real("bounce_velocity", "bounce velocity", "m/s", bounceVelocity, 0.0, 1000.0)
-      .withOption("--bounce-velocity", "slowest impact that bounces, m/s (" + source + ")")
-      .hidden();
+      .withOption("--bounce-velocity", "slowest impact that bounces, m/s (" + source + ")");
 }
 
 }  // namespace odelab

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../ContactChoices.h"
+#include "../CopyLine.h"
 #include "../FormatValue.h"
 #include "../SceneKeys.h"
 #include "../TypedNumber.h"
@@ -121,15 +123,6 @@ bool flowButton(const char* label) {
   return ImGui::Button(label);
 }
 
-// The world settings in force as the command line that starts the program
-// with them ("test2 --erp 0.4 --cfm 0 ... --solver quick").
-std::string commandLineOf(const AbstractWindow& scene) {
-  std::string line = scene.programName();
-  for (const SettingSpec& spec : settingsTable())
-    line += std::string(" ") + spec.option + " " + settingText(spec.id, settingValue(scene.tuning().settings(), spec.id));
-  return line;
-}
-
 // A drag moves the mouse this far before it counts: a click is not a drag.
 constexpr float LEAST_DRAG_PIXELS = 4.0f;
 
@@ -237,10 +230,11 @@ void ControlPanel::timeButtons(AbstractWindow& scene) {
 }
 
 void ControlPanel::copyCommandLine(const AbstractWindow& scene) {
-  // The settings as typed options, onto the clipboard and standard output,
-  // so a run tuned here can be started again from a shell.
+  // Every value the run is tuned by as typed options (utils/CopyLine.h),
+  // onto the clipboard and standard output, so a run tuned here can be
+  // started again from a shell.
   if (ImGui::Button("Copy as command line")) {
-    copied_ = commandLineOf(scene);
+    copied_ = copyLine(scene);
     SDL_SetClipboardText(copied_.c_str());
     std::printf("command line: %s\n", copied_.c_str());
     std::fflush(stdout);
@@ -310,6 +304,7 @@ void ControlPanel::viewToggles(AbstractWindow& scene) {
 }
 
 void ControlPanel::settings(AbstractWindow& scene) {
+  ImGui::TextDisabled("World");
   for (const SettingSpec& spec : settingsTable()) {
     double value = settingValue(scene.tuning().settings(), spec.id);
     if (spec.id == SettingId::Solver) {
@@ -331,12 +326,27 @@ void ControlPanel::settings(AbstractWindow& scene) {
 }
 
 void ControlPanel::parameters(AbstractWindow& scene) {
+  // Every knob the scene declared, the contact choices first: two groups
+  // under headings, so a scene's own values are found in one place.
   const auto& all = scene.tuning().parameters().all();
-  for (int i = 0; i < static_cast<int>(all.size()); ++i) {
-    const SceneParameter& p = all[i];
-    double value = *p.value;
-    const std::string label = p.label + (p.unit.empty() ? "" : " (" + p.unit + ")");
-    if (edit(label, value, p.min, p.max, p.logScale, false)) scene.changeParameter(i, value);
+  for (const bool contacts : {true, false}) {
+    bool headed = false;
+    for (int i = 0; i < static_cast<int>(all.size()); ++i) {
+      const SceneParameter& p = all[i];
+      const Knob& knob = *p.knob;
+      if (ContactChoices::optionOfKnob(knob.name).empty() == contacts) continue;
+      if (!headed) ImGui::TextDisabled(contacts ? "Contacts" : "Scene");
+      headed = true;
+      double value = knob.get();
+      const std::string effect = knob.effectText();
+      const std::string label = knob.label + (knob.unit.empty() ? "" : " (" + knob.unit + ")") +
+                                (knob.key != SDLK_UNKNOWN ? "   " + knob.keyName : "") +
+                                (effect.empty() ? "" : "; " + effect);
+      if (edit(label, value, p.min, p.max, knob.logScale, knob.kind == KnobKind::Integer))
+        scene.changeParameter(i, value);
+      if (ImGui::IsItemHovered() && !knob.help.empty())
+        ImGui::SetTooltip("%s %s\n%s", knob.option.c_str(), knob.rangeText().c_str(), knob.help.c_str());
+    }
   }
 }
 
@@ -363,21 +373,19 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
     ImGui::Begin("Controls (Tab hides)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                                       ImGuiWindowFlags_NoCollapse);
     // The world settings come first, where every scene has them at the
-    // same place (after the launcher's scene list); then the scene's own
-    // keys, the drawing and its values.
+    // same place (after the launcher's scene list), then the contact
+    // choices and the scene's knobs, so every value the copied command
+    // line names is tuned in one place; then the scene's keys and the drawing.
     sceneList(scene);
     timeButtons(scene);
     ImGui::Separator();
     settings(scene);
+    parameters(scene);
     copyCommandLine(scene);
     ImGui::Separator();
     timelineSlider(scene);
     sceneKeys(scene);
     viewToggles(scene);
-    if (!scene.tuning().parameters().all().empty()) {
-      ImGui::Separator();
-      parameters(scene);
-    }
     height_ = ImGui::GetWindowHeight();
     ImGui::End();
   }

@@ -1,0 +1,93 @@
+#include "CopyLine.h"
+
+#include <CLI/CLI.hpp>
+
+#include "AbstractWindow.h"
+#include "ContactChoices.h"
+#include "Knob.h"
+#include "SettingsTable.h"
+
+namespace odelab {
+
+namespace {
+
+std::string longName(const CLI::Option& option) {
+  const std::vector<std::string>& names = option.get_lnames();
+  return names.empty() ? option.get_name() : "--" + names.front();
+}
+
+bool givenFlag(const std::vector<LineOption>& given, const std::string& flag) {
+  for (const LineOption& option : given)
+    if (option.option == flag) return true;
+  return false;
+}
+
+// Whether naming the knob on a command line starts the run it is in now.
+bool named(const Knob& knob, bool contactKnob, const std::vector<LineOption>& given) {
+  if (!knob.companion.empty() && !givenFlag(given, knob.companion)) return false;
+  if (contactKnob) return true;  // --mu takes any mu >= 0 and inf, beyond the panel's slider
+  if (!knob.accepts(knob.get())) return false;
+  const bool given_ = knob.parsed && knob.parsed->count() > 0;
+  return !knob.sceneDefault || given_ || knob.get() != knob.initial;
+}
+
+std::string shellWord(const std::string& text) {
+  const bool plain = !text.empty() && text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                             "0123456789_.,:/+=-") == std::string::npos;
+  if (plain) return text;
+  std::string quoted = "'";
+  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+}  // namespace
+
+std::vector<LineOption> givenOptions(const std::vector<const CLI::Option*>& sceneOptions) {
+  std::vector<LineOption> given;
+  for (const CLI::Option* option : sceneOptions) {
+    if (option->count() == 0) continue;
+    if (option->get_expected_max() == 0) {  // a flag: CLI11 expects no value after it
+      if (option->as<bool>()) given.push_back({longName(*option), "", true});  // "--ccd=false" is no flag
+    } else {
+      given.push_back({longName(*option), option->results().back()});  // the last one given counts
+    }
+  }
+  return given;
+}
+
+std::vector<LineOption> tuningOptions(const WorldSettings& settings, const std::deque<Knob>& knobs, unsigned seed,
+                                      const std::vector<LineOption>& given) {
+  std::vector<LineOption> line;
+  for (const SettingSpec& spec : settingsTable()) {
+    const double value = settingValue(settings, spec.id);
+    // settingText rounds to 6 digits for people; the line must read back exactly.
+    line.push_back({spec.option, spec.id == SettingId::Solver ? settingText(spec.id, value) : jsonNumber(value)});
+  }
+  for (const Knob& knob : knobs) {
+    const std::string contactOption = ContactChoices::optionOfKnob(knob.name);
+    const bool contactKnob = !contactOption.empty();
+    const std::string option = contactKnob ? contactOption : knob.option;
+    if (option.empty() || !named(knob, contactKnob, given)) continue;
+    line.push_back({option, contactKnob ? ContactChoices::optionText(knob.get()) : knob.optionText()});
+  }
+  line.push_back({"--seed", std::to_string(seed)});
+  line.insert(line.end(), given.begin(), given.end());
+  return line;
+}
+
+std::string commandLineText(const std::string& program, const std::vector<LineOption>& options) {
+  std::string text = shellWord(program);
+  for (const LineOption& option : options) {
+    text += ' ' + option.option;
+    if (!option.flag) text += ' ' + shellWord(option.value);
+  }
+  return text;
+}
+
+std::string copyLine(const AbstractWindow& scene) {
+  const SceneSettings& tuning = scene.tuning();
+  return commandLineText(scene.programName(), tuningOptions(tuning.settings(), tuning.knobs(), scene.options().seed,
+                                                            scene.session().givenSceneOptions()));
+}
+
+}  // namespace odelab
