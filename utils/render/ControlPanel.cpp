@@ -255,11 +255,18 @@ void ControlPanel::copyCommandLine(const AbstractWindow& scene) {
   // What was copied shows beside the pointer, not as a line in the column
   // that would push the rows below it down.
   if (!copied_.empty() && ImGui::IsItemHovered()) {
+    // Opaque: it lies over the rows below, whose text would show through.
+    ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 1.0f);
+    ImVec4 background = ImGui::GetStyleColorVec4(ImGuiCol_PopupBg);
+    background.w = 1.0f;
+    ImGui::PushStyleColor(ImGuiCol_PopupBg, background);
     ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(width_);
+    ImGui::PushTextWrapPos(width_ - 2 * ImGui::GetStyle().WindowPadding.x);
     ImGui::Text("copied: %s", copied_.c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
+    ImGui::PopStyleColor();
+    ImGui::PopStyleVar();
   }
 }
 
