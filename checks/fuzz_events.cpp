@@ -97,7 +97,11 @@ class ScriptWriter {
       }
       ++frame;
     }
-    out_ << frame << " mark fuzz_end\n" << frame + 1 << " key Escape\n";
+    // Esc closes what is open first (a panel field, the help) and asks once
+    // when the settings changed, which random keys do: up to four presses,
+    // a frame apart, end the run; the first that quits ends the script.
+    out_ << frame << " mark fuzz_end\n";
+    for (int press = 1; press <= 4; ++press) out_ << frame + press << " key Escape\n";
   }
 
  private:

@@ -230,7 +230,7 @@ void AbstractWindow::bindTimeAndViewKeys() {
     replayTo(target);
     notify(at + ": rewound to " + timeStamp(simulatedTime_));
   });
-  bindViewKey(SDLK_PERIOD, ".", "forward to the next snapshot, replaying what was recorded, and pause", [this](int) {
+  bindViewKey(SDLK_PERIOD, ".", "forward to the next snapshot or the furthest step reached, and pause", [this](int) {
     const long long target = rewind_.timeline().nextSnapshot(steps_);
     time_.setPaused(true);
     if (target < 0) {
@@ -262,7 +262,7 @@ std::vector<std::string> AbstractWindow::helpLines() const {
   lines.insert(lines.end(), {
       "Tab          control panel on / off",
       "Shift        reverses every F-key",
-      "Esc          quit",
+      "Esc          close the help (or a panel field), else quit (asks once if settings changed)",
   });
   for (const std::string& line : keys_.helpLines()) lines.push_back(line);
   return lines;

@@ -38,7 +38,9 @@ long long Timeline::previousSnapshot(long long step) const {
 long long Timeline::nextSnapshot(long long step) const {
   for (long long mark : snapshots_)
     if (mark > step && mark <= horizon_) return mark;
-  return -1;
+  // Past the last mark, the furthest step reached (where a run paused
+  // between marks was) is the way back.
+  return step < horizon_ ? horizon_ : -1;
 }
 
 }  // namespace odelab

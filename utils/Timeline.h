@@ -49,7 +49,8 @@ class Timeline {
 
   void markSnapshot(long long step);
   // The last mark before `step`, or -1; the first mark after `step` that is
-  // within the recorded horizon, or -1.
+  // within the recorded horizon, else the horizon when `step` is before it,
+  // else -1.
   long long previousSnapshot(long long step) const;
   long long nextSnapshot(long long step) const;
   // The furthest step this branch of the run has reached.

@@ -117,3 +117,15 @@ TEST(DragSpring, PullsThePickedBodyTowardTheTarget) {
 }
 
 }  // namespace
+
+// A run paused between marks, rewound with ',', must be able to come back
+// with '.' to where it paused: past the last mark, the next stop is the
+// furthest step reached.
+TEST(Timeline, ForwardPastTheLastMarkReachesTheHorizon) {
+  Timeline timeline;
+  for (long long s = 250; s <= 1000; s += 250) timeline.markSnapshot(s);
+  timeline.extendHorizon(1100);
+  EXPECT_EQ(timeline.nextSnapshot(750), 1000);
+  EXPECT_EQ(timeline.nextSnapshot(1000), 1100);
+  EXPECT_EQ(timeline.nextSnapshot(1100), -1);
+}

@@ -75,12 +75,15 @@ bool ControlPanel::handleEvent(const SDL_Event& event) {
     default:
       break;
   }
+  const bool keyEvent = event.type == SDL_KEYDOWN || event.type == SDL_KEYUP;
+  // A release is queued while the panel is hidden too, so that a key held
+  // as Tab hid it is not left down in ImGui.
+  if (keyEvent && event.key.keysym.scancode < 512 && (visible_ || event.type == SDL_KEYUP))
+    queuedKeys_.push_back({event.key.keysym.scancode, event.key.keysym.sym, event.type == SDL_KEYDOWN,
+                           event.key.keysym.mod, ""});
   if (!visible_) return false;
-  ImGui_ImplSDL2_ProcessEvent(&event);
-  // A key pressed and released within one frame (scripted input, a quick
-  // tap) would leave ImGui's key state up before it looks: it is held down
-  // for the next frame, as a click is.
-  if (event.type == SDL_KEYDOWN && event.key.keysym.scancode < 512) pressedKeys_.push_back(event.key.keysym.scancode);
+  if (event.type == SDL_TEXTINPUT) queuedKeys_.push_back({0, 0, false, 0, event.text.text});
+  else if (!keyEvent) ImGui_ImplSDL2_ProcessEvent(&event);
   const ImGuiIO& io = ImGui::GetIO();
   switch (event.type) {
     case SDL_MOUSEMOTION:
@@ -128,8 +131,8 @@ constexpr float LEAST_DRAG_PIXELS = 4.0f;
 
 }  // namespace
 
-bool ControlPanel::edit(const std::string& label, double& value, double min, double max, bool logScale,
-                        bool integer) {
+bool ControlPanel::edit(const std::string& label, double& value, double sliderMin, double min, double max,
+                        bool logScale, bool integer) {
   auto found = editing_.find(label);
   double shown = found != editing_.end() ? found->second : value;
   ImGui::PushID(label.c_str());
@@ -138,7 +141,7 @@ bool ControlPanel::edit(const std::string& label, double& value, double min, dou
   const ImGuiSliderFlags flags = (logScale ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
   // No number on the slider: its handle would cover it; the field beside
   // it shows the value, as it changes during a drag too.
-  ImGui::SliderScalar("##slider", ImGuiDataType_Double, &shown, &min, &max, "", flags);
+  ImGui::SliderScalar("##slider", ImGuiDataType_Double, &shown, &sliderMin, &max, "", flags);
   const bool sliderActive = ImGui::IsItemActive();
   // A stray click on the slider would jump the value to the click: only a
   // drag commits.
@@ -170,7 +173,11 @@ bool ControlPanel::edit(const std::string& label, double& value, double min, dou
   if (ImGui::IsItemActivated()) refusals_.erase(label);
   const bool commit = (enter || tab || (ImGui::IsItemDeactivated() && !escape)) && typing_.count(label) > 0;
   if (ImGui::IsItemDeactivated() && escape) typing_.erase(label);
-  if (commit) {
+  // Text left as shown (a field clicked and left) changes nothing, not even
+  // the digits the field rounded away.
+  if (commit && typing_[label] == shownText(shown, integer)) {
+    typing_.erase(label);
+  } else if (commit) {
     double read = 0;
     const std::string why = readTypedNumber(typing_[label], min, max, integer, read);
     typing_.erase(label);
@@ -239,7 +246,22 @@ void ControlPanel::copyCommandLine(const AbstractWindow& scene) {
     std::printf("command line: %s\n", copied_.c_str());
     std::fflush(stdout);
   }
-  if (!copied_.empty()) ImGui::TextWrapped("copied: %s", copied_.c_str());
+  // What was copied shows beside the pointer, not as a line in the column
+  // that would push the rows below it down.
+  if (!copied_.empty() && ImGui::IsItemHovered()) {
+    // Opaque: it lies over the rows below, whose text would show through.
+    ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 1.0f);
+    ImVec4 background = ImGui::GetStyleColorVec4(ImGuiCol_PopupBg);
+    background.w = 1.0f;
+    ImGui::PushStyleColor(ImGuiCol_PopupBg, background);
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(width_ - 2 * ImGui::GetStyle().WindowPadding.x);
+    ImGui::Text("copied: %s", copied_.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+    ImGui::PopStyleColor();
+    ImGui::PopStyleVar();
+  }
 }
 
 void ControlPanel::timelineSlider(AbstractWindow& scene) {
@@ -254,12 +276,11 @@ void ControlPanel::timelineSlider(AbstractWindow& scene) {
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, LEAST_DRAG_PIXELS)) scrubbing_ = true;
     if (scrubbing_) scrubStep_ = target;
   }
-  // Released after a drag: the run as it was at that step, rebuilt by
-  // replaying its recorded inputs (as , and . do), and paused there.
-  if (ImGui::IsItemDeactivated()) {
-    if (scrubbing_ && scrubStep_ != scene.run().steps()) scene.replayTo(scrubStep_);
-    scrubbing_ = false;
-  }
+  // During a drag and where it is released: the run as it was at that
+  // step, rebuilt by replaying its recorded inputs (as , and . do), and
+  // paused there; the scene follows the handle.
+  if (scrubbing_ && scrubStep_ != scene.run().steps()) scene.replayTo(scrubStep_);
+  if (ImGui::IsItemDeactivated()) scrubbing_ = false;
 }
 
 void ControlPanel::sceneKeys(AbstractWindow& scene) {
@@ -317,11 +338,13 @@ void ControlPanel::settings(AbstractWindow& scene) {
       if (choice != before) scene.changeSetting(spec.id, choice);
       continue;
     }
-    // A logarithmic slider cannot reach 0; CFM 0 is typed (or F4 down).
-    const double min = spec.logScale && spec.range->min <= 0 ? 1e-10 : spec.range->min;
+    // A logarithmic slider cannot reach 0; CFM 0 is typed (or F4 down), and
+    // the field takes the range the command line takes.
+    const double sliderMin = spec.logScale && spec.range->min <= 0 ? 1e-10 : spec.range->min;
     std::string label = std::string(spec.label) + (*spec.unit ? std::string(" (") + spec.unit + ")" : "") + "   " +
                         spec.keyName;
-    if (edit(label, value, min, spec.range->max, spec.logScale, spec.integer)) scene.changeSetting(spec.id, value);
+    if (edit(label, value, sliderMin, spec.range->min, spec.range->max, spec.logScale, spec.integer))
+      scene.changeSetting(spec.id, value);
   }
 }
 
@@ -342,11 +365,38 @@ void ControlPanel::parameters(AbstractWindow& scene) {
       const std::string label = knob.label + (knob.unit.empty() ? "" : " (" + knob.unit + ")") +
                                 (knob.key != SDLK_UNKNOWN ? "   " + knob.keyName : "") +
                                 (effect.empty() ? "" : "; " + effect);
-      if (edit(label, value, p.min, p.max, knob.logScale, knob.kind == KnobKind::Integer))
+      if (edit(label, value, p.min, p.min, p.max, knob.logScale, knob.kind == KnobKind::Integer))
         scene.changeParameter(i, value);
       if (ImGui::IsItemHovered() && !knob.help.empty())
         ImGui::SetTooltip("%s %s\n%s", knob.option.c_str(), knob.rangeText().c_str(), knob.help.c_str());
     }
+  }
+}
+
+void ControlPanel::feedKeys() {
+  ImGuiIO& io = ImGui::GetIO();
+  std::vector<int> changed;    // keys pressed or released this frame
+  bool editingKeyDown = false;  // BackSpace, Enter, an arrow ... pressed this frame
+  while (!queuedKeys_.empty()) {
+    const QueuedKey& next = queuedKeys_.front();
+    if (next.text.empty()) {
+      // A key's second change waits for the next frame, and everything
+      // after it too, to keep the order.
+      if (std::find(changed.begin(), changed.end(), next.scancode) != changed.end()) break;
+      changed.push_back(next.scancode);
+      io.KeysDown[next.scancode] = next.down;
+      io.KeyShift = (next.mod & KMOD_SHIFT) != 0;
+      io.KeyCtrl = (next.mod & KMOD_CTRL) != 0;
+      io.KeyAlt = (next.mod & KMOD_ALT) != 0;
+      io.KeySuper = (next.mod & KMOD_GUI) != 0;
+      if (next.down && (next.key < 32 || next.key > 126)) editingKeyDown = true;
+    } else {
+      // ImGui takes a frame's text before its keys: text typed after a
+      // BackSpace (say) waits a frame, so the BackSpace does not eat it.
+      if (editingKeyDown) break;
+      io.AddInputCharactersUTF8(next.text.c_str());
+    }
+    queuedKeys_.pop_front();
   }
 }
 
@@ -357,8 +407,7 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
   io.MousePos = ImVec2(static_cast<float>(mouseX_), static_cast<float>(mouseY_));
   io.MouseDown[0] = leftDown_ || leftPressed_;  // a click within one frame still counts
   leftPressed_ = false;
-  for (const int key : pressedKeys_) io.KeysDown[key] = true;
-  pressedKeys_.clear();
+  feedKeys();
   ImGui::NewFrame();
   if (visible_) {
     width_ = std::clamp(MOST_WINDOW_SHARE * static_cast<float>(windowWidth), LEAST_WIDTH_IN_LINES * textPixels_,

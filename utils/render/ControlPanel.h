@@ -2,6 +2,7 @@
 
 #include <SDL2/SDL.h>
 
+#include <deque>
 #include <map>
 #include <string>
 #include <vector>
@@ -53,14 +54,31 @@ class ControlPanel {
   // drag is one change on the timeline, not one per frame: a slider when a
   // drag (not a click) is released, a field on Enter, Tab or a click
   // elsewhere, its text read as the command line reads the option (a
-  // refusal is shown under the field; Esc drops the text).
-  bool edit(const std::string& label, double& value, double min, double max, bool logScale, bool integer);
+  // refusal is shown under the field; Esc drops the text). A logarithmic
+  // slider cannot reach 0, so it may start above `min`, which the field
+  // still accepts.
+  bool edit(const std::string& label, double& value, double sliderMin, double min, double max, bool logScale,
+            bool integer);
+  // Hands the keys and text queued since the last frame to ImGui, at most
+  // one change of each key a frame (see queuedKeys_).
+  void feedKeys();
 
   bool visible_;
   float textPixels_ = 16, width_ = 0, x_ = 0, y_ = 0, height_ = 0;
   int mouseX_ = -1, mouseY_ = -1;
   bool leftDown_ = false, leftPressed_ = false;
-  std::vector<int> pressedKeys_;  // scancodes pressed since the last frame
+  // Key presses, releases and typed text not yet given to ImGui, in order.
+  // ImGui 1.86 reads a key's state once a frame: a tap whose press and
+  // release come in one frame would be missed (or, held down by force,
+  // repeated), so the release waits for the next frame.
+  struct QueuedKey {
+    int scancode = 0;
+    SDL_Keycode key = 0;
+    bool down = false;
+    Uint16 mod = 0;
+    std::string text;  // typed text (no key) when not empty
+  };
+  std::deque<QueuedKey> queuedKeys_;
   std::map<std::string, double> editing_;        // a slider's value during its drag
   std::map<std::string, std::string> typing_;    // a field's text while it is typed in
   std::map<std::string, std::string> refusals_;  // why a typed value was refused, shown under it

@@ -1,5 +1,7 @@
 #include "EventPlayer.h"
 
+#include <algorithm>
+
 #include "RenderError.h"
 
 namespace odelab {
@@ -80,7 +82,16 @@ void EventPlayer::pushDue(long long frame) {
         event.button.windowID = windowId_;
         event.button.button = sdlButton(e.button);
         event.button.state = down ? SDL_PRESSED : SDL_RELEASED;
-        event.button.clicks = 1;
+        if (down) {
+          const bool again = event.button.button == lastButton_ && e.x == lastPressX_ && e.y == lastPressY_ &&
+                             e.frame - lastPressFrame_ <= DOUBLE_CLICK_FRAMES;
+          lastClicks_ = again ? static_cast<Uint8>(std::min(lastClicks_ + 1, 255)) : 1;
+          lastButton_ = event.button.button;
+          lastPressFrame_ = e.frame;
+          lastPressX_ = e.x;
+          lastPressY_ = e.y;
+        }
+        event.button.clicks = std::max<Uint8>(lastClicks_, 1);  // a release has its press's count
         event.button.x = e.x;
         event.button.y = e.y;
         push(event);

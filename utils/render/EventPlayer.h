@@ -15,6 +15,8 @@ namespace odelab {
 // Plays a --events script: before a frame's event polling, that frame's
 // events go into SDL's queue with SDL_PushEvent, so they take the same path
 // as real input (key down and up; button down, motion, up; wheel; SDL_QUIT).
+// Presses carry a click count as SDL's do (two quick presses at one pixel:
+// a double click).
 // A resize asks the window system for the new size (SDL_SetWindowSize), as
 // a user dragging the window's border does; the size-changed event comes
 // back from it.
@@ -46,6 +48,14 @@ class EventPlayer {
   Uint32 markType_ = static_cast<Uint32>(-1);
   int mouseX_ = 0, mouseY_ = 0;
   Uint32 buttonsHeld_ = 0;  // SDL_BUTTON_LMASK ... as a motion event's state
+  // The last press, for counting clicks as SDL does for real input: a
+  // press of the same button at the same pixel within DOUBLE_CLICK_FRAMES
+  // frames of the last one is its second click.
+  static constexpr long long DOUBLE_CLICK_FRAMES = 10;
+  Uint8 lastButton_ = 0;
+  long long lastPressFrame_ = -DOUBLE_CLICK_FRAMES - 1;
+  int lastPressX_ = -1, lastPressY_ = -1;
+  Uint8 lastClicks_ = 0;
 };
 
 }  // namespace odelab

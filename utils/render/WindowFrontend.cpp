@@ -124,7 +124,7 @@ class FrameLoop {
   bool idle() const;
   double seconds(Uint64 from, Uint64 to) const { return static_cast<double>(to - from) / ticksPerSecond_; }
 
-  WindowInput input_;
+  WindowInput input_{scene_};  // after scene_: it takes the tuning the scene starts with
   FrameTotals totals_;
   double ticksPerSecond_ = static_cast<double>(SDL_GetPerformanceFrequency());
   std::string notice_;

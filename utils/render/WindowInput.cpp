@@ -1,10 +1,32 @@
 #include "WindowInput.h"
 
+#include <algorithm>
+#include <cstdlib>
+
+#include "../SettingsTable.h"
+
 namespace odelab {
 
 namespace {
 
 const float METRES_PER_SECOND = 8.0f;
+// A press on a body becomes a drag once the cursor moves this far (window
+// pixels, either way): a click is not a drag.
+const int LEAST_DRAG_PIXELS = 4;
+
+// Shown (on the HUD, for a few seconds) by an Esc that would lose changed
+// settings; a second Esc while it shows quits.
+const char* const QUIT_PROMPT =
+    "settings changed since the start: Esc again quits; the panel's \"Copy as command line\" keeps them";
+
+// What a person tunes in a session: every world setting and the scene's
+// panel values.
+std::vector<double> tuningOf(const AbstractWindow& scene) {
+  std::vector<double> values;
+  for (const SettingSpec& spec : settingsTable()) values.push_back(settingValue(scene.tuning().settings(), spec.id));
+  for (const SceneParameter& p : scene.tuning().parameters().all()) values.push_back(*p.value);
+  return values;
+}
 
 }  // namespace
 
@@ -28,28 +50,86 @@ bool WindowInput::pressLeft(const SDL_MouseButtonEvent& button, AbstractWindow& 
     if (button.clicks >= 2) camera_.follow(-1, scene);
     return false;
   }
-  if (button.clicks >= 2) camera_.follow(hit.objectIndex, scene);
-  scene.beginDrag(hit, hit.point);
-  if (!scene.session().dragging()) return false;  // a static object: nothing to pull
+  // A double click on a body follows it and pulls nothing.
+  if (button.clicks >= 2) {
+    camera_.follow(hit.objectIndex, scene);
+    return true;
+  }
+  const dBodyID body = scene.run().objects()[hit.objectIndex]->getBody();
+  if (!body) return false;  // a static object: nothing to pull
+  // The drag begins when the cursor moves (moveLeft): a click, the first
+  // of a double click too, neither pulls the body nor enters the timeline.
   held_ = true;
+  pulling_ = false;
+  pressed_ = hit;
+  pressX_ = button.x;
+  pressY_ = button.y;
   grabDistance_ = hit.distance;
-  grabbed_ = scene.draggedObject();
-  dBodyGetPosRelPoint(grabbed_->getBody(), hit.point[0], hit.point[1], hit.point[2], grabLocal_);
+  dBodyGetPosRelPoint(body, hit.point[0], hit.point[1], hit.point[2], grabLocal_);
   return true;
+}
+
+void WindowInput::moveLeft(const SDL_MouseMotionEvent& motion, AbstractWindow& scene, const ViewRect& view) {
+  if (!pulling_) {
+    if (std::abs(motion.x - pressX_) < LEAST_DRAG_PIXELS && std::abs(motion.y - pressY_) < LEAST_DRAG_PIXELS) return;
+    // The point grabbed at the press, where the body has it now (unless a
+    // key rebuilt the scene meanwhile).
+    const auto& objects = scene.run().objects();
+    const dBodyID body =
+        pressed_.objectIndex < static_cast<int>(objects.size()) ? objects[pressed_.objectIndex]->getBody() : nullptr;
+    if (!body) {
+      held_ = false;
+      return;
+    }
+    dVector3 p;
+    dBodyGetRelPointPos(body, grabLocal_[0], grabLocal_[1], grabLocal_[2], p);
+    PickHit hit = pressed_;
+    std::copy(p, p + 3, hit.point);
+    scene.beginDrag(hit, hit.point);
+    if (!scene.session().dragging()) {
+      held_ = false;
+      return;
+    }
+    pulling_ = true;
+    grabbed_ = scene.draggedObject();
+  }
+  // Keep the grab distance along the new ray: the target follows the
+  // cursor across the screen at the depth where the body was grabbed.
+  glm::vec3 origin, direction;
+  ray(scene, motion.x, motion.y, view, origin, direction);
+  const glm::vec3 target = origin + direction * static_cast<float>(grabDistance_);
+  const double t[3] = {target.x, target.y, target.z};
+  scene.moveDrag(t);
+}
+
+WindowInput::WindowInput(const AbstractWindow& scene) : startTuning_(tuningOf(scene)) {}
+
+void WindowInput::escape(AbstractWindow& scene) {
+  if (scene.session().viewFlags().help) {
+    scene.handleKey(SDLK_h, false);
+    return;
+  }
+  if (tuningOf(scene) == startTuning_ || scene.session().notice() == QUIT_PROMPT) {
+    scene.session().requestQuit();
+    return;
+  }
+  scene.session().notify(QUIT_PROMPT);
 }
 
 bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, const ViewRect& view) {
   switch (event.type) {
-    case SDL_QUIT:
+    case SDL_QUIT:  // the window's close button: at once, as the window system expects
       scene.session().requestQuit();
       break;
     case SDL_KEYDOWN:
-      if (event.key.keysym.sym == SDLK_ESCAPE) scene.session().requestQuit();
-      if (camera_.handleKey(event.key, scene)) break;
       // Auto-repeat would toggle switches and step settings at the repeat
-      // rate; one press is one action.
-      if (event.key.keysym.sym != SDLK_ESCAPE && !event.key.repeat)
-        scene.handleKey(event.key.keysym.sym, (event.key.keysym.mod & KMOD_SHIFT) != 0);
+      // rate (and a held Esc would answer its own prompt); one press is one action.
+      if (event.key.keysym.sym == SDLK_ESCAPE) {
+        if (!event.key.repeat) escape(scene);
+        break;
+      }
+      if (camera_.handleKey(event.key, scene)) break;
+      if (!event.key.repeat) scene.handleKey(event.key.keysym.sym, (event.key.keysym.mod & KMOD_SHIFT) != 0);
       break;
     case SDL_MOUSEBUTTONDOWN:
       // The left button on a body drags it; any other press is the camera's.
@@ -63,19 +143,14 @@ bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, con
       if (event.button.button == SDL_BUTTON_LEFT && held_) {
         held_ = false;
         grabbed_ = nullptr;
-        scene.endDrag();
+        if (pulling_) scene.endDrag();
+        pulling_ = false;
       }
       camera_.releaseButton(event.button);
       break;
     case SDL_MOUSEMOTION:
       if (held_ && (event.motion.state & SDL_BUTTON_LMASK)) {
-        // Keep the grab distance along the new ray: the target follows the
-        // cursor across the screen at the depth where the body was grabbed.
-        glm::vec3 origin, direction;
-        ray(scene, event.motion.x, event.motion.y, view, origin, direction);
-        const glm::vec3 target = origin + direction * static_cast<float>(grabDistance_);
-        const double t[3] = {target.x, target.y, target.z};
-        scene.moveDrag(t);
+        moveLeft(event.motion, scene, view);
       } else {
         camera_.moveMouse(event.motion, scene.camera(), view.height);
       }
