@@ -24,7 +24,7 @@ const char* const QUIT_PROMPT =
 std::vector<double> tuningOf(const AbstractWindow& scene) {
   std::vector<double> values;
   for (const SettingSpec& spec : settingsTable()) values.push_back(settingValue(scene.tuning().settings(), spec.id));
-  for (const SceneParameter& p : scene.tuning().parameters().all()) values.push_back(*p.value);
+  for (const SceneParameter& p : scene.tuning().parameters().all()) values.push_back(p.knob->get());
   return values;
 }
 
