@@ -186,7 +186,7 @@ int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth,
     for (const auto& column : columns) rows = std::max(rows, column.size());
     return rows;
   };
-  const HudFit fit{viewportWidth, maxHeight, generation_, small};
+  const HudFit fit{viewportWidth, maxHeight, generation_, small, lines.front()};
   std::vector<std::vector<std::string>> columns;
   if (fit == hudFit_ && !hudFirstLines_.empty())
     columns = columnsFrom(lines, hudFirstLines_, totalWidth - 2 * PADDING, 2 * PADDING + MARGIN, width, Wrap::Items,
