@@ -19,13 +19,14 @@ endforeach()
 # The launcher's window switches scenes without leaving the window: the
 # scene on screen at the end reports its own metrics (test2's energies after
 # two Page Downs from test0; test10's launch velocity after one Page Up).
+# --scene test0 opens the window on the registry's first scene.
 odelab_window_check(odelab_window_page_down_switches_scenes odelab EVENTS switch_scenes.events
-  EXPECT energy_start_J>0 non_finite==0)
+  EXPECT energy_start_J>0 non_finite==0 ARGS --scene test0)
 odelab_window_check(odelab_window_page_up_wraps_to_the_last_scene odelab EVENTS switch_back.events
-  EXPECT launch_velocity>0 non_finite==0)
+  EXPECT launch_velocity>0 non_finite==0 ARGS --scene test0)
 
 # The launcher's control panel lists the scenes of the registry; a click on
-# one (test4's row, from test0) switches to it as Page Down does: the scene
+# one (test4's entry, from test0) switches to it as Page Down does: the scene
 # on screen at the end is test4, which reports its big cube's mass.
 odelab_window_check(odelab_window_scene_list_click_switches odelab EVENTS scene_list_click.events
-  EXPECT big_mass>0 held==1 non_finite==0)
+  EXPECT big_mass>0 held==1 non_finite==0 ARGS --scene test0)

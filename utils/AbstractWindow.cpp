@@ -196,13 +196,18 @@ void AbstractWindow::useContactChoices(double defaultMu) {
   const auto step = [this](int direction) {
     const double before = contact_.mu;
     contact_.mu = ParameterStepper::nextOnLadder(ContactChoices::muLadder(), contact_.mu, direction);
-    notify(timeStamp(simulatedTime_) + ": mu " + ContactChoices::muText(before) + " -> " +
-           ContactChoices::muText(contact_.mu));
+    // At either end of the ladder the key changes nothing, and says so.
+    const std::string change = contact_.mu == before
+                                   ? "mu stays " + ContactChoices::muWords(before) +
+                                         (direction > 0 ? " (the ladder's top)" : " (the ladder's bottom)")
+                                   : "mu " + ContactChoices::muWords(before) + " -> " +
+                                         ContactChoices::muWords(contact_.mu);
+    notify(timeStamp(simulatedTime_) + ": " + change);
   };
-  bindKey(SDLK_f, "F", "lower the contact friction mu (ladder 0 ... 5, dInfinity)", [step](int) { step(-1); });
-  bindKey(SDLK_g, "G", "raise the contact friction mu (ladder 0 ... 5, dInfinity)", [step](int) { step(+1); });
+  bindKey(SDLK_f, "F", "lower the contact friction mu (ladder 0 ... 5, infinite)", [step](int) { step(-1); });
+  bindKey(SDLK_g, "G", "raise the contact friction mu (ladder 0 ... 5, infinite)", [step](int) { step(+1); });
   // --mu and --max-contacts are ContactChoices' own options (mu takes inf).
-  declare(Knob::real(ContactChoices::MU_KNOB, "contact friction mu (G: dInfinity)", "", contact_.mu, 0.0, ContactChoices::PANEL_MU_MAX));
+  declare(Knob::real(ContactChoices::MU_KNOB, "contact friction mu (G: infinite)", "", contact_.mu, 0.0, ContactChoices::PANEL_MU_MAX));
   declare(Knob::real(ContactChoices::MAX_CONTACTS_KNOB, "contacts per pair", "", contact_.maxContacts, 1.0,
                      double(ContactChoices::MOST_CONTACTS)));
 }

@@ -73,6 +73,11 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   const std::string& title() const { return title_; }
   std::string programName() const;  // "test0" from "test0 - Box & Sphere"
   std::vector<std::string> hudLines() const;
+  // The last lines of hudLines() that come and go: a failure, the notice,
+  // ODE's messages. At least one (empty when there is none), so the HUD
+  // keeps a row for them and a notice neither pushes the view down as it
+  // comes nor lets it jump back as it goes.
+  std::vector<std::string> hudPassingLines() const;
   std::vector<std::string> helpLines() const;
   virtual SceneBounds bounds() const { return {{0, 0, 0}, 12.0}; }
   bool handleKey(SDL_Keycode key, bool shift);  // false if unbound

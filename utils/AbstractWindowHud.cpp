@@ -88,8 +88,9 @@ std::vector<std::string> AbstractWindow::hudLines() const {
     lines.push_back(s.str());
     lines.push_back(springLine(settings_));
     if (contactChoicesUsed_)
-      lines.push_back("contact mu " + ContactChoices::muText(contact_.mu) + " (F / G)   contacts per pair " +
+      lines.push_back("contact mu " + ContactChoices::muWords(contact_.mu) + " (F / G)   contacts per pair " +
                       std::to_string(contact_.contactLimit()));
+    lines.insert(lines.end(), sceneLines.begin(), sceneLines.end());
     if (const AbstractObject* object = draggedObject()) {
       const dReal* v = dBodyGetLinearVel(object->getBody());
       s.str("");
@@ -98,12 +99,22 @@ std::vector<std::string> AbstractWindow::hudLines() const {
         << formatValue(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) << " m/s";
       lines.push_back(s.str());
     }
-    lines.insert(lines.end(), sceneLines.begin(), sceneLines.end());
   }
+  // Lines that come and go stay at the end (hudPassingLines), so the ones
+  // above keep their places.
+  const std::vector<std::string> passing = hudPassingLines();
+  lines.insert(lines.end(), passing.begin(), passing.end());
+  return lines;
+}
+
+std::vector<std::string> AbstractWindow::hudPassingLines() const {
+  std::vector<std::string> lines;
+  if (hudMode_ == HudMode::Off) return lines;
   if (!failure_.empty()) lines.push_back(failure_);
   const std::string current = notice();
   if (!current.empty() && current != failure_) lines.push_back(current);
   for (const auto& message : OdeMessages::recent()) lines.push_back(message);
+  if (lines.empty()) lines.emplace_back();
   return lines;
 }
 

@@ -145,7 +145,8 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
   app.add_option("--out-dir", options.outDir, "folder for output files such as Test2_output.txt")
       ->capture_default_str();
   app.add_option("--metrics-json", options.metricsJson,
-                 "write the metrics as a flat JSON object to FILE (atomically: FILE.tmp, then renamed)");
+                 "write the metrics as a flat JSON object to FILE (atomically: to a hidden temporary file "
+                 "beside it, .FILE.XXXXXX, then renamed)");
   app.add_option("--screenshot", options.screenshot, "window: render --frames frames, save a PNG to FILE, exit");
   app.add_option("--frames", options.frames, "frames to render before --screenshot")
       ->check(CLI::Range(1, 1000000))
@@ -173,7 +174,8 @@ void addWindowOptions(CLI::App& app, RunOptions& options) {
       ->check(finiteRange(0.0, 1000.0))
       ->capture_default_str();
   app.add_flag("!--no-vsync", options.vsync, "window: do not wait for the display's refresh");
-  app.add_option("--text-size", options.textSize, "window: HUD text height in pixels; 0: follows the window height")
+  app.add_option("--text-size", options.textSize, "window: text height of the HUD, the help and the panel in pixels; "
+                 "0: a 45th of the window's height, 12 to 28")
       ->check(CLI::Range(0, 200))
       ->capture_default_str();
   app.add_option_function<std::string>(

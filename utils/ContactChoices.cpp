@@ -33,6 +33,8 @@ std::string ContactChoices::muText(double mu) {
   return s.str();
 }
 
+std::string ContactChoices::muWords(double mu) { return std::isinf(mu) ? "infinite" : muText(mu); }
+
 double ContactChoices::muMetric(double mu) { return std::isinf(mu) ? -1.0 : mu; }
 
 std::string ContactChoices::optionOfKnob(const std::string& knobName) {
@@ -48,13 +50,13 @@ std::string ContactChoices::optionText(double value) {
 void ContactChoices::addOptions(CLI::App& app) {
   app.add_option_function<std::string>(
          "--mu", [this](const std::string& text) { mu = parseMu(text); },
-         "contact friction coefficient: a number >= 0, or inf for dInfinity (never slides)")
+         "contact friction coefficient: a number >= 0, or inf for infinite friction (never slides)")
       ->check(CLI::Validator(
           [](std::string& text) {
             return std::isnan(parseMu(text)) ? "'" + text + "' is not a number >= 0 or inf" : std::string();
           },
           "MU"))
-      ->default_str(muText(mu));
+      ->default_str(std::isinf(mu) ? "inf" : muText(mu));
   app.add_option_function<int>(
          "--max-contacts", [this](int count) { maxContacts = count; },
          "contact points dCollide may return per colliding pair")

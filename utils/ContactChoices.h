@@ -32,8 +32,10 @@ struct ContactChoices {
   static const std::vector<double>& muLadder();
   // A number >= 0, or inf / infinity / dInfinity; NaN when the text is neither.
   static double parseMu(const std::string& text);
-  // "dInfinity" or the number.
+  // "dInfinity" or the number: for files and command lines, which parseMu reads back.
   static std::string muText(double mu);
+  // "infinite" or the number: for the HUD, the notices and the help, which people read.
+  static std::string muWords(double mu);
   // mu for a JSON metric, which has no infinity: -1 stands for dInfinity.
   static double muMetric(double mu);
   // The knobs useContactChoices() declares for the panel and rewind; their

@@ -1,9 +1,10 @@
 // odelab: every scene of the library from one program.
-//   odelab [window options]             a window with the first scene; Page Down / Page Up
+//   odelab [window options]             a window with test1 (Jumping Balls); Page Down / Page Up
 //                                       or the panel's scene list switch scenes, H lists the keys
 //   odelab --list                       the scenes, one a line: name, tab, description
 //   odelab --scene NAME [options]       NAME as its own program runs it (same options,
 //                                       headless too: the same metrics and state hash)
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -16,7 +17,7 @@
 namespace {
 
 constexpr const char* USAGE =
-    "usage: odelab [window options]        (Page Down / Page Up or the panel's list switch scenes)\n"
+    "usage: odelab [window options]        (opens on test1; Page Down / Page Up or the panel's list switch scenes)\n"
     "       odelab --list\n"
     "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n";
 
@@ -38,18 +39,46 @@ class RegistrySwitching : public odelab::SceneSwitching {
     return *scene_;
   }
 
+  // The panel's list shows each scene as "test2  Pendulum", its description
+  // as the tooltip. The titles are the scenes' own, read once from a scene
+  // made for the purpose (a scene's constructor builds no world).
   std::vector<odelab::SceneChoice> scenes() const override {
-    std::vector<odelab::SceneChoice> choices;
-    for (const odelab::SceneEntry& entry : odelab::sceneRegistry()) choices.push_back({entry.name, entry.description});
-    return choices;
+    if (choices_.empty()) {
+      size_t longest = 0;
+      for (const odelab::SceneEntry& entry : odelab::sceneRegistry()) longest = std::max(longest, std::strlen(entry.name));
+      // Names padded to one width, so the titles line up in the panel's font.
+      for (const odelab::SceneEntry& entry : odelab::sceneRegistry()) {
+        std::string name = entry.name;
+        name.resize(longest + 2, ' ');
+        choices_.push_back({name + shortTitle(entry.make()->title()), entry.description});
+      }
+    }
+    return choices_;
   }
 
   int current() const override { return static_cast<int>(index_); }
 
  private:
+  // "Pendulum" from "test2 - Pendulum".
+  static std::string shortTitle(const std::string& title) {
+    const size_t dash = title.find(" - ");
+    return dash == std::string::npos ? title : title.substr(dash + 3);
+  }
+
   size_t index_ = 0;
   std::unique_ptr<odelab::AbstractWindow> scene_;
+  mutable std::vector<odelab::SceneChoice> choices_;
 };
+
+// The window opens on test1, Jumping Balls: fifty balls fall and bounce from
+// the first frame, each to its own height, so the lab's subject (how ODE
+// keeps each restitution) is on screen before any key is pressed. test0's
+// platform would wait for objects, and other scenes wait on a key or take
+// seconds to show their point.
+const odelab::SceneEntry& firstWindowScene() {
+  const odelab::SceneEntry* scene = odelab::findScene("test1");
+  return scene ? *scene : odelab::sceneRegistry().front();
+}
 
 int usageError(const std::string& message) {
   std::cerr << "error: " << message << '\n' << USAGE;
@@ -83,8 +112,8 @@ int main(int argc, char** argv) {
       arguments.push_back(argv[i]);
     }
   }
-  // No --scene: the window starts with the registry's first scene.
-  const odelab::SceneEntry* scene = named ? odelab::findScene(name) : &odelab::sceneRegistry().front();
+  // No --scene: the window starts with a scene in motion (firstWindowScene).
+  const odelab::SceneEntry* scene = named ? odelab::findScene(name) : &firstWindowScene();
   if (!scene) return usageError("--scene: no scene '" + name + "'; odelab --list names them");
   // The window switches scenes (Page Down / Page Up); a headless run is one scene's.
   bool headless = false;

@@ -52,5 +52,32 @@ TEST(TextColumns, HelpLinesContinueUnderTheirTextColumn) {
   EXPECT_EQ(lines, (std::vector<std::string>{"F6           QuickStep", "             iterations up", "             (Shift: down)"}));
 }
 
+// A line added at the end (a notice) re-balances a fresh spread, moving a
+// line from the second column to the first; the layout kept from before
+// (columnsFrom with the first spread's starts) leaves every line where it was.
+TEST(TextColumns, KeptColumnsDoNotMoveLinesWhenOneIsAdded) {
+  const std::vector<std::string> before{"a1", "a2", "b1", "b2"};
+  std::vector<size_t> starts;
+  const auto first = spreadOverColumns(before, 100, 2, 2, 2, characters, Wrap::Items, &starts);
+  ASSERT_EQ(first, (std::vector<std::vector<std::string>>{{"a1", "a2"}, {"b1", "b2"}}));
+  ASSERT_EQ(starts, (std::vector<size_t>{0, 2}));
+  std::vector<std::string> after = before;
+  after.push_back("notice");
+  const auto respread = spreadOverColumns(after, 100, 2, 2, 2, characters);
+  EXPECT_EQ(respread.front(), (std::vector<std::string>{"a1", "a2", "b1"}));  // b1 changed columns
+  const auto kept = columnsFrom(after, starts, 100, 2, characters);
+  EXPECT_EQ(kept, (std::vector<std::vector<std::string>>{{"a1", "a2"}, {"b1", "b2", "notice"}}));
+}
+
+// A line marked one-row is cut with "..." rather than broken over rows.
+TEST(TextColumns, OneRowLinesAreCutNotBroken) {
+  const std::string notice = "a notice longer than the column   so it would wrap over two rows";
+  const auto columns =
+      spreadOverColumns({"short", notice}, 50, 2, 10, 1, characters, Wrap::Items, nullptr, {false, true});
+  ASSERT_EQ(columns.size(), 1u);
+  EXPECT_EQ(columns[0], (std::vector<std::string>{"short", notice.substr(0, 47) + "..."}));
+  EXPECT_EQ(cutToWidth("fits", 12, characters), "fits");
+}
+
 }  // namespace
 }  // namespace odelab

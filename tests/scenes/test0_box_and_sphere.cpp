@@ -28,6 +28,10 @@ constexpr double BOUNDARY_Y = -20.0;       // (proposed) below this is removed
 constexpr double PLATFORM_HALF = 5.0;
 constexpr double REST_SPEED = 0.05;        // m/s: below this a body counts as at rest
 constexpr double SUPPORT_GAP = 0.05;       // m: a body with nothing this close below its lowest point hangs
+// A window given no --spawn-interval drops a box at once and a sphere this
+// long after, so its first seconds show objects falling, settling and going
+// grey (auto-disable) before any key is pressed; headless runs are untouched.
+constexpr double FIRST_SPHERE_AT = 1.0;    // s
 
 class BoxAndSphere : public AbstractWindow {
  public:
@@ -39,7 +43,8 @@ class BoxAndSphere : public AbstractWindow {
     spawnKnob_ = &declare(Knob::interval("spawn_interval", "spawn interval (0: off)", spawnInterval_, 0.01, 1e6)
                               .withOption("--spawn-interval",
                                           "spawn a box, then a sphere, ... every S simulated seconds; 0: off "
-                                          "(default: 1 headless, off in the window)")
+                                          "(default: 1 headless; in the window a box at once, a sphere at 1 s, "
+                                          "then B / N)")
                               .zeroIsOff()
                               .logarithmic()
                               .defaultPickedByScene());  // spawnInterval(): 1 s headless unless given
@@ -71,9 +76,14 @@ class BoxAndSphere : public AbstractWindow {
     spawned_ = removed_ = maxBodies_ = maxHanging_ = hangingWoken_ = 0;
     hanging_.clear();
     nextSpawn_ = 0.0;
+    startDrops_ = 0;
   }
 
   void afterStep() override {
+    if (windowStart() && startDrops_ < 2 && simulatedTime() >= startDrops_ * FIRST_SPHERE_AT) {
+      spawn(startDrops_ == 0);
+      ++startDrops_;
+    }
     const double interval = spawnInterval();
     if (interval > 0 && (spawnLimit_ == 0 || spawned_ < spawnLimit_) && simulatedTime() >= nextSpawn_) {
       spawn(spawnShapes_ == "box" || (spawnShapes_ == "both" && spawned_ % 2 == 0));
@@ -127,6 +137,12 @@ class BoxAndSphere : public AbstractWindow {
     // Headless, a run without --spawn-interval spawns every second.
     if (options().headless && spawnKnob_->parsed && spawnKnob_->parsed->count() == 0) return 1.0;
     return spawnInterval_;
+  }
+
+  // A window whose spawning was not chosen on the command line (the
+  // launcher's scenes too): its first box and sphere drop by themselves.
+  bool windowStart() const {
+    return !options().headless && !(spawnKnob_->parsed && spawnKnob_->parsed->count() > 0);
   }
 
   double uniform(double low, double high) { return std::uniform_real_distribution<double>(low, high)(random()); }
@@ -215,6 +231,7 @@ class BoxAndSphere : public AbstractWindow {
   int maxHanging_ = 0;
   int hangingWoken_ = 0;
   double nextSpawn_ = 0.0;
+  int startDrops_ = 0;  // of the window's first box and sphere, dropped so far
   double spawnInterval_ = 0.0;
   const Knob* spawnKnob_ = nullptr;
   int spawnLimit_ = 0;

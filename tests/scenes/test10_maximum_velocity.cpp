@@ -132,6 +132,10 @@ class MaximumVelocity : public AbstractWindow {
     tally_.clear();
     if (findMaxVelocity_ && !options().headless)
       notify("--find-max-velocity runs only with --headless; B launches here");
+    // A window opens (and R restarts) with its first cube already on its way
+    // to the wall at the launch velocity: the first second shows whether it
+    // stops. Headless launches are the measurement's own, untouched.
+    if (!options().headless) launch(velocity_);
   }
 
   // The remedy: the cubes are the scene's only bodies.

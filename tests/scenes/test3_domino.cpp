@@ -115,7 +115,7 @@ class Domino : public AbstractWindow {
       << fallenFraction() << ")   chain " << chainSeconds() << " s   active bodies " << activeBodies();
     lines.push_back(s.str());
     s.str("");
-    s << "mu " << ContactChoices::muText(contactMu()) << " (F lower, G raise)   auto-disable "
+    s << "mu " << ContactChoices::muWords(contactMu()) << " (F lower, G raise)   auto-disable "
       << (noAutoDisable_ ? "off" : "on, thresholds 0.1 / 0.1");
     lines.push_back(s.str());
   }

@@ -108,6 +108,7 @@ class ManyCollisions : public AbstractWindow {
     lastCpuClock_ = std::clock();
     collidedSeconds_ = 0.0;
     nextSpawn_ = 0.0;
+    firstPlateDropped_ = false;
   }
 
   // Plain contacts, as the thesis's near callback: mode 0 (no bounce, no
@@ -126,6 +127,12 @@ class ManyCollisions : public AbstractWindow {
     lastCpuClock_ = now;
     collidedSeconds_ += lastStepWallSeconds();
     plates_.markLanded(simulatedTime());
+    // A window with no timed spawning still drops its first plate at once,
+    // so it opens on a plate falling onto the platform (N drops the next).
+    if (!options().headless && spawnInterval() <= 0 && !firstPlateDropped_) {
+      spawnPlate();
+      firstPlateDropped_ = true;
+    }
     const double interval = spawnInterval();
     if (interval > 0 && static_cast<int>(plates_.size()) < plateLimit() && simulatedTime() >= nextSpawn_) {
       spawnPlate();
@@ -204,7 +211,8 @@ class ManyCollisions : public AbstractWindow {
                 .defaultPickedByScene());
     declare(Knob::interval("spawn_interval", "spawn interval", spawnInterval_, 1e-6, 1e6)
                 .withOption("--spawn-interval",
-                            "drop a plate every S simulated seconds (default: 0.3 headless, off in the window)")
+                            "drop a plate every S simulated seconds (default: 0.3 headless; in the window the "
+                            "first plate at once, then N)")
                 .defaultPickedByScene());
     declare(Knob::real("auto_disable_linear", "auto-disable linear threshold", "m/s", disableLinear_, 0.0, 1e6)
                                .withOption("--auto-disable-linear",
@@ -264,6 +272,7 @@ class ManyCollisions : public AbstractWindow {
   std::clock_t lastCpuClock_ = 0;
   double collidedSeconds_ = 0.0;
   double nextSpawn_ = 0.0;
+  bool firstPlateDropped_ = false;  // the window's first plate (no timed spawning)
   double spawnInterval_ = 0.0;
   int plateLimit_ = 0;
   SpaceKind requestedSpace_ = SpaceKind::Simple;

@@ -62,6 +62,11 @@ class AxisSystem : public AbstractWindow {
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
+  void addOptions(CLI::App& app) override {
+    app.add_flag("--paused", startPaused_,
+                 "window: open (and restart on R) paused on the upright system; P runs it");
+  }
+
  protected:
   void configureWorld() override {
     angularLimit_.applyToWorld(world());
@@ -89,9 +94,9 @@ class AxisSystem : public AbstractWindow {
     sideways_ = maxSideways_ = 0.0;
     maxSink_ = 0.0;
     uprightUntil_ = -1.0;
-    // A window opens (and R restarts) paused on the upright system, so that
-    // it is seen before it falls; a timed run (--seconds) runs at once.
-    if (!options().headless && options().seconds <= 0 && steps() == 0) time().setPaused(true);
+    // A window runs at once: the system stands for a few seconds, then falls.
+    // --paused opens it (and R restarts it) paused on the upright system.
+    if (!options().headless && startPaused_ && options().seconds <= 0 && steps() == 0) time().setPaused(true);
   }
 
   void afterStep() override {
@@ -166,6 +171,7 @@ class AxisSystem : public AbstractWindow {
   double sideways_ = 0.0, maxSideways_ = 0.0;
   double maxSink_ = 0.0;        // deepest the small cube's lowest corner went below the ground while upright
   double uprightUntil_ = -1.0;  // simulated time it stopped being upright; -1 while upright
+  bool startPaused_ = false;    // --paused
 };
 
 }  // namespace

@@ -145,11 +145,12 @@ class AxisSystem2 : public AbstractWindow {
   }
 
   void addHudLines(std::vector<std::string>& lines) const override {
-    lines.push_back("throws " + std::to_string(throwCount_) + " (R throws, Shift+R resets)   max angular speed " +
-                    angularLimit_.describe() + " (F5)");
+    // The headline (the compact HUD's line): the joint error the scene
+    // measures, and how many throws it has had.
     lines.push_back("joint error " + formatValue(jointError_, 4) + " m (max " + formatValue(maxJointError_, 4) +
-                    ")   pivot angular speed " + formatValue(pivotSpeed_, 4) + " rad/s (max " +
-                    formatValue(maxPivotSpeed_, 4) + ")");
+                    ")   throws " + std::to_string(throwCount_) + " (R throws, Shift+R resets)");
+    lines.push_back("pivot angular speed " + formatValue(pivotSpeed_, 4) + " rad/s (max " +
+                    formatValue(maxPivotSpeed_, 4) + ")   max angular speed " + angularLimit_.describe() + " (F5)");
     std::string energies = "swing energy of the hanging pair " + formatValue(pairEnergy() - restingEnergy(), 6) +
                            " J (1 s mean " + formatValue(swingEnergy(), 6) + ")";
     const size_t first = energyAfterThrow_.size() > THROWS_ON_HUD ? energyAfterThrow_.size() - THROWS_ON_HUD : 0;

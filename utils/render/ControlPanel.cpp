@@ -206,14 +206,21 @@ void ControlPanel::sceneList(AbstractWindow& scene) {
   SessionTools& session = scene.session();
   const std::vector<SceneChoice>& choices = session.sceneChoices();
   if (choices.empty()) return;
-  // Open at first: choosing a scene is what the launcher is for.
-  if (!ImGui::CollapsingHeader("Scenes (Page Down / Up)", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  for (int i = 0; i < static_cast<int>(choices.size()); ++i) {
-    const bool current = i == session.currentScene();
-    const std::string row = choices[i].name + (current ? "   (on screen)" : "");
-    if (ImGui::Selectable(row.c_str(), current)) session.requestSceneSwitch(i - session.currentScene());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choices[i].description.c_str());
+  // One row that opens into the list: eleven rows open would push the
+  // timeline and the scene's own buttons below a 720-row window's edge.
+  const int current = session.currentScene();
+  const bool known = current >= 0 && current < static_cast<int>(choices.size());
+  ImGui::TextUnformatted("Scene (Page Down / Up)");
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::BeginCombo("##scene", known ? choices[static_cast<size_t>(current)].name.c_str() : "",
+                        ImGuiComboFlags_HeightLargest)) {
+    for (int i = 0; i < static_cast<int>(choices.size()); ++i) {
+      if (ImGui::Selectable(choices[i].name.c_str(), i == current)) session.requestSceneSwitch(i - current);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choices[i].description.c_str());
+    }
+    ImGui::EndCombo();
   }
+  if (known && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choices[static_cast<size_t>(current)].description.c_str());
   ImGui::Separator();
 }
 

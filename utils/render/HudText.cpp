@@ -170,7 +170,8 @@ std::vector<std::string> HudText::inColumns(const std::vector<std::string>& line
   return joined;
 }
 
-int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight, bool small) {
+int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight, bool small,
+                       const std::vector<bool>& oneRow) {
   if (lines.empty()) {
     columnCount_ = 0;
     return 0;
@@ -179,16 +180,29 @@ int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth,
   const int skip = TTF_FontLineSkip(font);
   const int maxRows = std::max(1, (maxHeight - 2 * PADDING) / std::max(1, skip));
   const int totalWidth = std::max(80, viewportWidth - 2 * MARGIN);
-  std::vector<std::vector<std::string>> columns =
-      spreadOverColumns(lines, totalWidth - 2 * PADDING, 2 * PADDING + MARGIN, maxRows, MAX_HUD_COLUMNS,
-                        [font](const std::string& text) { return textWidth(font, text); });
-  size_t rows = 0;
-  for (const auto& column : columns) rows = std::max(rows, column.size());
+  const TextWidth width = [font](const std::string& text) { return textWidth(font, text); };
+  const auto tallest = [](const std::vector<std::vector<std::string>>& columns) {
+    size_t rows = 0;
+    for (const auto& column : columns) rows = std::max(rows, column.size());
+    return rows;
+  };
+  const HudFit fit{viewportWidth, maxHeight, generation_, small, lines.front()};
+  std::vector<std::vector<std::string>> columns;
+  if (fit == hudFit_ && !hudFirstLines_.empty())
+    columns = columnsFrom(lines, hudFirstLines_, totalWidth - 2 * PADDING, 2 * PADDING + MARGIN, width, Wrap::Items,
+                          oneRow);
+  if (columns.empty()) {
+    columns = spreadOverColumns(lines, totalWidth - 2 * PADDING, 2 * PADDING + MARGIN, maxRows, MAX_HUD_COLUMNS,
+                                width, Wrap::Items, &hudFirstLines_, oneRow);
+    if (!(fit == hudFit_)) hudRows_ = 0;
+    hudFit_ = fit;
+  }
+  hudRows_ = std::max(hudRows_, tallest(columns));
   const int count = static_cast<int>(columns.size());
   const int columnWidth = (totalWidth - (count - 1) * MARGIN) / count;
   for (int i = 0; i < count; ++i) {
     // Equal heights, so the columns read as one strip.
-    columns[i].resize(rows);
+    columns[i].resize(hudRows_);
     hudColumns_[i].small_ = small;
     prepare(hudColumns_[i], columns[i], count > 1 ? columnWidth : totalWidth);
   }

@@ -53,9 +53,18 @@ class HudText {
   // items and laid out in as few columns (at most MAX_HUD_COLUMNS) as keep
   // it within `maxHeight` pixels. Returns the strip's height with its
   // margins (0 for no lines): the scene is drawn below it.
+  // While the width, height limit, font, `small` and the first line (the
+  // scene's title) stay the same, the layout is kept: each column starts at
+  // the same line as before (lines added at the end join the last column)
+  // and the strip never gets shorter, so a line that comes and goes (a
+  // notice, a number that wraps) moves neither the view below nor the other
+  // items.
   // `small`: in the smaller font (SMALL_PERCENT of the text height), for
   // the full HUD's many lines.
-  int layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight, bool small = false);
+  // Lines marked in `oneRow` (notices, messages, figures that come and go)
+  // are cut to one row each rather than broken over several.
+  int layoutHud(const std::vector<std::string>& lines, int viewportWidth, int maxHeight, bool small = false,
+                const std::vector<bool>& oneRow = {});
   // Draws the strip laid out last.
   void drawHud(int viewportWidth, int viewportHeight);
   static constexpr int MAX_HUD_COLUMNS = 3;
@@ -100,6 +109,22 @@ class HudText {
   GLuint emptyVertexArray_ = 0;  // core profile needs one bound even without attributes
   TextBlock hudColumns_[MAX_HUD_COLUMNS];
   int columnCount_ = 0, columnStep_ = 0;
+  // The kept layout (layoutHud): what it was made for, where each column
+  // starts, and the most rows the strip has had.
+  // The first line (the title) stands for the scene: another scene on
+  // screen (the launcher) gets a layout of its own.
+  struct HudFit {
+    int width = -1, maxHeight = -1, generation = -1;
+    bool small = false;
+    std::string title;
+    bool operator==(const HudFit& o) const {
+      return width == o.width && maxHeight == o.maxHeight && generation == o.generation && small == o.small &&
+             title == o.title;
+    }
+  };
+  HudFit hudFit_;
+  std::vector<size_t> hudFirstLines_;
+  size_t hudRows_ = 0;
   int pixels_ = 0;
   int generation_ = 0;
 };

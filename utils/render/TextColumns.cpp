@@ -66,6 +66,23 @@ std::vector<std::string> wrapEach(const std::vector<std::string>& lines, int max
 
 }  // namespace
 
+std::string cutToWidth(const std::string& line, int maxWidth, const TextWidth& width) {
+  if (width(line) <= maxWidth) return line;
+  std::string cut = line;
+  while (!cut.empty() && width(cut + "...") > maxWidth) {
+    // Drop one whole UTF-8 character: its continuation bytes, then its lead byte.
+    while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80) cut.pop_back();
+    if (!cut.empty()) cut.pop_back();
+  }
+  return cut + "...";
+}
+
+namespace {
+
+int columnWidthFor(int totalWidth, int gap, int count) { return std::max(40, (totalWidth - (count - 1) * gap) / count); }
+
+}  // namespace
+
 std::vector<std::string> wrapItems(const std::vector<std::string>& lines, int maxWidth, const TextWidth& width) {
   return wrapEach(lines, maxWidth, width, [&](const std::string& line, std::vector<std::string>& out) {
     // Keep a line's own leading spaces on its first piece.
@@ -98,27 +115,42 @@ std::vector<std::string> wrapHanging(const std::vector<std::string>& lines, int 
   });
 }
 
+namespace {
+
+std::vector<std::string> wrapOne(const std::string& line, int columnWidth, const TextWidth& width, Wrap wrap,
+                                 bool oneRow) {
+  if (oneRow) return {cutToWidth(line, columnWidth, width)};
+  return wrap == Wrap::Items ? wrapItems({line}, columnWidth, width) : wrapHanging({line}, columnWidth, width);
+}
+
+}  // namespace
+
 std::vector<std::vector<std::string>> spreadOverColumns(const std::vector<std::string>& lines, int totalWidth,
                                                         int gap, int maxRows, int maxColumns,
-                                                        const TextWidth& width, Wrap wrap) {
+                                                        const TextWidth& width, Wrap wrap,
+                                                        std::vector<size_t>* firstLines, const std::vector<bool>& oneRow) {
   std::vector<std::vector<std::string>> best;
+  std::vector<size_t> bestStarts;
   size_t bestRows = 0;
   for (int count = 1; count <= std::max(1, maxColumns); ++count) {
-    const int columnWidth = std::max(40, (totalWidth - (count - 1) * gap) / count);
+    const int columnWidth = columnWidthFor(totalWidth, gap, count);
     // Each line with its continuation lines, kept together.
     std::vector<std::vector<std::string>> groups;
     size_t rows = 0;
-    for (const std::string& line : lines) {
-      groups.push_back(wrap == Wrap::Items ? wrapItems({line}, columnWidth, width)
-                                           : wrapHanging({line}, columnWidth, width));
+    for (size_t i = 0; i < lines.size(); ++i) {
+      groups.push_back(wrapOne(lines[i], columnWidth, width, wrap, i < oneRow.size() && oneRow[i]));
       rows += groups.back().size();
     }
     const size_t perColumn = (rows + static_cast<size_t>(count) - 1) / static_cast<size_t>(count);
     std::vector<std::vector<std::string>> columns(1);
-    for (const auto& group : groups) {
+    std::vector<size_t> starts{0};
+    for (size_t i = 0; i < groups.size(); ++i) {
+      const auto& group = groups[i];
       if (!columns.back().empty() && columns.back().size() + group.size() > perColumn &&
-          static_cast<int>(columns.size()) < count)
+          static_cast<int>(columns.size()) < count) {
         columns.emplace_back();
+        starts.push_back(i);
+      }
       columns.back().insert(columns.back().end(), group.begin(), group.end());
     }
     size_t tallest = 0;
@@ -126,11 +158,29 @@ std::vector<std::vector<std::string>> spreadOverColumns(const std::vector<std::s
     // Fewer columns while they fit; past the height, whichever is shortest.
     if (best.empty() || tallest < bestRows) {
       best = columns;
+      bestStarts = starts;
       bestRows = tallest;
     }
     if (static_cast<int>(tallest) <= maxRows) break;
   }
+  if (firstLines) *firstLines = bestStarts;
   return best;
+}
+
+std::vector<std::vector<std::string>> columnsFrom(const std::vector<std::string>& lines,
+                                                  const std::vector<size_t>& firstLines, int totalWidth, int gap,
+                                                  const TextWidth& width, Wrap wrap, const std::vector<bool>& oneRow) {
+  const int count = std::max(1, static_cast<int>(firstLines.size()));
+  const int columnWidth = columnWidthFor(totalWidth, gap, count);
+  std::vector<std::vector<std::string>> columns(static_cast<size_t>(count));
+  for (size_t c = 0; c < firstLines.size(); ++c) {
+    const size_t end = c + 1 < firstLines.size() ? firstLines[c + 1] : lines.size();
+    for (size_t i = firstLines[c]; i < std::min(end, lines.size()); ++i) {
+      const std::vector<std::string> group = wrapOne(lines[i], columnWidth, width, wrap, i < oneRow.size() && oneRow[i]);
+      columns[c].insert(columns[c].end(), group.begin(), group.end());
+    }
+  }
+  return columns;
 }
 
 std::vector<std::string> joinColumns(const std::vector<std::vector<std::string>>& columns, int gap) {

@@ -195,9 +195,18 @@ void FrameLoop::draw() {
   const int width = std::max(1, windowWidth - views_.panel.coveredWidth());
   views_.text.setSizeFor(options_.textSize, height);
   std::vector<std::string> hud = scene_.hudLines();
-  // The full HUD also says where the frame's time goes.
-  if (scene_.session().hudMode() == HudMode::Full && !profile_.text().empty()) hud.insert(hud.begin() + std::min<long>(3, static_cast<long>(hud.size())), profile_.text());
-  hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.session().hudMode() == HudMode::Full);
+  // The lines that come and go take one row each: the notices and messages
+  // at the end and, in the full HUD, where the frame's time goes (its row
+  // kept blank until the first second is measured).
+  std::vector<bool> oneRow(hud.size(), false);
+  std::fill(oneRow.end() - static_cast<long>(std::min(oneRow.size(), scene_.hudPassingLines().size())), oneRow.end(), true);
+  if (scene_.session().hudMode() == HudMode::Full) {
+    const long at = std::min<long>(3, static_cast<long>(hud.size()));
+    hud.insert(hud.begin() + at, profile_.text());
+    oneRow.insert(oneRow.begin() + at, true);
+  }
+  hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.session().hudMode() == HudMode::Full,
+                                    oneRow);
   const int sceneHeight = std::max(1, height - hudStrip_);
   scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(sceneHeight));
   views_.renderer.render(scene_, width, sceneHeight);
