@@ -61,3 +61,15 @@ odelab_web_check(test8 max_relative_elongation 1e-9 SECONDS 10 ARGS --erp 0.4 --
 # 1e-10 against the scene's 1e-4.
 odelab_web_check(test9 apex_error_20 1e-10 ARGS --erp 0.2 --cfm 0)
 odelab_web_check(test10 stopped 0 ARGS --velocity 200 --launches 5)
+
+# The page itself: a coarse clock (two frames at one time) does not stop a
+# run, a refused address parameter is named without command-line advice,
+# and the pages load no missing file and have their icon
+# (scripts/web/check-page.sh says what each asks).
+foreach(what clock bad-option files)
+  string(REPLACE "-" "_" name web_page_${what})
+  add_test(NAME ${name}
+    COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/web/check-page.sh --site ${ODELAB_WEB_SITE}
+            --out ${CMAKE_CURRENT_BINARY_DIR}/${name} ${what})
+  set_tests_properties(${name} PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 600 PROCESSORS 2)
+endforeach()

@@ -32,6 +32,28 @@ std::string directoryOf(const std::string& file) {
   return slash == 0 ? "/" : file.substr(0, slash);
 }
 
+#ifdef __EMSCRIPTEN__
+// In the browser the options come from the page's address (web/scene.js
+// turns "&erp=0.4" into "--erp 0.4"): there is no command line to add
+// --help to, so the advice names the address parameter refused (the first
+// option the message names) and the parameter that lists the options.
+std::string usageAdvice(const std::string& message) {
+  std::string advice;
+  const auto dashes = message.find("--");
+  if (dashes != std::string::npos) {
+    const auto end = message.find_first_not_of(
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_", dashes + 2);
+    const std::string name = message.substr(dashes + 2, end == std::string::npos ? end : end - dashes - 2);
+    if (!name.empty()) advice = "The address parameter '" + name + "' was refused. ";
+  }
+  return advice +
+         "Each option is an address parameter without its dashes (erp=0.4 for --erp 0.4, ccd for the flag "
+         "--ccd); the address with help as its only option (scene.html?scene=testN&help) lists them.";
+}
+#else
+std::string usageAdvice(const std::string&) { return "Run with --help for the options."; }
+#endif
+
 }  // namespace
 
 void requireReplaceableFile(const char* option, const std::string& file) {
@@ -284,10 +306,10 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const 
   } catch (const CLI::Success& done) {  // --help, --version
     return app.exit(done);
   } catch (const CLI::ParseError& error) {
-    std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
+    std::cerr << "error: " << error.what() << "\n" << usageAdvice(error.what()) << "\n";
     return exit_code::USAGE;
   } catch (const UsageError& error) {
-    std::cerr << "error: " << error.what() << "\nRun with --help for the options.\n";
+    std::cerr << "error: " << error.what() << "\n" << usageAdvice(error.what()) << "\n";
     return exit_code::USAGE;
   }
   return std::nullopt;

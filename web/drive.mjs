@@ -2,25 +2,28 @@
 // it gave: the program's output (log.txt), its end status (result.json),
 // the files it wrote (files/), a picture of the canvas (canvas.png) with
 // how much of it is not background (in result.json), and, when asked, one
-// of its files fetched through the page's download link (downloads/).
+// of its files fetched through the page's download link (downloads/), and
+// the requests the site refused and the console's errors (in result.json).
 //
 //   node web/drive.mjs --site DIR --scene testN --out DIR [--timeout S]
-//                      [--download NAME] -- [program arguments...]
+//                      [--download NAME] [--clock-step MS] -- [program arguments...]
+//
+// --clock-step MS gives the page a coarse clock: performance.now() rounded
+// down to a multiple of MS, as browsers that blur their timers do, so that
+// frames in the same step read the same time.
 //
 // Exits 0 when the run ended (whatever its status: the caller judges), 1
 // when it did not end in time or the browser failed, 2 for bad usage.
-import { createServer } from "node:http";
-import { mkdirSync, readFileSync, writeFileSync, existsSync, readdirSync, mkdtempSync, rmSync, statSync } from "node:fs";
-import { join, extname, resolve } from "node:path";
-import { tmpdir } from "node:os";
-import puppeteer from "puppeteer-core";
+import { mkdirSync, writeFileSync, existsSync, rmSync } from "node:fs";
+import { join, resolve } from "node:path";
+import { serveSite, launchChromium, watchProblems } from "./site.mjs";
 
 function usage(message) {
-  console.error(`error: ${message}\nusage: node drive.mjs --site DIR --scene testN --out DIR [--timeout S] [--download NAME] -- [arguments...]`);
+  console.error(`error: ${message}\nusage: node drive.mjs --site DIR --scene testN --out DIR [--timeout S] [--download NAME] [--clock-step MS] -- [arguments...]`);
   process.exit(2);
 }
 
-const options = { timeout: 120, download: "" };
+const options = { timeout: 120, download: "", "clock-step": "0" };
 const programArgs = [];
 {
   const argv = process.argv.slice(2);
@@ -30,7 +33,7 @@ const programArgs = [];
       break;
     }
     const name = argv[i].replace(/^--/, "");
-    if (!["site", "scene", "out", "timeout", "download"].includes(name) || i + 1 >= argv.length) usage(`bad argument '${argv[i]}'`);
+    if (!["site", "scene", "out", "timeout", "download", "clock-step"].includes(name) || i + 1 >= argv.length) usage(`bad argument '${argv[i]}'`);
     options[name] = argv[++i];
   }
 }
@@ -38,44 +41,31 @@ if (!options.site || !options.scene || !options.out) usage("--site, --scene and 
 if (!/^test[0-9]+$/.test(options.scene)) usage(`no such scene '${options.scene}'`);
 const timeoutSeconds = Number(options.timeout);
 if (!(timeoutSeconds > 0)) usage(`--timeout must be a positive number of seconds, not '${options.timeout}'`);
+const clockStep = Number(options["clock-step"]);
+if (!(clockStep >= 0)) usage(`--clock-step must be a number of milliseconds, not '${options["clock-step"]}'`);
 const site = resolve(options.site);
 if (!existsSync(join(site, options.scene + ".js"))) usage(`${site} holds no ${options.scene}.js (build it with scripts/odelab.sh web)`);
 const out = resolve(options.out);
 rmSync(out, { recursive: true, force: true });
 mkdirSync(join(out, "files"), { recursive: true });
 
-// The site, from 127.0.0.1 only, with the types the browser insists on.
-const TYPES = { ".html": "text/html", ".js": "text/javascript", ".css": "text/css", ".json": "application/json", ".wasm": "application/wasm" };
-const server = createServer((request, response) => {
-  const path = join(site, decodeURIComponent(new URL(request.url, "http://x").pathname));
-  if (!path.startsWith(site) || !existsSync(path) || !statSync(path).isFile()) {
-    response.writeHead(404).end();
-    return;
-  }
-  response.writeHead(200, { "Content-Type": TYPES[extname(path)] || "application/octet-stream" });
-  response.end(readFileSync(path));
-});
-await new Promise((done) => server.listen(0, "127.0.0.1", done));
-const port = server.address().port;
-
-// A fresh profile each time; software WebGL2 through ANGLE's SwiftShader;
-// nothing that reaches out to the network.
-const profile = mkdtempSync(join(tmpdir(), "odelab-chromium-"));
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
-  headless: true,
-  args: [
-    "--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-    "--disable-background-networking", "--disable-component-update", "--disable-sync",
-    "--no-first-run", "--disable-quic", `--user-data-dir=${profile}`,
-  ],
-});
+const server = await serveSite(site);
+const port = server.port;
+const chromium = await launchChromium();
+const browser = chromium.browser;
 
 let exitCode = 0;
 const result = { scene: options.scene, arguments: programArgs };
 try {
   const page = await browser.newPage();
   await page.setViewport({ width: 1400, height: 1000 });
+  const problems = watchProblems(page);
+  if (clockStep > 0) {
+    await page.evaluateOnNewDocument((step) => {
+      const now = performance.now.bind(performance);
+      performance.now = () => Math.floor(now() / step) * step;
+    }, clockStep);
+  }
   const query = new URLSearchParams({ scene: options.scene });
   // "--name value" and "--flag" become address parameters, as a user types them.
   for (let i = 0; i < programArgs.length; ++i) {
@@ -100,6 +90,8 @@ try {
   const files = await page.evaluate(() => window.odelabRun.files ? window.odelabRun.files() : {});
   for (const [name, bytes] of Object.entries(files)) writeFileSync(join(out, "files", name), Buffer.from(bytes));
   result.files = Object.keys(files);
+  result.missing = problems.missing;
+  result.console_errors = problems.consoleErrors;
 
   // The canvas as the page shows it, and the share of its pixels that
   // differ from its commonest colour (the sky).
@@ -151,9 +143,8 @@ try {
   result.error = String(error);
   exitCode = 1;
 } finally {
-  await browser.close();
+  await chromium.close();
   server.close();
-  rmSync(profile, { recursive: true, force: true });
 }
 writeFileSync(join(out, "result.json"), JSON.stringify(result, null, 1) + "\n");
 console.log(JSON.stringify(result));

@@ -10,6 +10,7 @@ const statusLine = document.getElementById("status");
 const logBox = document.getElementById("log");
 const fileList = document.getElementById("files");
 const RUN_DIR = "/run";
+const USAGE_STATUS = 2; // utils/ExitCodes.h
 window.odelabRun = { ended: false, status: null, log: [] };
 
 function say(text) {
@@ -83,6 +84,14 @@ function ended(module, status) {
   window.odelabRun.ended = true;
   window.odelabRun.status = status;
   statusLine.textContent = "ended, status " + status;
+  // Status 2 is a refused option (the program's message, under Output,
+  // names it): the scene's own list of options is one click away.
+  if (status === USAGE_STATUS) {
+    const help = document.createElement("a");
+    help.href = "scene.html?scene=" + encodeURIComponent(sceneName) + "&help";
+    help.textContent = "the options of " + sceneName;
+    statusLine.append(" (a refused option; see ", help, ")");
+  }
   listFiles(module);
 }
 

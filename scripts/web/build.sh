@@ -36,7 +36,7 @@ nice cmake --build "$build" -j "${ODELAB_JOBS:-2}" ||
   { say "error: the build failed"; exit 1; }
 
 site=$build/site
-cp "$root"/web/*.html "$root"/web/*.js "$root"/web/*.css "$site/"
+cp "$root"/web/*.html "$root"/web/*.js "$root"/web/*.css "$root"/web/*.svg "$site/"
 # The scenes' titles, as each program names itself.
 {
   printf '['

@@ -411,6 +411,12 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplSDL2_NewFrame();
   ImGuiIO& io = ImGui::GetIO();
+  // The back end's DeltaTime is the clock's difference since the last
+  // frame, and a coarse clock reads the same for two frames: a browser's
+  // rounded performance.now(), headless Chromium's virtual time. ImGui
+  // asserts (aborts) on a step that is not positive; its animations only
+  // need some small one.
+  if (!(io.DeltaTime > 0.0f)) io.DeltaTime = 1e-4f;
   io.MousePos = ImVec2(static_cast<float>(mouseX_), static_cast<float>(mouseY_));
   io.MouseDown[0] = leftDown_ || leftPressed_;  // a click within one frame still counts
   leftPressed_ = false;
