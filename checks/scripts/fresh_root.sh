@@ -84,8 +84,19 @@ fi
 work=$(mktemp -d /var/tmp/odelab-fresh-root.XXXXXX)
 root=$work/root
 mounted=()
+# The processes this run started inside the root (apt, the compilers, test0),
+# found by their root folder: ended by id when the run is cut short.
+stop_root_processes() {  # SIGNAL
+  local p
+  for p in /proc/[0-9]*; do
+    [ "$(readlink "$p/root" 2>/dev/null)" = "$root" ] && kill "-$1" "${p#/proc/}" 2>/dev/null
+  done
+}
 cleanup() {
   local m i
+  stop_root_processes TERM
+  sleep 1
+  stop_root_processes KILL
   # Unmount in reverse order; lazily where something still holds a mount
   # (a process left behind), so that the removal below never crosses into
   # the host's /dev or /proc.
