@@ -149,24 +149,35 @@ mounted+=("$root/dev")
 # A clean environment: no DISPLAY, no compiler cache, no JOBS: what a new
 # user's shell has.
 say "running scripts/odelab.sh run in a fresh Debian $suite root ($archive), no display"
+# Each line of its output is stamped with the second it came (bash's own
+# clock: no process per line), so that the phases can be told apart below.
 log=$work/run.log
 started=$(date +%s)
 chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-  LANG=C.UTF-8 TERM=dumb /bin/bash -c 'cd /root/odelab && scripts/odelab.sh run' >"$log" 2>&1
-status=$?
-elapsed=$(( $(date +%s) - started ))
+  LANG=C.UTF-8 TERM=dumb /bin/bash -c 'cd /root/odelab && scripts/odelab.sh run' 2>&1 |
+  while IFS= read -r line; do printf '%(%s)T %s\n' -1 "$line"; done >"$log"
+status=${PIPESTATUS[0]}
+ended=$(date +%s)
+elapsed=$((ended - started))
 failures=0
 expect() {  # expect PATTERN WHAT-IS-WRONG: the run's output has a line matching PATTERN
   grep -q "$1" "$log" || { say "FAIL: $2"; failures=$((failures + 1)); }
 }
 [ "$status" -eq 0 ] || { say "FAIL: scripts/odelab.sh run ended with status $status"; failures=$((failures + 1)); }
-expect "no display (DISPLAY is not set): running test0 headless" "odelab.sh did not say it ran test0 headless"
+expect "^[0-9]* odelab: no display (DISPLAY is not set): running test0 headless" "odelab.sh did not say it ran test0 headless"
 # test0's own lines: its title and the metrics a whole headless run prints.
-expect "^test0 - Box & Sphere: .* simulated seconds" "test0 did not start headless"
-expect "^sim_seconds = " "test0 printed no metrics (its run did not end)"
+expect "^[0-9]* test0 - Box & Sphere: .* simulated seconds" "test0 did not start headless"
+expect "^[0-9]* sim_seconds = " "test0 printed no metrics (its run did not end)"
 if [ "$failures" -ne 0 ]; then
-  tail -n 40 "$log"
+  tail -n 40 "$log" | cut -d' ' -f2-
   exit 1
 fi
-grep "^odelab: " "$log"
-say "first run in $elapsed s (install, configure, build, run of test0; $(nproc) cores)"
+sed -n 's/^[0-9]* \(odelab: \)/\1/p' "$log"
+# The phases, from odelab.sh's own lines: installing (from the start; none
+# where nothing was missing), configuring and building, running.
+at() { sed -n "s/^\([0-9]*\) odelab: $1.*/\1/p" "$log" | head -n 1; }
+built_from=$(at building) ran_from=$(at "no display")
+phases=
+[ -n "$built_from" ] && [ -n "$ran_from" ] &&
+  phases="installing $((built_from - started)) s, configuring and building $((ran_from - built_from)) s, running $((ended - ran_from)) s; "
+say "first run in $elapsed s (${phases}$(nproc) cores, load average at the end $(cut -d' ' -f1-3 /proc/loadavg))"
