@@ -16,6 +16,32 @@
 # fraction of the bound the scene's own check (checks/programs/) asserts.
 set(ODELAB_WEB_SITE ${CMAKE_SOURCE_DIR}/build-web/site CACHE PATH "the browser build's site (scripts/odelab.sh web)")
 
+# The checks need Chromium and Node to run, and Emscripten to build the site
+# (unless it is built already): where one is missing they are left out, said
+# once here (Node once, by peers/CMakeLists.txt, where the peers are built).
+find_program(ODELAB_NODE NAMES node nodejs)
+find_program(ODELAB_CHROMIUM NAMES chromium chromium-browser)
+find_program(ODELAB_EMCC emcc)
+set(_web_missing)
+if(NOT ODELAB_CHROMIUM)
+  message(STATUS "Browser checks left out (label web): chromium not found; Debian's chromium brings it")
+  list(APPEND _web_missing chromium)
+endif()
+if(NOT ODELAB_EMCC AND NOT EXISTS ${ODELAB_WEB_SITE})
+  message(STATUS "Browser checks left out (label web): emcc not found and no site built; "
+                 "Debian's emscripten brings it")
+  list(APPEND _web_missing emcc)
+endif()
+if(NOT ODELAB_NODE)
+  if(NOT ODELAB_BUILD_PEERS)
+    message(STATUS "Browser checks left out (label web): node not found; Debian's nodejs brings it")
+  endif()
+  list(APPEND _web_missing node)
+endif()
+if(_web_missing)
+  return()
+endif()
+
 # odelab_web_check(SCENE METRIC TOLERANCE [SECONDS S] [DOWNLOAD FILE] [ARGS ...])
 function(odelab_web_check scene metric tolerance)
   cmake_parse_arguments(W "" "SECONDS;DOWNLOAD" "ARGS" ${ARGN})

@@ -24,7 +24,8 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 # The peer engines (peers/, doc/peers.md): Bullet and MuJoCo (whose CMake
 # package needs qhull). The lab on a cluster (doc/cluster.md): Dask, and
 # Slurm with munge for the single-node check (the check starts and stops
-# the daemons itself).
+# the daemons itself). debootstrap for the check that runs `run` in a fresh
+# Debian root (checks/fresh.cmake).
 packages=(
   g++ make cmake pkg-config
   libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev
@@ -34,6 +35,7 @@ packages=(
   python3 python3-matplotlib
   libbullet-dev libmujoco-dev libqhull-dev
   python3-distributed munge slurmctld slurmd slurm-client
+  debootstrap
 )
 
 # The Windows cross-build (scripts/windows/) and its checks under Wine: the
@@ -87,19 +89,24 @@ build_web() {
   (cd "$root/web" && npm ci --no-audit --no-fund --loglevel=error >&2)
 }
 
+# Everything: checks and peers on, also in a folder that `run` configured
+# with them off.
 build() {
-  cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DODELAB_BUILD_CHECKS=ON >/dev/null
+  cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DODELAB_BUILD_CHECKS=ON -DODELAB_BUILD_PEERS=ON >/dev/null
   cmake --build "$build_dir" -j "$jobs"
 }
 
 # One program, its output kept in a log that is shown only when the build
 # fails. A build folder configured before keeps its options (the checks
-# stay on where `test` turned them on); a new one builds no checks.
+# stay on where `test` turned them on); a new one has no checks and no
+# peers, so that only the window's packages are needed to configure it.
+# The program's target brings what it loads: the window module
+# (odelab_window.so, a dependency of odelab_main) and the shaders.
 build_quietly() {
   local target=$1 log
   log=$(mktemp)
   local configure=()
-  [ -f "$build_dir/CMakeCache.txt" ] || configure=(-DODELAB_BUILD_CHECKS=OFF)
+  [ -f "$build_dir/CMakeCache.txt" ] || configure=(-DODELAB_BUILD_CHECKS=OFF -DODELAB_BUILD_PEERS=OFF)
   say "building $target (log: $log)"
   if ! { cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${configure[@]}" &&
          cmake --build "$build_dir" -j "$jobs" --target "$target"; } >"$log" 2>&1; then
@@ -165,7 +172,9 @@ case "$command" in
     # The scenes in the browser, for the checks labelled web (checks/web.cmake).
     ODELAB_JOBS=$jobs build_web
     cd "$build_dir"
-    exec ctest --output-on-failure -j "$jobs"
+    # --no-tests=error: a build that lost its checks (GoogleTest missing:
+    # the configure output says so) fails here instead of passing with none.
+    exec ctest --output-on-failure --no-tests=error -j "$jobs"
     ;;
   web)
     serve=0 port=8080
