@@ -332,7 +332,7 @@ void ControlPanel::viewToggles(AbstractWindow& scene) {
 }
 
 void ControlPanel::settings(AbstractWindow& scene) {
-  ImGui::TextDisabled("World");
+  if (!ImGui::CollapsingHeader("World", ImGuiTreeNodeFlags_DefaultOpen)) return;
   for (const SettingSpec& spec : settingsTable()) {
     double value = settingValue(scene.tuning().settings(), spec.id);
     if (spec.id == SettingId::Solver) {
@@ -356,17 +356,22 @@ void ControlPanel::settings(AbstractWindow& scene) {
 }
 
 void ControlPanel::parameters(AbstractWindow& scene) {
-  // Every knob the scene declared, the contact choices first: two groups
-  // under headings, so a scene's own values are found in one place.
+  // Every knob the scene declared, the contact choices first, each group
+  // under a header that starts closed: open, a scene's dozen values would
+  // push the timeline and the scene's keys below the window's edge. The
+  // header counts the values, so a closed group still says what it holds.
   const auto& all = scene.tuning().parameters().all();
   for (const bool contacts : {true, false}) {
-    bool headed = false;
-    for (int i = 0; i < static_cast<int>(all.size()); ++i) {
+    std::vector<int> group;
+    for (int i = 0; i < static_cast<int>(all.size()); ++i)
+      if (ContactChoices::optionOfKnob(all[i].knob->name).empty() != contacts) group.push_back(i);
+    if (group.empty()) continue;
+    const std::string header = std::string(contacts ? "Contacts" : "Scene") + " (" + std::to_string(group.size()) +
+                               (group.size() == 1 ? " value)" : " values)") + (contacts ? "###contacts" : "###scene");
+    if (!ImGui::CollapsingHeader(header.c_str())) continue;
+    for (const int i : group) {
       const SceneParameter& p = all[i];
       const Knob& knob = *p.knob;
-      if (ContactChoices::optionOfKnob(knob.name).empty() == contacts) continue;
-      if (!headed) ImGui::TextDisabled(contacts ? "Contacts" : "Scene");
-      headed = true;
       double value = knob.get();
       const std::string effect = knob.effectText();
       const std::string label = knob.label + (knob.unit.empty() ? "" : " (" + knob.unit + ")") +
