@@ -3,7 +3,7 @@
 # and appends them to doc/measurements/first_ten_minutes.csv; passes or
 # fails nothing but its own runs.
 #
-#   checks/bench_first_ten_minutes.sh [--runs N] [--suite] [--csv FILE]
+#   checks/bench_first_ten_minutes.sh [--runs N] [--suite | --suite-cached] [--csv FILE]
 #
 # --runs N (default 3; 0: none): the time from nothing to the first picture,
 #   N times: the README's first command, `scripts/odelab.sh run`, in a fresh
@@ -18,6 +18,9 @@
 #   then warm (the same clone and caches again). Targets: 1800 s fresh,
 #   600 s warm. Needs root for the checks that need it, and an hour or more
 #   on 2 cores.
+# --suite-cached: the whole suite once in a new clone with this user's cache
+#   folder as it is (the Windows and browser libraries and the fresh root
+#   already made): what CI meets on a machine that has run it before.
 #
 # Every row says the cores, the load average at the start and the commit:
 # on a shared machine the load is part of the figure.
@@ -28,8 +31,9 @@ while [ $# -gt 0 ]; do
   case $1 in
     --runs) [[ "${2:-}" =~ ^[0-9]+$ ]] || { echo "bench: --runs takes a count" >&2; exit 2; }; runs=$2; shift 2 ;;
     --suite) suite=1; shift ;;
+    --suite-cached) suite=2; shift ;;
     --csv) [ -n "${2:-}" ] || { echo "bench: --csv takes a file" >&2; exit 2; }; csv=$2; shift 2 ;;
-    -h | --help) sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -41,7 +45,8 @@ if [ ! -f "$csv" ]; then
     echo "# The first ten minutes (issue 32): rows appended by checks/bench_first_ten_minutes.sh, one per run."
     echo "# first_picture: scripts/odelab.sh run in a fresh Debian 12 root made by debootstrap (checks/scripts/fresh_root.sh):"
     echo "# the window's packages installed from the archive, configure, test0 built with no compiler cache, run headless."
-    echo "# suite_fresh / suite_warm: scripts/odelab.sh test in a new clone (empty caches), then again in it."
+    echo "# suite_fresh / suite_warm: scripts/odelab.sh test in a new clone (empty caches), then again in it;"
+    echo "# suite_cached_libraries: scripts/odelab.sh test once in a new clone, the user's cache folder as it was."
     echo "# load: the load average (1 5 15 min) at the start of the run; the machine is shared with other work."
     echo "date,commit,quantity,value,unit,cores,load,note"
   } >"$csv"
@@ -81,19 +86,21 @@ if [ ${#times[@]} -gt 0 ]; then
 fi
 
 # ---- the whole suite, fresh then warm ----------------------------------------
-if [ "$suite" -eq 1 ]; then
+if [ "$suite" -ne 0 ]; then
   work=$(mktemp -d /var/tmp/odelab-bench-suite.XXXXXX)
   git clone -q --no-hardlinks "$root" "$work/odelab" || { echo "bench: cannot clone $root" >&2; exit 1; }
   # Uncommitted changes travel too, so that the tree measured is this one.
   (cd "$root" && git diff HEAD) | (cd "$work/odelab" && git apply --allow-empty 2>/dev/null) || true
   mkdir -p "$work/cache"
-  for kind in fresh warm; do
+  kinds=(fresh warm) cache=$work/cache
+  [ "$suite" -eq 2 ] && kinds=(cached_libraries) cache=${XDG_CACHE_HOME:-$HOME/.cache}
+  for kind in "${kinds[@]}"; do
     at=$(load)
     started=$(date +%s)
-    (cd "$work/odelab" && XDG_CACHE_HOME=$work/cache scripts/odelab.sh test) >"$work/suite-$kind.log" 2>&1
+    (cd "$work/odelab" && XDG_CACHE_HOME=$cache scripts/odelab.sh test) >"$work/suite-$kind.log" 2>&1
     status=$?
     seconds=$(( $(date +%s) - started ))
-    target=$([ $kind = fresh ] && echo 1800 || echo 600)
+    target=$([ $kind = warm ] && echo 600 || echo 1800)
     row suite_$kind "$seconds" s "$at" "scripts/odelab.sh test; status $status (target $target s)"
     [ "$status" -eq 0 ] || { tail -n 30 "$work/suite-$kind.log"; echo "bench: the $kind suite failed (log: $work/suite-$kind.log)" >&2; }
   done
