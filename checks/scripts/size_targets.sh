@@ -1,7 +1,8 @@
 #!/bin/sh
-# The scene base stays a short class that composes its parts, and each test
-# program reads as its thesis chapter: utils/AbstractWindow.h at most 160
-# lines, every tests/scenes/*.cpp at most 320 (wc -l, comments included).
+# Each test program reads as its thesis chapter: every tests/scenes/*.cpp at
+# most 320 lines (wc -l, comments included). utils/AbstractWindow.h has no
+# cap of its own any more: one squeezed its comments to fit a number we had
+# chosen, where what keeps the base small is handing scenes their parts.
 # Usage: size_targets.sh SOURCE_DIR
 cd "$1" || exit 2
 status=0
@@ -14,6 +15,5 @@ check() {
     echo "ok: $1 $lines lines (at most $2)"
   fi
 }
-check utils/AbstractWindow.h 160
 for program in tests/scenes/*.cpp; do check "$program" 320; done
 exit $status
