@@ -50,7 +50,9 @@ def parse_args(argv):
                              "thesis table gains a column measured with them")
     parser.add_argument("--executor", default="local", metavar="local|dask:ADDRESS|srun",
                         help="where the programs run: child processes here (default), tasks on the Dask "
-                             "scheduler at ADDRESS, or srun steps of the Slurm allocation (doc/cluster.md)")
+                             "scheduler at ADDRESS (its port 1 to 65535), or srun steps of the Slurm allocation "
+                             "(with at least one CPU); anything else is refused before any run (status 2) "
+                             "(doc/cluster.md)")
     args = parser.parse_args(argv)
     if args.jobs is not None and args.jobs < 1:
         parser.error(f"--jobs must be at least 1, not {args.jobs}")
@@ -167,6 +169,9 @@ def _report(args, argv, stop, build_dir, programs, out, executor):
                          f"(build at the same path on every host, doc/cluster.md): {listed}\n")
         return 3
     jobs = args.jobs or executor.cores
+    if jobs < 1:  # no run could ever start
+        sys.stderr.write(f"odelab-report: error: the executor {executor.description} offers no CPU to run on\n")
+        return 1
     options = (("--quick, " if args.quick else "") + f"--jobs {jobs}, experiments: " +
                ("all" if not args.partial else ", ".join(e.name for e in args.experiments)))
     header = run_header.collect(build_dir, REPO_ROOT, options)

@@ -21,6 +21,18 @@ def hosts_text(runs, timing_host):
     return text
 
 
+def blow_ups_text(runs):
+    """What the report made of runs that blew up: only the experiments that
+    measure blow-ups accept them (RunResult.check), as a failure by their rule."""
+    failed = Counter(r.spec.program for r in runs if r.blew_up or r.ode_error)
+    if not failed:
+        return "no run blew up (status 3) or met an ODE error (status 4)"
+    listed = ", ".join(f"{program} {n}" for program, n in sorted(failed.items()))
+    return (f"{sum(failed.values())} runs blew up (status 3) or met an ODE error (status 4) ({listed}; "
+            f"runs.csv: exit_status), each a failure by the rule of the experiment that measures blow-ups; "
+            f"anywhere else a blow-up fails the report")
+
+
 def write_report(args, argv, staging, header, runner, progress, outcomes, jobs, timing_host):
     """Writes runs.csv and RESULTS.md into `staging`; returns the elapsed seconds."""
     runs_rows = [dict(program=r.spec.program, arguments=" ".join(shlex.quote(a) for a in r.spec.args),
@@ -34,6 +46,7 @@ def write_report(args, argv, staging, header, runner, progress, outcomes, jobs, 
     elapsed = progress.elapsed()
     elapsed_text = (f"{clock(elapsed)} (min:s) for {len(runner.runs)} program runs, --jobs {jobs}; "
                     f"load average at the end {run_header.load_average()}")
+    elapsed_text += "; " + blow_ups_text(runner.runs)
     timed = [r for r in runner.runs if r.spec.timed]
     if timed:
         shares = sorted(r.cpu_share for r in timed)

@@ -12,6 +12,8 @@ measurement does not pay for it twice.
 import heapq
 import itertools
 import json
+import math
+import re
 import shlex
 import subprocess
 import tempfile
@@ -20,7 +22,7 @@ from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 
 from .executors import ExecutorError
-from .executors.process import MAX_PACKED_BYTES
+from .executors.process import MAX_PACKED_BYTES, kill_group
 from .inputs import InputError, check_regular, read_text
 
 # Exit statuses of the test programs (doc/manual.md). 3 and 4 are results
@@ -48,17 +50,21 @@ class LabError(Exception):
 
 class RunSpec:
     """One program run. `timed`: its wall time is a result, so it never
-    shares the machine with more runs than there are cores; `repeat` tells
-    repeated timings apart; `priority` 0 goes before 1 (the runs of a
-    search, which waits for each before choosing the next)."""
+    shares the machine with more runs than there are cores, and it is made
+    anew for every request; `repeat` tells repeated timings apart in
+    runs.csv; `priority` 0 goes before 1 (the runs of a search, which waits
+    for each before choosing the next). `measures_blow_ups`: the experiment
+    judges a blown-up run (status 3) or an ODE error (status 4) by its own
+    failure rule, so such a run is a result; otherwise it fails the report."""
 
-    def __init__(self, program, args, timed=False, repeat=0, timeout=600, priority=1):
+    def __init__(self, program, args, timed=False, repeat=0, timeout=600, priority=1, measures_blow_ups=False):
         self.program = program
         self.args = tuple(str(a) for a in args)
         self.timed = timed
         self.repeat = repeat
         self.timeout = timeout
         self.priority = priority
+        self.measures_blow_ups = measures_blow_ups
 
     def key(self):
         return (self.program, self.args, self.repeat)
@@ -105,13 +111,48 @@ class RunResult:
         wall, sim = self.m("wall_seconds"), self.m("sim_seconds")
         return wall / sim if wall is not None and sim else None
 
+    def check(self, spec):
+        """Raises LabError unless this run may give figures to the experiment
+        that asked for it with `spec`: the one place where a run's status,
+        counts and values are judged (the cache shares a run between
+        experiments, so it is judged again for each request)."""
+        where = f"{spec.command_line()} --headless (on {self.host}, in {self.workdir})"
+        if self.rc not in RESULT_STATUSES:
+            tail = "\n".join(self.stderr.strip().splitlines()[-5:])
+            raise LabError(f"{where} exited with status {self.rc}:\n{tail}")
+        if self.rc in (EXIT_BLEW_UP, EXIT_ODE_ERROR):
+            if spec.measures_blow_ups:
+                return  # its experiment's failure rule counts it; its figures may well be non-finite
+            what = "blew up (status 3: a non-finite state)" if self.blew_up else "met an ODE error (status 4)"
+            raise LabError(f"{where} {what}; this experiment does not measure blow-ups, so the run gives no "
+                           f"figure and the report is not written")
+        if not self.metrics:
+            raise LabError(f"{where} ended with status 0 and wrote no metrics")
+        steps = self.metrics.get("steps")
+        if steps is not None and not (_is_number(steps) and steps >= 1 and steps == int(steps)):
+            # A run that never happened is no result, however good its figures look.
+            raise LabError(f"{where} ended with status 0 but took no step (steps = {steps!r})")
+        if self.metrics.get("non_finite", 0) != 0:
+            raise LabError(f"{where} ended with status 0 but counted {self.metrics['non_finite']!r} "
+                           f"non-finite values (non_finite)")
+        bad = non_finite_metrics(self.metrics)
+        if bad:
+            raise LabError(f"{where} ended with status 0 but its metrics are not finite: {', '.join(bad[:5])}")
+        found = non_finite_in_outputs(self.workdir)
+        if found:
+            raise LabError(f"{where} ended with status 0 but {found} holds a non-finite number")
+
 
 class Slots:
     """Admits runs in order of (priority, arrival): at most `jobs` at once,
     and at most `cores` at once while a timed run is among them."""
 
     def __init__(self, jobs, cores):
+        if jobs < 1 or cores < 1:
+            # No run could ever start: every experiment would wait for good.
+            raise LabError(f"no run could start: {jobs} job slots and {cores} cores offered")
         self._jobs, self._cores = jobs, cores
+        self._aborted = False
         self._running = 0
         self._timed_running = 0
         self._waiting = []
@@ -129,11 +170,21 @@ class Slots:
         with self._condition:
             ticket = (priority, next(self._arrival))
             heapq.heappush(self._waiting, ticket)
-            while self._waiting[0] != ticket or not self._may_start(timed):
+            while not self._aborted and (self._waiting[0] != ticket or not self._may_start(timed)):
                 self._condition.wait()
+            if self._aborted:
+                self._waiting.remove(ticket)
+                heapq.heapify(self._waiting)
+                raise LabError("interrupted")
             heapq.heappop(self._waiting)
             self._running += 1
             self._timed_running += 1 if timed else 0
+            self._condition.notify_all()
+
+    def abort(self):
+        """Every run still waiting for a slot fails at once (an interrupt)."""
+        with self._condition:
+            self._aborted = True
             self._condition.notify_all()
 
     def release(self, timed):
@@ -153,7 +204,8 @@ class Runner:
         self._executor = executor
         self._slots = Slots(jobs, executor.cores)
         self._tmp_root = Path(tmp_root)
-        self._cache = {}
+        self._cache = {}  # untimed runs only
+        self._timings = {}  # (program, args) -> the metrics of each timed run, as text
         self._help = {}
         self._lock = threading.Lock()
         self._pool = ThreadPoolExecutor(max_workers=256, thread_name_prefix="run")
@@ -165,19 +217,41 @@ class Runner:
 
     # ---- public -------------------------------------------------------------
     def run(self, spec):
-        """Runs `spec` (or waits for the identical run already made)."""
-        with self._lock:
-            future = self._cache.get(spec.key())
-            owner = future is None
+        """Runs `spec`, checked (RunResult.check). An untimed run may be the
+        identical run already made (or being made); a timed run is always a
+        new process: a repeat is a new measurement, never a replay."""
+        if spec.timed:
+            result = self._execute_timed(spec)
+            self._note_timing(spec, result)
+        else:
+            with self._lock:
+                future = self._cache.get(spec.key())
+                owner = future is None
+                if owner:
+                    future = Future()
+                    self._cache[spec.key()] = future
             if owner:
-                future = Future()
-                self._cache[spec.key()] = future
-        if owner:
-            try:
-                future.set_result(self._execute_timed(spec) if spec.timed else self._execute(spec))
-            except BaseException as error:  # noqa: BLE001 - handed to every waiter
-                future.set_exception(error)
-        return future.result()
+                try:
+                    future.set_result(self._execute(spec))
+                except BaseException as error:  # noqa: BLE001 - handed to every waiter
+                    future.set_exception(error)
+            result = future.result()
+        result.check(spec)
+        return result
+
+    def _note_timing(self, spec, result):
+        """Timed runs of one command must differ somewhere in their metrics
+        (a wall time to the last digit at least): two or more that are all
+        identical were not measured anew, and no figure is taken from them."""
+        fingerprint = json.dumps(result.metrics, sort_keys=True)
+        with self._lock:
+            seen = self._timings.setdefault((spec.program, spec.args), [])
+            seen.append(fingerprint)
+            replayed = len(seen) >= 2 and len(set(seen)) == 1
+        if replayed and result.rc == EXIT_OK:
+            raise LabError(f"{spec.command_line()} --headless: {len(seen)} timed runs came back with identical "
+                           f"metrics to the last digit (wall_seconds {result.m('wall_seconds')!r}): repeated "
+                           f"timings were replayed, not measured")
 
     def map(self, specs):
         """Runs every spec, in parallel within the slots; results in order."""
@@ -191,7 +265,7 @@ class Runner:
         return [f.result() for f in futures]
 
     def run_timed(self, program, args, repeats):
-        """`repeats` identical timed runs; the results, in repeat order."""
+        """`repeats` timed runs of one command, each a new process; the results, in repeat order."""
         return self.map([RunSpec(program, args, timed=True, repeat=r) for r in range(repeats)])
 
     def help_text(self, program):
@@ -202,13 +276,14 @@ class Runner:
         if self._aborted:
             raise LabError("interrupted")
         child = subprocess.Popen([str(self.build_dir / program), "--help"], stdout=subprocess.PIPE,
-                                 stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, text=True)
+                                 stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, text=True,
+                                 start_new_session=True)  # abort() ends its whole group
         with self._lock:
             self._children.add(child)  # abort() ends it too
         try:
             text, _ = child.communicate(timeout=60)
         except subprocess.TimeoutExpired:
-            child.kill()
+            kill_group(child)
             raise LabError(f"{program} --help gave no answer within 60 s") from None
         finally:
             with self._lock:
@@ -226,11 +301,12 @@ class Runner:
     def abort(self):
         """Stops every running program, here or remote (Ctrl-C); new runs fail at once."""
         self._aborted = True
+        self._slots.abort()
         self._executor.abort()
         with self._lock:
             children = list(self._children)
         for child in children:
-            child.kill()
+            kill_group(child)
 
     def close(self):
         self._pool.shutdown(wait=False, cancel_futures=True)
@@ -288,24 +364,15 @@ class Runner:
             stderr = read_text(workdir / "stderr.txt", MAX_RUN_BYTES, "the run's standard error")
         except InputError as error:
             raise LabError(f"{spec.command_line()} --headless (in {workdir}): {error}") from None
-        if rc not in RESULT_STATUSES:
-            tail = "\n".join(stderr.strip().splitlines()[-5:])
-            raise LabError(f"{spec.command_line()} --headless exited with status {rc}"
-                           f" (on {done['host']}, in {workdir}):\n{tail}")
         metrics = {}
         metrics_file = workdir / "metrics.json"
-        if metrics_file.exists():
+        if rc in RESULT_STATUSES and metrics_file.exists():  # another status: RunResult.check says why
             try:
                 metrics = json.loads(read_text(metrics_file, MAX_METRICS_BYTES, "the metrics file"))
             except (ValueError, InputError) as error:
                 raise LabError(f"{spec.command_line()} wrote an invalid metrics file (in {workdir}): {error}") from None
             if not isinstance(metrics, dict):
                 raise LabError(f"{spec.command_line()} wrote a metrics file that is not a JSON object (in {workdir})")
-        elif rc == EXIT_OK:
-            raise LabError(f"{spec.command_line()} wrote no metrics file (in {workdir})")
-        if rc == EXIT_OK and metrics.get("steps") == 0:
-            # A run that never happened is no result, however good its figures look.
-            raise LabError(f"{spec.command_line()} ended with status 0 but took no step (in {workdir})")
         result = RunResult(spec, rc, metrics, stdout, stderr, done["cpu_seconds"], workdir, done["host"])
         with self._lock:
             self.runs.append(result)  # every attempt, kept or not
@@ -330,3 +397,40 @@ def median(values):
         return None
     middle = len(values) // 2
     return values[middle] if len(values) % 2 else 0.5 * (values[middle - 1] + values[middle])
+
+
+def _is_number(value):
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def non_finite_metrics(metrics, prefix=""):
+    """The names of the metrics (nested ones as a.b, a[0]) that are NaN or infinite."""
+    bad = []
+    items = metrics.items() if isinstance(metrics, dict) else enumerate(metrics)
+    for name, value in items:
+        label = f"{prefix}.{name}" if isinstance(metrics, dict) and prefix else (
+            f"{prefix}[{name}]" if not isinstance(metrics, dict) else str(name))
+        if isinstance(value, float) and not math.isfinite(value):
+            bad.append(f"{label} = {value!r}")
+        elif isinstance(value, (dict, list)):
+            bad.extend(non_finite_metrics(value, label))
+    return bad
+
+
+# A number that is not one: nan, inf, infinity, with a sign or not, as a
+# field of its own (a word such as "info" is not one).
+_NON_FINITE = re.compile(rb"(?<![\w.])[-+]?(?:nan|inf(?:inity)?)(?![\w.])", re.IGNORECASE)
+_NOT_OUTPUTS = ("stdout.txt", "stderr.txt", "metrics.json")
+
+
+def non_finite_in_outputs(folder):
+    """'FILE line N' of the first non-finite number in the output files a run
+    left (its data lines; `#` comment lines and its streams are not data), or None."""
+    for entry in sorted(Path(folder).iterdir()):
+        if entry.name in _NOT_OUTPUTS or not entry.is_file() or entry.is_symlink():
+            continue
+        with open(entry, "rb") as stream:
+            for number, line in enumerate(stream, 1):
+                if not line.startswith(b"#") and _NON_FINITE.search(line):
+                    return f"{entry.name} line {number}"
+    return None

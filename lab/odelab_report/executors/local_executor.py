@@ -1,11 +1,11 @@
-"""Runs each program as a child process of the lab (the default)."""
+"""Runs each program as a child process of the lab (the default), each in a
+session and process group of its own, which an interrupt ends as a whole."""
 
 import os
-import signal
 import socket
 import threading
 
-from .process import run_in_folder
+from .process import kill_group, run_in_folder
 
 
 class LocalExecutor:
@@ -34,13 +34,10 @@ class LocalExecutor:
         with self._lock:
             running = list(self._running)
         for process in running:
-            # os.kill, not Popen.kill: Popen would reap the child (poll) before
-            # run_in_folder's wait4 gets its CPU time.
-            if process.returncode is None:
-                try:
-                    os.kill(process.pid, signal.SIGKILL)
-                except OSError:
-                    pass
+            # The program's whole group: a wrapper that does not exec leaves
+            # children that the program's own death would not end.
+            if process.returncode is None:  # reaped: its pid may be another's by now
+                kill_group(process)
 
     def close(self):
         pass

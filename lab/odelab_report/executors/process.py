@@ -12,6 +12,7 @@ import base64
 import json
 import os
 import shutil
+import signal
 import socket
 import stat
 import subprocess
@@ -29,24 +30,42 @@ TAG_VARIABLE = "ODELAB_REPORT_RUN"
 
 
 def run_in_folder(argv, folder, timeout, started=None, tag=None):
-    """Runs argv in `folder`; returns dict(rc, cpu_seconds, host). `started`
-    (if given) is called with the Popen object, so that it can be killed;
-    `tag` goes into the program's environment, so that kill_tagged finds it."""
+    """Runs argv in `folder`; returns dict(rc, cpu_seconds, host). The
+    program starts a session (and process group) of its own, so that
+    kill_group ends it with whatever it started (a wrapper script that does
+    not exec, its children); what is left of the group when the program
+    ends is ended too. `started` (if given) is called with the Popen object,
+    so that it can be killed; `tag` goes into the program's environment, so
+    that kill_tagged finds it."""
     folder = Path(folder)
     env = dict(os.environ, **{TAG_VARIABLE: tag}) if tag else None
     with open(folder / "stdout.txt", "wb") as out, open(folder / "stderr.txt", "wb") as err:
-        process = subprocess.Popen(argv, cwd=folder, stdout=out, stderr=err, stdin=subprocess.DEVNULL, env=env)
+        process = subprocess.Popen(argv, cwd=folder, stdout=out, stderr=err, stdin=subprocess.DEVNULL, env=env,
+                                   start_new_session=True)
         if started:
             started(process)
-        timer = threading.Timer(timeout, process.kill)
+        timer = threading.Timer(timeout, kill_group, (process,))
         timer.start()
         try:
             _, status, usage = os.wait4(process.pid, 0)
         finally:
             timer.cancel()
+            # Reaped or not, the group's id stays taken while any member
+            # lives, so this reaches only what the program left behind.
+            kill_group(process)
     rc = os.waitstatus_to_exitcode(status)
     process.returncode = rc  # reaped here, so Popen must not wait for it again
     return dict(rc=rc, cpu_seconds=usage.ru_utime + usage.ru_stime, host=socket.gethostname())
+
+
+def kill_group(process):
+    """SIGKILL to the process group a run_in_folder program leads (os.killpg,
+    not Popen.kill: Popen would reap the leader before wait4 gets its CPU
+    time). A group already gone is no error."""
+    try:
+        os.killpg(process.pid, signal.SIGKILL)
+    except OSError:
+        pass
 
 
 def kill_tagged(tag):
@@ -66,12 +85,12 @@ def kill_tagged(tag):
     return killed
 
 
-def run_packed(argv, timeout, tag=None):
+def run_packed(argv, timeout, tag=None, started=None):
     """Runs argv in a fresh temporary folder and returns run_in_folder's
     dict plus `files`: {name: bytes} of every regular file the run left."""
     folder = Path(tempfile.mkdtemp(prefix="odelab-run-"))
     try:
-        result = run_in_folder(argv, folder, timeout, tag=tag)
+        result = run_in_folder(argv, folder, timeout, started, tag=tag)
         files, total = {}, 0
         for path in sorted(folder.iterdir()):
             info = path.lstat()
@@ -110,9 +129,20 @@ def from_json(text):
     return result
 
 
+def _end_on_signal(process):
+    """In a Slurm step: SIGTERM or SIGINT (srun passing on a cancel) ends
+    the program's whole group (it runs in a session of its own) and this
+    script, as the signal would have."""
+    def handler(number, frame):
+        kill_group(process)
+        os._exit(128 + number)
+    for number in (signal.SIGTERM, signal.SIGINT):
+        signal.signal(number, handler)
+
+
 if __name__ == "__main__":  # what srun starts
     try:
-        packed = run_packed(sys.argv[2:], float(sys.argv[1]))
+        packed = run_packed(sys.argv[2:], float(sys.argv[1]), started=_end_on_signal)
     except (OSError, RuntimeError) as error:  # a program missing on this node, a full disk
         sys.stderr.write(f"odelab-report on {socket.gethostname()}: cannot run {sys.argv[2:3]}: {error}\n")
         sys.exit(2)

@@ -11,25 +11,13 @@ Timed runs go to the allocation's first node (srun -w), so that wall times
 in the report are comparable; see doc/cluster.md."""
 
 import os
-import re
 import signal
 import subprocess
 import sys
 import threading
 from pathlib import Path
 
-from . import ExecutorError, process
-
-
-def cpus_of_allocation(text):
-    """Total CPUs from SLURM_JOB_CPUS_PER_NODE, e.g. '16(x4)' or '2,4(x2)'."""
-    total = 0
-    for part in text.split(","):
-        match = re.fullmatch(r"(\d+)(?:\(x(\d+)\))?", part.strip())
-        if not match:
-            raise ExecutorError(f"cannot read SLURM_JOB_CPUS_PER_NODE={text!r}")
-        total += int(match.group(1)) * int(match.group(2) or 1)
-    return total
+from . import ExecutorError, cpus_of_allocation, process
 
 
 class SrunExecutor:
@@ -38,7 +26,10 @@ class SrunExecutor:
         if not self.job:
             raise ExecutorError("--executor srun runs inside a Slurm allocation (salloc or sbatch), "
                                 "and SLURM_JOB_ID is not set here")
-        self.cores = cpus_of_allocation(os.environ.get("SLURM_JOB_CPUS_PER_NODE", "1"))
+        try:
+            self.cores = cpus_of_allocation(os.environ.get("SLURM_JOB_CPUS_PER_NODE", "1"))
+        except ValueError as error:  # parse() refused it already; here for callers that skip it
+            raise ExecutorError(str(error)) from None
         nodes = subprocess.run(["scontrol", "show", "hostnames", os.environ.get("SLURM_JOB_NODELIST", "")],
                                capture_output=True, text=True)
         names = nodes.stdout.split()

@@ -69,7 +69,7 @@ def search_heaviest(runner, step, solver_args, quick, on_probe=None):
 
     def probe(mass):
         r = runner.run(RunSpec("test4", ["--big-mass", mass, "--step", step, *solver_args, "--seconds", seconds],
-                               priority=0))
+                               priority=0, measures_blow_ups=True))
         passed, reason = judge(r)
         return passed, (r, reason)
 

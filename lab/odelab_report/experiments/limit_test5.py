@@ -53,11 +53,15 @@ def judge(r, plates, step):
     return True, f"{step_cost(r):.3g} ms per step"
 
 
-def stack_spec(space, iterations, step, plates, extra=()):
-    """A timed test5 run that drops `plates` plates and times the last second."""
+def stack_spec(space, iterations, step, plates, extra=(), repeat=0, measures_blow_ups=False):
+    """A timed test5 run that drops `plates` plates and times the last second
+    (`repeat`: which search or repetition it belongs to, for runs.csv; every
+    timed run is a new process whatever its repeat). `measures_blow_ups`:
+    the caller judges a blown-up run by the failure rule (judge, margin)."""
     args = ["--space", space, "--iterations", iterations, "--step", step, "--plates", plates,
             "--spawn-interval", SPAWN_INTERVAL, "--seconds", round(plates * SPAWN_INTERVAL + SETTLE, 3), *extra]
-    return RunSpec("test5", args, timed=True, timeout=900, priority=0)
+    return RunSpec("test5", args, timed=True, repeat=repeat, timeout=900, priority=0,
+                   measures_blow_ups=measures_blow_ups)
 
 
 EXPECTED_PROBES = (7, 2)  # about how many runs a search makes (full, quick)
@@ -68,11 +72,13 @@ REPEATED = [("simple", 20), ("simple", 10)]
 REPEATS = (5, 3)
 
 
-def search_tallest(runner, space, iterations, quick, step=0.001, extra=(), on_probe=None, high=None):
-    """The tallest aligned stack in real time: SearchResult with probe info (RunResult, reason)."""
+def search_tallest(runner, space, iterations, quick, step=0.001, extra=(), on_probe=None, high=None, repeat=0):
+    """The tallest aligned stack in real time: SearchResult with probe info
+    (RunResult, reason). `repeat`: which of the repeated searches this is;
+    each probe is a new timed run in any case."""
 
     def probe(plates):
-        r = runner.run(stack_spec(space, iterations, step, plates, extra))
+        r = runner.run(stack_spec(space, iterations, step, plates, extra, repeat=repeat, measures_blow_ups=True))
         passed, reason = judge(r, plates, step)
         return passed, (r, reason)
 
@@ -158,13 +164,13 @@ class LimitTest5(Experiment):
         repeats = REPEATS[ctx.quick]
         plan = [(c, r) for r in range(repeats) for c in configs if r == 0 or c in REPEATED]
 
-        def one(config):
+        def one(config, repeat):
             on_probe, finished = ctx.search_units(EXPECTED_PROBES[ctx.quick])
-            result = search_tallest(ctx.runner, config[0], config[1], ctx.quick, on_probe=on_probe)
+            result = search_tallest(ctx.runner, config[0], config[1], ctx.quick, on_probe=on_probe, repeat=repeat)
             finished()
             return result
 
-        results = ctx.runner.parallel([lambda c=c: one(c) for c, _ in plan])
+        results = ctx.runner.parallel([lambda c=c, r=r: one(c, r) for c, r in plan])
         limits, probes = [], []
         for ((space, it), repeat), res in zip(plan, results):
             label = f"{space}, {it} iterations"

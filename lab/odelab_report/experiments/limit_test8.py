@@ -52,9 +52,9 @@ def estimate(r, cfm, erp, step=STEP):
     return bottom_load(r) * step * cfm / (erp * pendulum(r)[1])
 
 
-def run_spec(erp, cfm, bob_mass, seconds):
+def run_spec(erp, cfm, bob_mass, seconds, measures_blow_ups=False):
     return RunSpec("test8", ["--erp", erp, "--cfm", cfm, "--bob-mass", bob_mass, "--step", STEP,
-                             "--seconds", seconds, "--sample-interval", 3600])
+                             "--seconds", seconds, "--sample-interval", 3600], measures_blow_ups=measures_blow_ups)
 
 
 def crossing(points, threshold):
@@ -87,7 +87,7 @@ class LimitTest8(Experiment):
         masses = [5.0, 5000.0, 1e6] if quick else [0.33, 5.0, 50.0, 500.0, 5000.0, 5e4, 1e6]
         plan = [("cfm", erp, cfm, 5000.0) for erp in (0.4, 1.0) for cfm in cfms]
         plan += [("mass", 0.4, cfm, m) for cfm in (1e-4, 0.0) for m in masses]
-        specs = [run_spec(erp, cfm, m, seconds) for _, erp, cfm, m in plan]
+        specs = [run_spec(erp, cfm, m, seconds, measures_blow_ups=True) for _, erp, cfm, m in plan]
         ctx.expect(len(specs))
         results = ctx.runner.map(specs)
         ctx.advance(len(specs))

@@ -307,7 +307,8 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
     # ---- one point ---------------------------------------------------------------
     def measure(self, ctx, scene, engine, args, step):
         r = ctx.runner.run(RunSpec(program_of(engine, scene),
-                                   [*base_args(engine, scene, ctx.quick), *args, "--step", step], timed=True))
+                                   [*base_args(engine, scene, ctx.quick), *args, "--step", step], timed=True,
+                                   measures_blow_ups=True))
         return (r.m(scene.metric) if r.rc == 0 else None), r
 
     def heaviest(self, ctx, scene, engine, args, step):
@@ -315,7 +316,7 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
         def probe(mass):
             r = ctx.runner.run(RunSpec(program_of(engine, scene),
                                        [*base_args(engine, scene, ctx.quick), *args, "--big-mass", mass,
-                                        "--step", step], priority=0))
+                                        "--step", step], priority=0, measures_blow_ups=True))
             passed, reason = judge_test4(r)
             return passed, r
 
@@ -330,7 +331,7 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
                      "--seconds", round(plates * SPAWN_INTERVAL_TEST5 + SETTLE_TEST5, 3)]
             r = ctx.runner.run(RunSpec(program_of(engine, scene),
                                        [*base_args(engine, scene, ctx.quick), *args, *extra, "--step", step],
-                                       timed=True, timeout=900, priority=0))
+                                       timed=True, timeout=900, priority=0, measures_blow_ups=True))
             passed, reason = judge_test5(r, plates, step)
             return passed, r
 

@@ -62,13 +62,15 @@ class SpeedAccuracy(Experiment):
         timed = [[] for _ in plan]
         for round_ in range(max(repeats for _, repeats, _ in timing)):
             points = [i for i, (_, repeats, _) in enumerate(timing) if repeats > round_]
-            results = ctx.runner.map([RunSpec(self.program, timing[i][2], timed=True, repeat=round_) for i in points])
+            results = ctx.runner.map([RunSpec(self.program, timing[i][2], timed=True, repeat=round_,
+                                              measures_blow_ups=True) for i in points])
             for i, result in zip(points, results):
                 timed[i].append(result)
             ctx.advance(len(points))
         accuracy = [t[0] for t in timed]
         for i, result in zip(separate, ctx.runner.map(
-                [RunSpec(self.program, [*args, *plan[i][1], "--step", plan[i][2]]) for i in separate])):
+                [RunSpec(self.program, [*args, *plan[i][1], "--step", plan[i][2]], measures_blow_ups=True)
+                 for i in separate])):
             accuracy[i] = result
         ctx.advance(len(separate))
         measured = list(zip(accuracy, timed))

@@ -24,7 +24,6 @@ import math
 from .. import markdown as md
 from ..claims import Claim, q, slot
 
-from ..runner import RunSpec
 from ..search import highest_passing
 from .limit_test5 import (MAX_OFFSET, MAX_TWIST, MIN_HEIGHT_FRACTION, judge, stack_spec, step_cost,
                           whole_run_cost)
@@ -104,7 +103,8 @@ def tuned_judge(r, plates):
 
 
 def run_setting(runner, setting, plates):
-    return runner.run(stack_spec(setting["space"], setting["iterations"], STEP, plates, extra_options(setting)))
+    return runner.run(stack_spec(setting["space"], setting["iterations"], STEP, plates, extra_options(setting),
+                                 measures_blow_ups=True))
 
 
 def descend(ctx, start):
@@ -201,12 +201,11 @@ REPEATS = 3  # the descent's final setting timed again at the target, to show th
 
 
 def repeated(ctx, setting):
-    """The final setting at the target plate count, REPEATS runs in all (the
-    descent's own run is the first): [(cost ms per step, passed)]."""
+    """The final setting at the target plate count, timed REPEATS times
+    anew (each a new run): [(cost ms per step, passed)]."""
     target = TARGET[ctx.quick]
-    spec = stack_spec(setting["space"], setting["iterations"], STEP, target, extra_options(setting))
-    specs = [spec] + [RunSpec(spec.program, spec.args, timed=True, repeat=r, timeout=spec.timeout, priority=0)
-                      for r in range(1, REPEATS)]
+    specs = [stack_spec(setting["space"], setting["iterations"], STEP, target, extra_options(setting), repeat=r,
+                        measures_blow_ups=True) for r in range(REPEATS)]
     ctx.expect(len(specs))
     out = []
     for r in ctx.runner.map(specs):
