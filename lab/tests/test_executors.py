@@ -1,6 +1,7 @@
 """Unit checks of the lab's executor plumbing that need no cluster: the
 --executor values, Slurm's CPU count, the one-timing-host rule, packing a
-run's files, and which --out folders may be replaced.
+run's files, and which --out folders may be replaced; a dask port out of
+range and an srun allocation without a CPU are refused by the value check.
 Run: /usr/bin/python3 -m unittest discover -s lab/tests (CTest: lab_executor_units)."""
 
 import sys
@@ -24,7 +25,7 @@ def run(host, timed):
 class ExecutorValues(unittest.TestCase):
     def test_accepted(self):
         self.assertEqual(executors.parse("local"), ("local", None))
-        self.assertEqual(executors.parse("srun"), ("srun", None))
+        self.assertEqual(executors.parse("srun", {"SLURM_JOB_ID": "1"}), ("srun", None))
         self.assertEqual(executors.parse("dask:tcp://127.0.0.1:8786"), ("dask", "tcp://127.0.0.1:8786"))
         self.assertEqual(executors.parse("dask:node1:8786"), ("dask", "node1:8786"))
 
@@ -32,6 +33,24 @@ class ExecutorValues(unittest.TestCase):
         for text in ("", "dask:", "dask", "slurm", "Local", "dask:nonsense", "dask:tcp://host"):
             with self.assertRaises(ValueError, msg=text):
                 executors.parse(text)
+
+    def test_a_port_out_of_range_is_refused(self):
+        for text in ("dask:127.0.0.1:99999", "dask:tcp://node1:0", "dask:node1:65536"):
+            with self.assertRaises(ValueError, msg=text) as caught:
+                executors.parse(text)
+            self.assertIn("a port is 1 to 65535", str(caught.exception))
+        self.assertEqual(executors.parse("dask:node1:65535"), ("dask", "node1:65535"))
+
+    def test_srun_needs_an_allocation_with_a_cpu(self):
+        self.assertEqual(executors.parse("srun", {"SLURM_JOB_ID": "7", "SLURM_JOB_CPUS_PER_NODE": "2(x2)"}),
+                         ("srun", None))
+        for environ, words in (({}, "SLURM_JOB_ID is not set"),
+                               ({"SLURM_JOB_ID": "7", "SLURM_JOB_CPUS_PER_NODE": "0"}, "offers no CPU"),
+                               ({"SLURM_JOB_ID": "7", "SLURM_JOB_CPUS_PER_NODE": "0(x3)"}, "offers no CPU"),
+                               ({"SLURM_JOB_ID": "7", "SLURM_JOB_CPUS_PER_NODE": "many"}, "cannot read")):
+            with self.assertRaises(ValueError, msg=environ) as caught:
+                executors.parse("srun", environ)
+            self.assertIn(words, str(caught.exception))
 
 
 class SlurmCpus(unittest.TestCase):
@@ -41,7 +60,7 @@ class SlurmCpus(unittest.TestCase):
         self.assertEqual(cpus_of_allocation("2"), 2)
 
     def test_garbage(self):
-        with self.assertRaises(executors.ExecutorError):
+        with self.assertRaises(ValueError):  # an option's problem: refused before any run
             cpus_of_allocation("two")
 
 
