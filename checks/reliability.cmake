@@ -87,6 +87,16 @@ add_test(NAME lab_inputs_checked_and_every_ending_clean
                  ${CMAKE_CURRENT_BINARY_DIR}/lab-inputs)
 set_tests_properties(lab_inputs_checked_and_every_ending_clean PROPERTIES TIMEOUT 600 LABELS lab)
 
+# The lab trusts no run blindly: a run that blew up, or wrote a NaN metric or
+# a NaN in its output file, fails the report with a message naming it (no
+# traceback, no rule that "holds"); a dask port out of range and an srun
+# allocation without a CPU are refused with status 2 at once; SIGTERM ends
+# the children of a wrapper that does not exec. About 30 s.
+add_test(NAME lab_refuses_untrusted_runs_and_executors
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/scripts/lab_trusts_check.sh $<TARGET_FILE_DIR:test2>
+                 ${CMAKE_CURRENT_BINARY_DIR}/lab-trusts)
+set_tests_properties(lab_refuses_untrusted_runs_and_executors PROPERTIES TIMEOUT 300 LABELS lab)
+
 # An ODE error in a pool thread names the moment and the settings, as on the
 # main thread ("... at t=1.104 s (step 0.001, ERP 0.2, CFM 0, solver step,
 # 20 iterations, SOR w 1.3)"); it said only which kind of thread failed.
