@@ -4,6 +4,8 @@
 //   odelab --list                       the scenes, one a line: name, tab, description
 //   odelab --scene NAME [options]       NAME as its own program runs it (same options,
 //                                       headless too: the same metrics and state hash)
+// The runner owns each scene the window opens and destroys it before the
+// next is made (utils/OpenScene.h); this file only says which scene is next.
 #include <algorithm>
 #include <cstring>
 #include <iostream>
@@ -21,7 +23,10 @@ namespace {
 constexpr const char* USAGE =
     "usage: odelab [window options]        (opens on test1; Page Down / Page Up or the panel's list switch scenes)\n"
     "       odelab --list\n"
-    "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n";
+    "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n"
+    "In the window, every scene shown reports in --metrics-json as visit<N>.<scene>.<metric> once the\n"
+    "window has switched, --record numbers frames over the whole window, and --seconds must be at\n"
+    "least one step of every scene.\n";
 
 // Page Down / Page Up or the panel's scene list in the window: another scene
 // of the registry, made fresh with the window's options (its knobs at their defaults).
