@@ -4,13 +4,17 @@
 //   odelab --list                       the scenes, one a line: name, tab, description
 //   odelab --scene NAME [options]       NAME as its own program runs it (same options,
 //                                       headless too: the same metrics and state hash)
+// The runner owns each scene the window opens and destroys it before the
+// next is made (utils/OpenScene.h); this file only says which scene is next.
 #include <algorithm>
 #include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "CommandLine.h"
 #include "ExitCodes.h"
+#include "FormatValue.h"
 #include "SceneRegistry.h"
 #include "TestMain.h"
 
@@ -19,7 +23,10 @@ namespace {
 constexpr const char* USAGE =
     "usage: odelab [window options]        (opens on test1; Page Down / Page Up or the panel's list switch scenes)\n"
     "       odelab --list\n"
-    "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n";
+    "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n"
+    "In the window, every scene shown reports in --metrics-json as visit<N>.<scene>.<metric> once the\n"
+    "window has switched, --record numbers frames over the whole window, and --seconds must be at\n"
+    "least one step of every scene.\n";
 
 // Page Down / Page Up or the panel's scene list in the window: another scene
 // of the registry, made fresh with the window's options (its knobs at their defaults).
@@ -30,13 +37,27 @@ class RegistrySwitching : public odelab::SceneSwitching {
     while (index_ < scenes.size() && scenes[index_].make != first.make) ++index_;
   }
 
-  odelab::AbstractWindow& next(int offset, const odelab::RunOptions& options) override {
+  // The runner has destroyed the scene that ended (OpenScene) before this call.
+  std::unique_ptr<odelab::AbstractWindow> next(int offset, const odelab::RunOptions& options) override {
     const long count = static_cast<long>(odelab::sceneRegistry().size());
     index_ = static_cast<size_t>(((static_cast<long>(index_) + offset) % count + count) % count);
-    scene_ = odelab::sceneRegistry()[index_].make();  // the scene it replaces has ended: freed here
-    scene_->offerSceneSwitch(scenes(), current());
-    scene_->setRunOptions(options);
-    return *scene_;
+    std::unique_ptr<odelab::AbstractWindow> scene = odelab::sceneRegistry()[index_].make();
+    scene->offerSceneSwitch(scenes(), current());
+    scene->setRunOptions(options);
+    return scene;
+  }
+
+  // A scene switched to runs at its own step: --seconds shorter than that
+  // step would end it after one step it was not asked for.
+  void checkOptions(const odelab::RunOptions& options) const override {
+    for (const odelab::SceneEntry& entry : odelab::sceneRegistry()) {
+      const double step = entry.make()->tuning().settings().step;
+      if (options.seconds > 0 && options.seconds < step)
+        throw odelab::UsageError("--seconds: " + odelab::formatValue(options.seconds) + " s is less than one step of " +
+                                 entry.name + " (" + odelab::formatValue(step) +
+                                 " s), a scene this window can switch to (Page Down / Page Up); give --seconds " +
+                                 odelab::formatValue(step) + " or more, or run --headless");
+    }
   }
 
   // The panel's list shows each scene as "test2  Pendulum", its description
@@ -66,7 +87,6 @@ class RegistrySwitching : public odelab::SceneSwitching {
   }
 
   size_t index_ = 0;
-  std::unique_ptr<odelab::AbstractWindow> scene_;
   mutable std::vector<odelab::SceneChoice> choices_;
 };
 

@@ -42,14 +42,18 @@ class SessionTools {
   // The launcher's window: its scenes (none in a program of its own), the
   // one on screen, and a request that ends this scene's frame loop asking
   // for the scene `offset` places on in the list, wrapping (0: none).
+  // Requests of one frame add up: two Page Ups are two switches, and Page
+  // Down then Page Up come back to this scene, made afresh.
   const std::vector<SceneChoice>& sceneChoices() const { return sceneChoices_; }
   int currentScene() const { return currentScene_; }
   void requestSceneSwitch(int offset) {
     if (offset == 0) return;
-    switchRequest_ = offset;
+    switchRequest_ += offset;
+    switchRequested_ = true;
     quitRequested_ = true;
   }
-  int switchRequest() const { return switchRequest_; }
+  bool switchRequested() const { return switchRequested_; }
+  int switchRequest() const { return switchRequest_; }  // the offsets requested, summed
   bool mouseLook() const { return mouseLook_; }
   void toggleMouseLook() { mouseLook_ = !mouseLook_; }
   bool takeScreenshotRequest();  // true once per F12 press
@@ -78,6 +82,7 @@ class SessionTools {
   HudMode hudMode_ = HudMode::Compact;
   bool quitRequested_ = false;
   int switchRequest_ = 0;
+  bool switchRequested_ = false;
   std::vector<SceneChoice> sceneChoices_;
   int currentScene_ = -1;
   bool mouseLook_ = false;

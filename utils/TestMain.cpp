@@ -10,6 +10,8 @@
 #include "CopyLine.h"
 #include "ExitCodes.h"
 #include "OdeMessages.h"
+#include "OpenScene.h"
+#include "SceneVisits.h"
 #include "StopSignal.h"
 #include "WindowEntry.h"
 
@@ -32,42 +34,14 @@ class OdeLibrary {
 // A failure caught here marks them with its message; an ODE error in a pool
 // thread marks them through OdeMessages; exit() called inside the run by a
 // library (Xlib's, when the display goes away) marks them from an atexit
-// hook. RunEnding holds all three from before the first step to the end.
-AbstractWindow* runningScene = nullptr;
+// hook. OpenScene holds the last two for the scene open, from before its
+// first step to its close.
 
-void markCutShort(AbstractWindow& scene, const std::string& why) {
-  try {
-    scene.endOutputs(why);  // once: a file already ended keeps its line
-  } catch (const std::exception& error) {  // a full disk: the file stays without a last line
-    std::cerr << "error: " << error.what() << '\n';
-  }
-}
-
-void markOutputsAtExit() {
-  AbstractWindow* scene = runningScene;
-  runningScene = nullptr;
-  if (scene) markCutShort(*scene, "the program exited inside the run (exit() from a library; see standard error)");
-}
-
-class RunEnding {
- public:
-  explicit RunEnding(AbstractWindow& scene) {
-    static const bool registered = std::atexit(markOutputsAtExit) == 0;
-    (void)registered;
-    runningScene = &scene;
-    OdeMessages::setRunContext([&scene] { return scene.momentAndSettings(); },
-                               [&scene](const std::string& why) { scene.endOutputs(why); });
-  }
-  ~RunEnding() {
-    runningScene = nullptr;
-    OdeMessages::setRunContext({}, {});
-  }
-  RunEnding(const RunEnding&) = delete;
-  RunEnding& operator=(const RunEnding&) = delete;
-};
-
-// What follows a window run: the output files' end lines and the metrics.
-int afterWindow(AbstractWindow& scene, const RunOptions& options, int status) {
+// What follows a window run: the output files' end lines and the metrics,
+// every visit's when the window switched scenes (SceneVisits).
+int afterWindow(OpenScene& current, const SceneVisits& visits, const RunOptions& options, int status) {
+  if (!current.isOpen()) return status == exit_code::OK ? exit_code::RUNTIME_ERROR : status;
+  AbstractWindow& scene = current.scene();
   if (stopSignal() != 0) return scene.stoppedBySignal();
   if (status != exit_code::OK) {
     markCutShort(scene, "the window run failed with status " + std::to_string(status) + " (see standard error)");
@@ -75,11 +49,13 @@ int afterWindow(AbstractWindow& scene, const RunOptions& options, int status) {
   }
   scene.endOutputs("");
   // A window run reports too, so scripted sessions can be checked.
-  if (!options.metricsJson.empty()) scene.metrics().writeJsonAtomically(options.metricsJson);
+  if (!options.metricsJson.empty())
+    visits.session(scene.programName(), scene.metrics()).writeJsonAtomically(options.metricsJson);
   return status;
 }
 
-int run(AbstractWindow& first, const RunOptions& options, SceneSwitching* switching) {
+int run(OpenScene& current, const RunOptions& options, SceneSwitching* switching) {
+  AbstractWindow& first = current.scene();
   if (options.headless) {
     first.initialize(options);
     return first.runHeadless();
@@ -90,26 +66,24 @@ int run(AbstractWindow& first, const RunOptions& options, SceneSwitching* switch
   const WindowEntry* window = windowEntry();
   if (!window) return exit_code::MISSING_RESOURCE;
   if (!switching)
-    return window->run(first, options, [&first, options](int status) { return afterWindow(first, options, status); });
-  AbstractWindow* current = &first;
-  // A scene switched to is torn down here, before ODE closes (the runner
-  // tears down the first); not while an error unwinds (see runScene).
-  struct TearDownLast {
-    AbstractWindow& first;
-    AbstractWindow*& current;
-    ~TearDownLast() {
-      if (current != &first && std::uncaught_exceptions() == 0) current->shutdown();
-    }
-  } tearDown{first, current};
+    return window->run(first, options, [&current, options](int status) {
+      return afterWindow(current, SceneVisits{}, options, status);
+    });
+  // Each scene the window leaves is ended, measured and closed (OpenScene:
+  // its files, locks and hooks let go, the scene destroyed) before the next
+  // is made, so a scene shown again opens its files afresh.
+  SceneVisits visits;
   return window->runSwitching(
       first, options,
-      [&](int direction) -> AbstractWindow& {
-        current->endOutputs("");
-        current->shutdown();
-        current = &switching->next(direction, options);
-        return *current;
+      [&](int offset) -> AbstractWindow& {
+        AbstractWindow& ending = current.scene();
+        ending.endOutputs("");
+        visits.add(ending.programName(), ending.metrics());  // before the world goes: metrics read it
+        current.close();
+        current.open(switching->next(offset, options));
+        return current.scene();
       },
-      [&](int status) { return afterWindow(*current, options, status); });
+      [&](int status) { return afterWindow(current, visits, options, status); });
 }
 
 }  // namespace
@@ -123,10 +97,13 @@ int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* swi
     std::cerr << "error: scene declaration: " << error.what() << '\n';
     return exit_code::RUNTIME_ERROR;
   }
-  return runScene(*scene, entry.description, argc, argv, switching);
+  return runScene(std::move(scene), entry.description, argc, argv, switching);
 }
 
-int runScene(AbstractWindow& scene, const char* description, int argc, char** argv, SceneSwitching* switching) {
+int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int argc, char** argv,
+             SceneSwitching* switching) {
+  OpenScene current(std::move(first));
+  AbstractWindow& scene = current.scene();  // the first scene, until the window switches
   RunOptions options;
   CLI::App app{std::string(scene.title()) + "\n" + description};
   app.get_formatter()->column_width(34);
@@ -154,6 +131,9 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     cli::checkKnobs(app, scene.tuning().knobs(), scene.tuning().settings().step);
     scene.setRunOptions(options);
     scene.checkOptions();
+    // The scenes a window may switch to get the same options: checked now,
+    // before any scene runs, not when a switch reaches them.
+    if (switching && !options.headless) switching->checkOptions(options);
   });
   if (refused) return *refused;
   scene.session().setGivenSceneOptions(givenOptions(sceneOptions));
@@ -169,28 +149,32 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
     return exit_code::RUNTIME_ERROR;
   }
   int status = exit_code::OK;
-  RunEnding ending(scene);
+  current.hook();
+  // The scene open when a run fails: after a switch, not the first.
+  const auto markOpenScene = [&current](const std::string& why) {
+    if (current.isOpen()) markCutShort(current.scene(), why);
+  };
   try {
-    status = run(scene, options, switching);
+    status = run(current, options, switching);
   } catch (const OdeError& error) {
     // ODE's state is not to be trusted after its own error: tearing the
     // world down can raise another one from a destructor. Leave without
     // unwinding; output files are flushed row by row already.
     std::cerr << "error: " << error.what() << '\n';
-    markCutShort(scene, std::string("ODE error: ") + error.what());
+    markOpenScene(std::string("ODE error: ") + error.what());
     std::cout.flush();
     std::exit(exit_code::ODE_ERROR);
   } catch (const UsageError& error) {
     std::cerr << "error: " << error.what() << '\n';
-    markCutShort(scene, error.what());
+    markOpenScene(error.what());
     status = exit_code::USAGE;
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << '\n';
-    markCutShort(scene, error.what());
+    markOpenScene(error.what());
     status = exit_code::RUNTIME_ERROR;
   }
-  if (printCommandLine) std::cout << "command line: " << copyLine(scene) << std::endl;
-  scene.shutdown();
+  if (printCommandLine && current.isOpen()) std::cout << "command line: " << copyLine(current.scene()) << std::endl;
+  current.close();  // while ODE is still initialised
   return status;
 }
 

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <memory>
+#include <vector>
+
 #include "AbstractWindow.h"
 #include "SceneRegistry.h"
 
@@ -10,19 +13,27 @@ namespace odelab {
 // process exit status (utils/ExitCodes.h).
 // The launcher's window goes from scene to scene (Page Down / Page Up)
 // without leaving the window: next() makes the scene that follows the one
-// just ended, with the same options. The last one on screen reports.
+// just ended, with the same options. The runner ends, measures and destroys
+// the scene it leaves (its files, locks and hooks let go: OpenScene.h)
+// before it asks for the next. Each scene shown reports its own metrics
+// (SceneVisits.h).
 class SceneSwitching {
  public:
   virtual ~SceneSwitching() = default;
   // The scene `offset` places on from the one just ended (wrapping): Page
-  // Down +1, Page Up -1, a click in the panel's scene list any.
-  virtual AbstractWindow& next(int offset, const RunOptions& options) = 0;
+  // Down +1, Page Up -1, a click in the panel's scene list any, 0 the same
+  // scene again. Made with `options`, its own settings at their defaults.
+  virtual std::unique_ptr<AbstractWindow> next(int offset, const RunOptions& options) = 0;
   virtual std::vector<SceneChoice> scenes() const = 0;  // every scene, in order
   virtual int current() const = 0;                       // the index of the one on screen
+  // After parsing, before any scene runs: the window's options hold for
+  // every scene it may switch to (--seconds at least one step of each).
+  // Throws UsageError naming the option and the scene.
+  virtual void checkOptions(const RunOptions& options) const = 0;
 };
 
 // With `switching` (the launcher), a window run may go on to other scenes.
-int runScene(AbstractWindow& scene, const char* description, int argc, char** argv,
+int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int argc, char** argv,
              SceneSwitching* switching = nullptr);
 
 // Every test's main(): `int main(int argc, char** argv) { return odelab::runTest<Test1>(argc, argv, "..."); }`

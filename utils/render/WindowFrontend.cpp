@@ -99,8 +99,10 @@ std::string formatFixed(const char* format, double value) {
 
 class FrameLoop {
  public:
-  FrameLoop(AbstractWindow& scene, const RunOptions& options, GlWindow& window, Views& views, EventPlayer& player)
-      : scene_(scene), options_(options), window_(window), views_(views), player_(player) {}
+  // `windowFrames` counts the window's frames over every scene it shows.
+  FrameLoop(AbstractWindow& scene, const RunOptions& options, GlWindow& window, Views& views, EventPlayer& player,
+            long long& windowFrames)
+      : scene_(scene), options_(options), window_(window), views_(views), player_(player), windowFrames_(windowFrames) {}
 
   int run();
   double runFrame();
@@ -121,6 +123,10 @@ class FrameLoop {
   GlWindow& window_;
   Views& views_;
   EventPlayer& player_;
+  // --record numbers frames by this count, so a scene shown again after a
+  // switch goes on from the window's last frame instead of replacing the
+  // frames of its first visit.
+  long long& windowFrames_;
   bool idle() const;
   double seconds(Uint64 from, Uint64 to) const { return static_cast<double>(to - from) / ticksPerSecond_; }
 
@@ -252,7 +258,7 @@ void FrameLoop::saveRequestedScreenshot() {
 }
 
 void FrameLoop::recordFrame(long long frame) {
-  char name[32];
+  char name[48];
   std::snprintf(name, sizeof name, "_frame_%06lld.png", frame);
   saveScreenshot(joinPath(options_.recordDir, scene_.programName() + name), window_.width(), window_.height());
 }
@@ -273,6 +279,7 @@ double FrameLoop::runFrame() {
   const bool recording = !options_.recordDir.empty();
   const int screenshotFrame = options_.frames > 0 ? options_.frames : 1;
   const long long frame = ++frame_;
+  ++windowFrames_;
   const Uint64 start = SDL_GetPerformanceCounter();
   pollEvents(frame);
 
@@ -298,7 +305,7 @@ double FrameLoop::runFrame() {
   // Read the back buffer before the swap leaves its contents undefined.
   const bool screenshotNow = screenshotRun && frame == screenshotFrame;
   if (scene_.session().takeScreenshotRequest()) saveRequestedScreenshot();
-  if (recording) recordFrame(frame);
+  if (recording) recordFrame(windowFrames_);
   if (screenshotNow) saveScreenshot(options_.screenshot, window_.width(), window_.height());
 
   ++totals_.frames;
@@ -385,7 +392,7 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
     // The frames outlive this call and the caller's options: they keep a
     // copy for the page's life. A page runs one scene (no switching).
     const RunOptions& frameOptions = *new RunOptions(options);
-    auto loop = std::make_unique<FrameLoop>(*scene, frameOptions, *window, *views, *player);
+    auto loop = std::make_unique<FrameLoop>(*scene, frameOptions, *window, *views, *player, *new long long(0));
     // The browser calls the frame back; this function never returns, and
     // what the frames use lives as long as the page.
     FrameLoop* frames = loop.get();
@@ -398,15 +405,19 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
     return exit_code::OK;
 #else
     (void)next;
+    long long windowFrames = 0;
     for (;;) {
       // Built only now that the window can run, so that a refused window run
       // (no display, unusable shaders or font) leaves no output file behind;
       // a runner that built it already is fine too.
       if (!scene->run().world()) scene->initialize(options);
-      FrameLoop loop(*scene, options, *window, *views, *player);
+      FrameLoop loop(*scene, options, *window, *views, *player, windowFrames);
       const int status = loop.run();
-      if (!next || scene->session().switchRequest() == 0 || stopSignal() != 0) return finish(status);
-      scene = &next(scene->session().switchRequest());
+      if (!next || !scene->session().switchRequested() || stopSignal() != 0) return finish(status);
+      // `next` destroys the scene that ended before it makes the next one.
+      const int offset = scene->session().switchRequest();
+      scene = nullptr;
+      scene = &next(offset);
       SDL_SetWindowTitle(window->sdlWindow(), scene->title().c_str());
     }
 #endif
@@ -420,7 +431,7 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
     // A frame that cannot be recorded (a full disk), a GL failure: the
     // output files name it as the reason the run was cut short.
     std::fprintf(stderr, "error: %s\n", error.what());
-    scene->endOutputs(error.what());
+    if (scene) scene->endOutputs(error.what());
     return finish(exit_code::RUNTIME_ERROR);
   }
 }

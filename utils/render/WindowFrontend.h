@@ -24,9 +24,12 @@ int runWindow(AbstractWindow& scene, const RunOptions& options, const std::funct
 // The launcher's window: runs `first` as runWindow does, and when the scene
 // ends asking for another (AbstractWindow::switchRequest), runs the one
 // `next(direction)` gives in the same window, built with the same options.
-// `next` ends the scene it replaces; it returns the scene now running.
-// `finish` gets the status as with runWindow. A browser page runs one scene:
-// there `next` is not used.
+// `next` ends and destroys the scene it replaces (its files, locks and
+// hooks released) before it makes the next; it returns the scene now
+// running. Requests of one frame add up (two Page Ups: two scenes back).
+// --record numbers frames over the whole window, every scene's; --events
+// frame numbers count each scene's frames from 1. `finish` gets the status
+// as with runWindow. A browser page runs one scene: there `next` is not used.
 int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
                        const std::function<AbstractWindow&(int direction)>& next,
                        const std::function<int(int)>& finish);
