@@ -31,3 +31,12 @@ add_test(NAME lab_docs_figures_in_csvs
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_docs.py ${CMAKE_SOURCE_DIR})
 set_tests_properties(lab_docs_figures_in_csvs PROPERTIES LABELS lab)
 # (lab/tests/test_claims.py runs under lab_executor_units, which discovers lab/tests.)
+
+# ---- the file rule (checks/file_rules.json) in the lab ----
+# Every writer case through the lab's writers (files.py, csvout.write_csv) and
+# every reader case through its bounded reader, and a link planted at the
+# writer's temporary name left alone. (lab_executor_units runs it too, among
+# all of lab/tests; this names the rule's check on its own.)
+add_test(NAME lab_file_rules
+         COMMAND /usr/bin/python3 -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_file_rules.py)
+set_tests_properties(lab_file_rules PROPERTIES LABELS lab TIMEOUT 60)

@@ -396,6 +396,35 @@ foreach(_row IN LISTS _version_rows)
   set_tests_properties(peers_${_lab}_prints_its_version PROPERTIES LABELS peers)
 endforeach()
 
+# The file rule (checks/file_rules.json) in the web peers (peers/wasm/src/files.js):
+# every writer and reader case of the table through their writer and reader,
+# and a link planted at the writer's first temporary name left alone.
+if(ODELAB_NODE)
+  add_test(NAME peers_web_file_rules
+           COMMAND ${ODELAB_NODE} ${CMAKE_SOURCE_DIR}/peers/wasm/test/file_rules.test.js
+                   ${CMAKE_CURRENT_SOURCE_DIR}/file_rules.json)
+  set_tests_properties(peers_web_file_rules PROPERTIES LABELS peers TIMEOUT 60)
+endif()
+# ...and through a whole run: a /dev/null-like device, a link and a missing
+# folder as --metrics-json are refused with status 2 before the run (the
+# device and the link's victim kept); links planted at every name the old
+# predictable temporary name could take are not followed. The options: each
+# kind given twice, and a count not in digits, status 2 naming the option.
+if(ODELAB_WEB_PEERS_READY)
+  foreach(_case device symlink missing_folder planted_temporary)
+    add_test(NAME peers_jolt_metrics_json_${_case}
+             COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/web_peer_metrics_file.sh $<TARGET_FILE:jolt_lab> ${_case})
+    set_tests_properties(peers_jolt_metrics_json_${_case} PROPERTIES LABELS peers TIMEOUT 120 SKIP_RETURN_CODE 77
+                         ENVIRONMENT "PYTHON=${Python3_EXECUTABLE}")
+  endforeach()
+  foreach(_engine ${ODELAB_WEB_PEERS})
+    odelab_refusals(${_engine}_lab refuses_options_twice_and_counts_not_in_digits headless 2
+                    "--scene=test9 --scene=test2" "--step=0.002 --step=0.001" "--headless"
+                    "--metrics-json=b.json --metrics-json=a.json" "--plates=1e3 --scene=test5"
+                    "--plates=10.0 --scene=test5")
+  endforeach()
+endif()
+
 # A web peer started as `node peers/wasm/<engine>_lab.js`, without the flag that
 # keeps Node 20 from hanging at exit, starts itself again with it
 # (peers/wasm/src/safe_exit.js) and ends with its child's status: 0 for

@@ -5,6 +5,8 @@ names, then one row per measurement. Readers skip the `#` lines
 import csv
 import math
 
+from .files import replacing
+
 
 def format_value(value):
     if value is None:
@@ -21,8 +23,9 @@ def format_value(value):
 
 
 def write_csv(path, header, columns, rows, notes=()):
-    """`header`: (key, value) pairs; `rows`: dicts keyed by column name."""
-    with open(path, "w", newline="") as stream:
+    """`header`: (key, value) pairs; `rows`: dicts keyed by column name.
+    Written whole, and only over a regular file (files.py)."""
+    with replacing(path, newline="") as stream:
         for key, value in header:
             stream.write(f"# {key}: {value}\n")
         for note in notes:

@@ -17,6 +17,7 @@ import traceback
 from pathlib import Path
 
 from . import executors, interrupt, output_folder
+from .files import write_atomically
 from .inputs import InputError
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -223,7 +224,7 @@ def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, execu
                 progress.finished(experiment.name, False)
         except BaseException as error:  # noqa: BLE001 - a defect of the lab: one line here, the trace kept
             trace = runs_dir / f"{experiment.name}-traceback.txt"
-            trace.write_text(traceback.format_exc())
+            write_atomically(trace, traceback.format_exc())
             failures[experiment.name] = f"{type(error).__name__}: {error} (Python traceback in {trace})"
             if not runner.aborted:
                 progress.finished(experiment.name, False)

@@ -9,6 +9,8 @@ import shutil
 import tempfile
 from pathlib import Path
 
+from .files import write_atomically
+
 MARKER = ".odelab-report"
 MARKER_TEXT = ("This folder was written by lab/odelab-report. The next report written here replaces it\n"
                "as a whole; files added to it by hand are lost then.\n")
@@ -34,7 +36,7 @@ def check(out):
 def publish(staging, out):
     """Marks `staging` (a folder beside `out`) as a report and puts it in
     place of `out` in two renames."""
-    (Path(staging) / MARKER).write_text(MARKER_TEXT)
+    write_atomically(Path(staging) / MARKER, MARKER_TEXT)
     check(out)  # again: something may have appeared there while the runs went on
     old = None
     if out.exists():

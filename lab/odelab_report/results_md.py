@@ -5,6 +5,7 @@ from . import csvout, first_screen
 from . import markdown as md
 from .claims import HEADLINE, Claim, Data, Sentences
 from .experiments import SECTIONS
+from .files import write_atomically
 
 TIMING = """Cost is wall time, because that is what a user waits for, and it is this
 machine's: compare settings with each other, not with another machine's
@@ -77,7 +78,7 @@ def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partia
             body = sentences.fill(outcome.markdown, outcome.claims, experiment.name)
             lines += ["", f'<a id="{_anchor(experiment)}"></a>', "",
                       f"### {experiment.title} (`--only {experiment.name}`)", "", body.strip()]
-    path.write_text("\n".join(lines) + "\n")
+    write_atomically(path, "\n".join(lines) + "\n")
     if sentences.shown:
         csvout.write_csv(path.parent / "claims.csv", header, Sentences.COLUMNS, sentences.shown,
                          notes=["every sentence of RESULTS.md made from data (the table at the top, the headline "

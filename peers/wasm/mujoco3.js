@@ -6,11 +6,14 @@
 // so the two versions can be set side by side (peers/check_mujoco3.py).
 //
 // Usage: mujoco3.js MODEL.xml --scene test2|test9 [--seconds S] [--metrics-json FILE]
-// Exit 0 done, 1 the model or the engine failed, 2 bad usage, 3 non-finite state.
-const fs = require('fs');
+// Exit 0 done, 1 the model or the engine failed, 2 bad usage (an option twice, a model
+// or metrics file refused by src/files.js), 3 non-finite state.
 const { performance } = require('perf_hooks');
 const { Metrics } = require('./src/metrics');
 const m = require('./src/measurements');
+const { checkWritable, readBounded, FileRefused } = require('./src/files');
+
+const MAX_MODEL_BYTES = 16 << 20;  // mujoco_lab's models are a few kilobytes
 
 const USAGE = 'usage: mujoco3.js MODEL.xml --scene test2|test9 [--seconds S] [--metrics-json FILE]\n';
 
@@ -18,9 +21,9 @@ function parse(argv) {
   const options = { model: '', scene: '', seconds: -1, metricsJson: '' };
   for (let i = 0; i < argv.length; ++i) {
     const value = argv[i + 1];
-    if (argv[i] === '--scene' && ['test2', 'test9'].includes(value)) options.scene = argv[++i];
-    else if (argv[i] === '--seconds' && /^\d+(\.\d*)?$/.test(value || '') && Number(value) > 0) options.seconds = Number(argv[++i]);
-    else if (argv[i] === '--metrics-json' && value) options.metricsJson = argv[++i];
+    if (argv[i] === '--scene' && !options.scene && ['test2', 'test9'].includes(value)) options.scene = argv[++i];
+    else if (argv[i] === '--seconds' && options.seconds < 0 && /^\d+(\.\d*)?$/.test(value || '') && Number(value) > 0) options.seconds = Number(argv[++i]);
+    else if (argv[i] === '--metrics-json' && !options.metricsJson && value) options.metricsJson = argv[++i];
     else if (!argv[i].startsWith('-') && !options.model) options.model = argv[i];
     else return null;
   }
@@ -49,9 +52,18 @@ async function main(argv) {
     process.stderr.write(USAGE);
     return 2;
   }
+  let modelText;
+  try {  // both files checked before the engine loads: a bad one costs no run
+    if (options.metricsJson) checkWritable(options.metricsJson);
+    modelText = readBounded(options.model, MAX_MODEL_BYTES).toString('utf8');
+  } catch (error) {
+    if (!(error instanceof FileRefused)) throw error;
+    process.stderr.write(`error: ${error.message}\n${USAGE}`);
+    return 2;
+  }
   const { default: load } = await import('mujoco-js');
   const mj = await load();
-  mj.FS.writeFile('/model.xml', fs.readFileSync(options.model, 'utf8'));
+  mj.FS.writeFile('/model.xml', modelText);
   const m3 = mj.MjModel.loadFromXML('/model.xml');
   const d = new mj.MjData(m3);
   mj.mj_forward(m3, d);

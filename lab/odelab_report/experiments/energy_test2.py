@@ -6,7 +6,8 @@ import re
 from .. import markdown as md
 from ..claims import Claim, q, slot
 from ..plots import limits as plots
-from ..runner import RunSpec
+from ..files import InputError, read_text
+from ..runner import MAX_RUN_BYTES, LabError, RunSpec
 from .base import Experiment, Outcome
 from .thesis_choices import figure_of, read_csv, FIGURES
 
@@ -53,7 +54,11 @@ def read_output_file(path):
     """Rows (time, potential, kinetic, total) of Test2_output.txt, skipping `#`
     lines and the first other line, which names the columns."""
     rows, header_seen = [], False
-    for line in path.read_text().splitlines():
+    try:  # what the run left: a regular file of bounded size (files.py), or the experiment fails
+        text = read_text(path, MAX_RUN_BYTES, "test2's output file")
+    except InputError as error:
+        raise LabError(str(error)) from None
+    for line in text.splitlines():
         if line.startswith("#") or not line.strip():
             continue
         if not header_seen:

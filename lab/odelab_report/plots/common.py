@@ -1,6 +1,7 @@
 """Shared look of every plot, and saving as PNG + SVG."""
 
 import functools
+import io
 import threading
 import warnings
 
@@ -8,6 +9,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from ..files import write_atomically  # noqa: E402
 
 plt.rcParams.update({
     "figure.figsize": (8.0, 5.2),
@@ -68,8 +71,11 @@ def save(fig, out_dir, stem):
         fig.tight_layout()
     names = [stem + ".png", stem + ".svg"]
     # bbox "tight": a legend placed outside the axes is kept in the picture.
-    fig.savefig(out_dir / names[0], metadata={"Software": None}, bbox_inches="tight", pad_inches=0.15)
-    fig.savefig(out_dir / names[1], metadata={"Date": None, "Creator": None}, bbox_inches="tight",
-                pad_inches=0.15)
+    # Drawn in memory, then written by the file rule's writer (files.py):
+    # savefig given a path would open it through a link or a FIFO.
+    for name, metadata in ((names[0], {"Software": None}), (names[1], {"Date": None, "Creator": None})):
+        drawn = io.BytesIO()
+        fig.savefig(drawn, format=name.rsplit(".", 1)[1], metadata=metadata, bbox_inches="tight", pad_inches=0.15)
+        write_atomically(out_dir / name, drawn.getvalue())
     plt.close(fig)
     return names

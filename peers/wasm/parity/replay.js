@@ -3,14 +3,17 @@
 // The JavaScript measurement rules (src/measurements.js) on a trajectory
 // written by record.js: the metrics, as the web peers name them, on stdout
 // as JSON. Usage: replay.js FILE
-const fs = require('fs');
+const { readBounded } = require('../src/files');
 const m = require('../src/measurements');
 const { Metrics } = require('../src/metrics');
 const { measureRebounds, ballLayout } = require('../src/rebound');
 const { measureUpright } = require('../src/upright');
 
+// record.js's longest trajectory (test1's fifty balls) is a few megabytes.
+const MAX_TRAJECTORY_BYTES = 256 << 20;
+
 function readTrajectory(file) {
-  const lines = fs.readFileSync(file, 'utf8').trim().split('\n');
+  const lines = readBounded(file, MAX_TRAJECTORY_BYTES).toString('utf8').trim().split('\n');
   const header = {};
   let i = 0;
   for (; lines[i] !== 'rows'; ++i) {

@@ -1,7 +1,7 @@
 'use strict';
 // The command line of the peer programs (peers/PeerMain.cpp's options), for
-// the web peers. A bad option, a value out of range, NaN, or a run that would
-// take no step is refused with its reason on stderr and status 2.
+// the web peers. A bad option, an option given twice, a value out of range,
+// NaN, a count not in digits, or a run that would take no step is refused with its reason on stderr and status 2.
 
 const { scene } = require('./constants');
 
@@ -27,7 +27,7 @@ const OPTIONS = {
   '--plates': { kind: 'number', key: 'plates', min: 1, max: 100000, integer: true, help: "test5: plates dropped (default: the scene's)" },
   '--spawn-interval': { kind: 'number', key: 'spawnInterval', min: 1e-6, max: 1e4,
     help: "test5: simulated seconds between plates (default: the scene's)" },
-  '--metrics-json': { kind: 'text', key: 'metricsJson', help: 'write the metrics to this file as JSON' },
+  '--metrics-json': { kind: 'text', key: 'metricsJson', help: 'write the metrics to this file as JSON, whole (a new or regular file in an existing folder: anything else is refused before the run)' },
   '--headless': { kind: 'flag', key: 'headless', help: "accepted for the lab's sake; the peers never open a window" },
   '--help': { kind: 'flag', key: 'help', help: 'print this help and exit' },
   '--version': { kind: 'flag', key: 'version', help: 'print the engine and its npm package version, and exit' },
@@ -55,9 +55,10 @@ function usage(engineName) {
 function parseNumber(name, text, o) {
   // Number() takes '', '0x10' and ' 1 '; a plain decimal is what the C++ peers accept.
   if (!/^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(text)) throw new UsageError(`${name}: "${text}" is not a number`);
+  // A count is written in digits: 1e3 or 10.0 is refused, as the C++ peers' integer parser refuses it.
+  if (o.integer && !/^[+-]?\d+$/.test(text)) throw new UsageError(`${name}: "${text}" is not a whole number`);
   const value = Number(text);
   const low = o.exclusiveMin ? value <= o.min : value < o.min;
-  if (o.integer && !Number.isInteger(value)) throw new UsageError(`${name}: ${text} is not a whole number`);
   if (!Number.isFinite(value) || low || value > o.max)
     throw new UsageError(`${name}: ${text} is not in ${o.exclusiveMin ? '(' : '['}${o.min} - ${o.max}]`);
   return value;
@@ -67,6 +68,7 @@ function parseNumber(name, text, o) {
 // UsageError naming what was wrong. `engine`: {hasContinuousCollision, name}.
 function parseArguments(argv, engine) {
   const options = defaults();
+  const given = new Set();  // an option given twice is a mistake, not a choice of the last
   for (let i = 0; i < argv.length; ++i) {
     let arg = argv[i], value;
     const equals = arg.startsWith('--') ? arg.indexOf('=') : -1;
@@ -77,6 +79,8 @@ function parseArguments(argv, engine) {
     arg = ALIASES[arg] || arg;
     const o = OPTIONS[arg];
     if (!o) throw new UsageError(arg.startsWith('-') ? `unknown option ${arg}` : `unexpected argument "${arg}"`);
+    if (given.has(arg)) throw new UsageError(`${arg} given twice`);
+    given.add(arg);
     if (o.kind === 'flag') {
       if (value !== undefined) throw new UsageError(`${arg} takes no value`);
       options[o.key] = true;

@@ -1,12 +1,13 @@
 'use strict';
 // One web peer's whole program: options, the engine loaded, the scene's
 // measurement, metrics. Exit status 0 done, 1 the engine or the metrics
-// file failed, 2 bad usage, 3 the state became non-finite (as the C++ peers).
+// file failed, 2 bad usage or a metrics file that may not be written, 3 the state became non-finite (as the C++ peers).
 const fs = require('fs');
 const path = require('path');
 const { performance } = require('perf_hooks');
 const { parseArguments, usage, UsageError } = require('./cli');
 const { Metrics } = require('./metrics');
+const { checkWritable, FileRefused } = require('./files');
 const m = require('./measurements');
 const { scene } = require('./constants');
 const { measureRebounds } = require('./rebound');
@@ -56,8 +57,11 @@ async function runPeer(engine, argv = process.argv.slice(2)) {
     options = parseArguments(argv, engine);
     if (options.scene !== 'test10' && m.stepsFor(options) < 1)
       throw new UsageError(`--seconds: a run of ${m.stepsFor(options)} steps of ${options.step} s measures nothing`);
+    // Before the run: a metrics file that cannot be written costs no run.
+    if (options.metricsJson && !options.help && !options.version) checkWritable(options.metricsJson);
   } catch (error) {
-    if (!(error instanceof UsageError)) throw error;
+    if (error instanceof FileRefused) error.message = `--metrics-json: ${error.message}`;
+    else if (!(error instanceof UsageError)) throw error;
     process.stderr.write(`error: ${error.message}\nRun with --help for more information.\n`);
     return 2;
   }

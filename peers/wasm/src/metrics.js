@@ -2,8 +2,7 @@
 // The metrics as utils/Metrics.cpp writes them: ordered "name = value" lines
 // and a flat JSON object, whole numbers exact, the rest to 10 significant
 // digits as C++'s default stream prints them, non-finite values as null.
-const fs = require('fs');
-const path = require('path');
+const { writeAtomically } = require('./files');
 
 function formatNumber(value) {
   if (!Number.isFinite(value)) return 'null';
@@ -36,17 +35,9 @@ class Metrics {
     const lines = [...this.entries].map(([name, value]) => `\n  "${name}": ${formatNumber(value)}`);
     return `{${lines.join(',')}\n}\n`;
   }
-  // A unique temporary file beside the target, renamed over it: a reader
-  // never sees half a file.
+  // Whole or not at all, and only over a regular file (src/files.js).
   writeJsonAtomically(file) {
-    const temporary = path.join(path.dirname(file), `.${path.basename(file)}.${process.pid}.tmp`);
-    try {
-      fs.writeFileSync(temporary, this.json());
-      fs.renameSync(temporary, file);
-    } catch (error) {
-      try { fs.unlinkSync(temporary); } catch (_) { /* never written */ }
-      throw new Error(`cannot write ${file}: ${error.message}`);
-    }
+    writeAtomically(file, this.json());
   }
 }
 
