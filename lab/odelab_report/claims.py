@@ -55,7 +55,40 @@ def best_of(engines, values, cost, higher_better):
     return order[0]
 
 
-_SAFE.update(median=median, cheapest=cheapest, best_of=best_of, num=md.num, pct=md.pct)
+def cheapest_set(errors, cost, lo, hi, level):
+    """The indices `cheapest` names, cheapest first: one, or a tie within the
+    timing's scatter; empty when no setting reaches `level`."""
+    eligible = [i for i, e in enumerate(errors) if e is not None and cost[i] is not None and e <= level]
+    if not eligible:
+        return []
+    best = min(eligible, key=lambda i: cost[i])
+    return [best] + sorted((i for i in eligible if i != best and lo[i] <= hi[best]), key=lambda i: cost[i])
+
+
+def speed_options(solver, step, seconds):
+    """The options of a speed-accuracy point's timed runs (experiments/speed_accuracy.py)."""
+    chosen = {"--solver": "step"} if solver == "dWorldStep" else {"--solver": "quick",
+                                                                  "--iterations": solver.split()[-1]}
+    return dict(chosen, **{"--step": step, "--seconds": seconds})
+
+
+def runs_cost(arguments, cpu, sim, wanted):
+    """CPU seconds per simulated second of the runs (runs.csv's columns as
+    lists) whose options include every option of `wanted`, numbers compared
+    as numbers: [median, min, max, runs]."""
+    costs = []
+    for args, c, s in zip(arguments, cpu, sim):
+        words = (args or "").split()
+        options = {w: words[i + 1] for i, w in enumerate(words[:-1]) if w.startswith("--")}
+        if c is not None and s and all(_matches(options.get(k), v) for k, v in wanted.items()):
+            costs.append(c / s)
+    if not costs:
+        raise ValueError(f"no run with {wanted}")
+    return [median(costs), min(costs), max(costs), len(costs)]
+
+
+_SAFE.update(median=median, cheapest=cheapest, cheapest_set=cheapest_set, best_of=best_of, num=md.num,
+             pct=md.pct, speed_options=speed_options, runs_cost=runs_cost, dict=dict)
 
 
 def read_rows(path):
@@ -143,15 +176,17 @@ class _Formatter(string.Formatter):
     """str.format with the report's number styles: `{x:n}` / `{x:n2}` a number
     with 3 / 2 significant digits (markdown.num), `{x:p}` / `{x:p3}` a share
     as a percentage (markdown.pct), `{x:r}` a list of numbers as its range
-    'a to b'."""
+    'a to b', `{x:k2}` a number in few characters (markdown.short: 9.3e-5)."""
 
     def format_field(self, value, spec):
-        if spec[:1] in ("n", "p", "r") and (spec[1:].isdigit() or spec[1:] == ""):
+        if spec[:1] in ("n", "p", "r", "k") and (spec[1:].isdigit() or spec[1:] == ""):
             digits = int(spec[1:] or (2 if spec[0] == "p" else 3))
             if spec[0] == "n":
                 return md.num(value, digits)
             if spec[0] == "p":
                 return md.pct(value, digits)
+            if spec[0] == "k":
+                return md.short(value, digits)
             low, high = md.num(min(value), digits), md.num(max(value), digits)
             return f"{low} to {high}" if low != high else f"all {low}"
         return super().format_field(value, spec)
@@ -188,6 +223,7 @@ class Claim:
 
 FIRST_TABLE = "first table"  # where a claim shown in the table at the top stands
 HEADLINE = "headline"        # ... in the headline findings
+DECIDES = "what decides"     # ... in the table of what decides each figure, below the first screen
 _SLOT = re.compile(r"\[\[claim:([\w.+-]+)\]\]")
 
 
