@@ -31,3 +31,10 @@ add_test(NAME lab_docs_figures_in_csvs
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_docs.py ${CMAKE_SOURCE_DIR})
 set_tests_properties(lab_docs_figures_in_csvs PROPERTIES LABELS lab)
 # (lab/tests/test_claims.py runs under lab_executor_units, which discovers lab/tests.)
+
+# The first screen's rules on their own (also part of lab_executor_units):
+# a row whose cell reads another quantity or setting than its definition is
+# refused, n/a says why, costs are CPU time over the timed runs, the screen fits.
+add_test(NAME lab_first_screen_rules
+         COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_first_screen.py)
+set_tests_properties(lab_first_screen_rules PROPERTIES LABELS lab TIMEOUT 60)
