@@ -73,8 +73,10 @@ def cheapest_cells(scene):
                sim=q("runs.csv", "sim_seconds", "list", program=scene, timed=1),
                c="runs_cost(args, cpu, sim, speed_options(solvers[i], steps[i], timed[i]))")
     single = Claim(f"first.{scene}.cheapest", "{name}: {m:k2} [{a:k2}-{b:k2}]",
-                   dict(one, name="names[i]", m="c[0]", a="c[1]", b="c[2]"), "len(tied) == 1")
-    return [tie, single]
+                   dict(one, name="names[i]", m="c[0]", a="c[1]", b="c[2]"), "len(tied) == 1 and c[3] > 1")
+    once = Claim(f"first.{scene}.cheapest.once", "{name}: {m:k2} (1 run)", dict(one, name="names[i]", m="c[0]"),
+                 "len(tied) == 1 and c[3] == 1")
+    return [tie, single, once]
 
 
 def step_decides(scene):

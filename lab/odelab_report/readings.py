@@ -75,7 +75,7 @@ def facts(spec, rows):
         if key in where:
             known[key] = where[key]
     quantity = known.pop("quantity", None)
-    if column in QUANTITY_COLUMNS:
+    if column in QUANTITY_COLUMNS and rows:  # no row: no figure, nothing read
         if file == "peers.csv":
             names = {row.get("quantity") for row in rows}
             quantity = QUANTITIES.get(names.pop()) if len(names) == 1 else None

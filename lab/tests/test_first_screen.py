@@ -73,6 +73,16 @@ class OneReadingPerRow(unittest.TestCase):
         self.assertEqual(first_screen.cell(sentences, cheapest2, setting2, "sweep reads", "-"),
                          "n/a: sweep reads energy |E-E0|/E0")
 
+    def test_a_source_that_did_not_run_is_absent_not_another_quantity(self):
+        # --quick runs no other engine on test1: the cell says so.
+        folder = Path(tempfile.mkdtemp())
+        self.addCleanup(shutil.rmtree, folder)
+        (folder / "peers.csv").write_text(HEADER + "scene,engine,setting,step,quantity,value,cpu_s_per_sim_s\n"
+                                          "test9,bullet,best,0.001,apex_error_20,1e-9,0.001\n")
+        _, (_, setting), _, _, _, _, peer = next(row for row in first_screen.rows() if row[0] == "test1")
+        self.assertEqual(first_screen.cell(Sentences(Data(folder)), peer, setting, "engines read",
+                                           first_screen.NO_PEERS), "n/a: no engine ran it")
+
 
 class Costs(unittest.TestCase):
     """One unit: CPU seconds per simulated second, median [min-max] over the runs."""
