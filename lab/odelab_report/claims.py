@@ -65,25 +65,34 @@ def cheapest_set(errors, cost, lo, hi, level):
     return [best] + sorted((i for i in eligible if i != best and lo[i] <= hi[best]), key=lambda i: cost[i])
 
 
-def speed_options(solver, step, seconds):
-    """The options of a speed-accuracy point's timed runs (experiments/speed_accuracy.py)."""
+def speed_options(solver, step, scene_options):
+    """The options of a speed-accuracy point's timed runs but --seconds
+    (experiments/speed_accuracy.py: the scene's, the solver's, the step)."""
     chosen = {"--solver": "step"} if solver == "dWorldStep" else {"--solver": "quick",
                                                                   "--iterations": solver.split()[-1]}
-    return dict(chosen, **{"--step": step, "--seconds": seconds})
+    return dict(scene_options, **chosen, **{"--step": step})
 
 
-def runs_cost(arguments, cpu, sim, wanted):
-    """CPU seconds per simulated second of the runs (runs.csv's columns as
-    lists) whose options include every option of `wanted`, numbers compared
-    as numbers: [median, min, max, runs]."""
-    costs = []
-    for args, c, s in zip(arguments, cpu, sim):
+def runs_cost(runs, wanted, sim_seconds):
+    """CPU seconds per simulated second of the timed runs of one point:
+    `runs` is runs.csv's columns as lists (arguments, cpu_seconds,
+    sim_seconds, cpu_share, repeat), `wanted` every option but --seconds,
+    `sim_seconds` their simulated length. Of two runs of one repeat (a retry
+    of a run the machine slowed) the one with the larger CPU share counts, as
+    the lab keeps it. [median, min, max, runs]."""
+    kept = {}
+    for args, cpu, sim, share, repeat in zip(*runs):
         words = (args or "").split()
         options = {w: words[i + 1] for i, w in enumerate(words[:-1]) if w.startswith("--")}
-        if c is not None and s and all(_matches(options.get(k), v) for k, v in wanted.items()):
-            costs.append(c / s)
+        options.pop("--seconds", None)
+        if (cpu is None or not sim or set(options) != set(wanted) or not math.isclose(sim, sim_seconds, rel_tol=1e-6)
+                or not all(_matches(options[k], v) for k, v in wanted.items())):
+            continue
+        if repeat not in kept or (share or 0) > kept[repeat][1]:
+            kept[repeat] = (cpu / sim, share or 0)
+    costs = [cost for cost, _ in kept.values()]
     if not costs:
-        raise ValueError(f"no run with {wanted}")
+        raise ValueError(f"no run with {wanted} of {sim_seconds} s")
     return [median(costs), min(costs), max(costs), len(costs)]
 
 

@@ -21,7 +21,12 @@ COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE wi
            "best other engine, step 0.001"]
 DECIDES_COLUMNS = ["scene", "what decides ODE's figure (measured)"]
 VERDICTS = ("reproduced", "partly", "differs", "untested")
-SPEED_SCENES = ("test2", "test8", "test9")
+# The options of each speed sweep's runs but the solver's, the step and
+# --seconds (experiments/speed_accuracy.py's scene_args): how runs.csv names
+# the timed runs of a point.
+SPEED_OPTIONS = {"test2": {"--erp": 0.4, "--cfm": 0, "--sample-interval": 3600},
+                 "test8": {"--erp": 0.4, "--cfm": 0, "--sample-interval": 3600},
+                 "test9": {"--erp": 0.2, "--cfm": 0}}
 TIES_SECTION = "3"  # RESULTS.md's "Speed against accuracy"
 
 
@@ -67,11 +72,12 @@ def cheapest_cells(scene):
     values.update(tied="cheapest_set(errors, cost, lo, hi, 0.01)")
     tie = Claim(f"first.{scene}.cheapest.tie", f"[tie (see §{TIES_SECTION})](#exp-speed-{scene})", values,
                 "len(tied) > 1")
-    one = dict(values, i="tied[0]",
-               args=q("runs.csv", "arguments", "texts", program=scene, timed=1),
-               cpu=q("runs.csv", "cpu_seconds", "list", program=scene, timed=1),
-               sim=q("runs.csv", "sim_seconds", "list", program=scene, timed=1),
-               c="runs_cost(args, cpu, sim, speed_options(solvers[i], steps[i], timed[i]))")
+    runs = {name: q("runs.csv", column, agg, program=scene, timed=1) for name, column, agg in (
+        ("args", "arguments", "texts"), ("cpu", "cpu_seconds", "list"), ("sim", "sim_seconds", "list"),
+        ("share", "cpu_share", "list"), ("repeat", "repeat", "list"))}
+    one = dict(values, **runs, i="tied[0]", scene_options=repr(SPEED_OPTIONS[scene]),
+               c="runs_cost([args, cpu, sim, share, repeat], speed_options(solvers[i], steps[i], scene_options), "
+                 "timed[i])")
     single = Claim(f"first.{scene}.cheapest", "{name}: {m:k2} [{a:k2}-{b:k2}]",
                    dict(one, name="names[i]", m="c[0]", a="c[1]", b="c[2]"), "len(tied) == 1 and c[3] > 1")
     once = Claim(f"first.{scene}.cheapest.once", "{name}: {m:k2} (1 run)", dict(one, name="names[i]", m="c[0]"),

@@ -14,7 +14,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import check_report  # noqa: E402
 from odelab_report import first_screen  # noqa: E402
-from odelab_report.claims import Claim, Data, Sentences, q, runs_cost  # noqa: E402
+from odelab_report.claims import Claim, Data, Sentences, q, runs_cost, speed_options  # noqa: E402
 
 COMMITTED = Path(__file__).resolve().parents[2] / "doc" / "results"
 HEADER = "# ODE: test\n"
@@ -87,27 +87,42 @@ class OneReadingPerRow(unittest.TestCase):
 class Costs(unittest.TestCase):
     """One unit: CPU seconds per simulated second, median [min-max] over the runs."""
 
-    def test_runs_cost_takes_the_runs_with_the_options(self):
-        args = ["--solver quick --iterations 20 --seconds 30.0 --step 0.001",
-                "--solver quick --iterations 20 --seconds 30 --step 0.001",
-                "--solver quick --iterations 20 --seconds 30 --step 0.001",
-                "--solver quick --iterations 10 --seconds 30 --step 0.001",
-                "--solver step --seconds 30 --step 0.001"]
-        cpu, sim = [3.0, 6.0, 9.0, 100.0, 100.0], [30.0] * 5
-        wanted = {"--solver": "quick", "--iterations": "20", "--seconds": 30, "--step": 0.001}
-        self.assertEqual(runs_cost(args, cpu, sim, wanted), [0.2, 0.1, 0.3, 3])
+    def test_runs_cost_takes_the_timed_runs_of_the_point_and_a_retry_once(self):
+        args = ["--erp 0.2 --cfm 0 --solver quick --iterations 20 --seconds 30.0 --step 0.001",
+                "--erp 0.2 --cfm 0 --solver quick --iterations 20 --seconds 30 --step 0.001",
+                "--erp 0.2 --cfm 0 --solver quick --iterations 20 --seconds 30 --step 0.001",
+                "--erp 0.2 --cfm 0 --solver quick --iterations 20 --seconds 30 --step 0.001",  # repeat 2's retry
+                "--erp 0.2 --cfm 0 --solver quick --iterations 10 --seconds 30 --step 0.001",
+                "--erp 0.2 --cfm 0 --solver quick --iterations 20 --seconds 20 --step 0.001",  # the accuracy run
+                "--solver quick --iterations 20 --seconds 30 --step 0.001"]  # another experiment's
+        cpu, sim = [3.0, 6.0, 99.0, 9.0, 100.0, 100.0, 100.0], [30.0] * 5 + [20.0, 30.0]
+        share, repeat = [1, 1, 0.5, 0.95, 1, 1, 1], [0, 1, 2, 2, 0, 0, 0]
+        wanted = speed_options("QuickStep 20", 0.001, {"--erp": 0.2, "--cfm": 0})
+        self.assertEqual(runs_cost([args, cpu, sim, share, repeat], wanted, 30), [0.2, 0.1, 0.3, 3])
         with self.assertRaises(ValueError):
-            runs_cost(args, cpu, sim, dict(wanted, **{"--step": 0.01}))
+            runs_cost([args, cpu, sim, share, repeat], dict(wanted, **{"--step": 0.01}), 30)
+
+    def test_runs_cost_agrees_with_the_committed_sweeps(self):
+        data = Data(COMMITTED)
+        for scene, options in first_screen.SPEED_OPTIONS.items():
+            runs = [data.lookup(q("runs.csv", column, agg, program=scene, timed=1)) for column, agg in (
+                ("arguments", "texts"), ("cpu_seconds", "list"), ("sim_seconds", "list"), ("cpu_share", "list"),
+                ("repeat", "list"))]
+            for row in data.rows(f"speed-{scene}.csv"):
+                cost = runs_cost(runs, speed_options(row["solver"], float(row["step_s"]), options),
+                                 float(row["timed_sim_seconds"]))
+                self.assertAlmostEqual(cost[0], float(row["cpu_per_sim_second"]), delta=1e-6 * cost[0])
+                self.assertEqual(cost[3], int(row["repeats"]))
 
     def test_one_cheapest_setting_gives_its_cpu_cost_and_a_tie_links_below(self):
         folder = Path(tempfile.mkdtemp())
         self.addCleanup(shutil.rmtree, folder)
         speed = ("solver,step_s,timed_sim_seconds,wall_seconds_min,wall_seconds_max,wall_per_sim_second,error\n"
                  "QuickStep 20,0.01,300,1,2,0.005,0.001\nQuickStep 20,0.001,30,3,4,0.1,0.0001\n")
-        runs = ("program,arguments,timed,cpu_seconds,sim_seconds\n"
-                + "".join(f"test9,--erp 0.2 --cfm 0 --seconds 300 --solver quick --iterations 20 --step 0.01,1,{c},300\n"
-                          for c in (1.5, 1.2, 2.1))
-                + "test9,--erp 0.2 --cfm 0 --seconds 30 --solver quick --iterations 20 --step 0.001,1,9,30\n")
+        runs = ("program,arguments,timed,cpu_seconds,sim_seconds,cpu_share,repeat\n"
+                + "".join(f"test9,--erp 0.2 --cfm 0 --seconds 300 --solver quick --iterations 20 --step 0.01,1,{c},300,1,{r}\n"
+                          for r, c in enumerate((1.5, 1.2, 2.1)))
+                + "test9,--erp 0.2 --cfm 0 --seconds 30 --solver quick --iterations 20 --step 0.001,1,9,30,1,0\n")
         (folder / "speed-test9.csv").write_text(HEADER + speed)
         (folder / "runs.csv").write_text(HEADER + runs)
         sentences = Sentences(Data(folder))
