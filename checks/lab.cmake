@@ -38,5 +38,12 @@ set_tests_properties(lab_docs_figures_in_csvs PROPERTIES LABELS lab)
 # writer's temporary name left alone. (lab_executor_units runs it too, among
 # all of lab/tests; this names the rule's check on its own.)
 add_test(NAME lab_file_rules
-         COMMAND /usr/bin/python3 -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_file_rules.py)
+         COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_file_rules.py)
 set_tests_properties(lab_file_rules PROPERTIES LABELS lab TIMEOUT 60)
+
+# The first screen's rules on their own (also part of lab_executor_units):
+# a row whose cell reads another quantity or setting than its definition is
+# refused, n/a says why, costs are CPU time over the timed runs, the screen fits.
+add_test(NAME lab_first_screen_rules
+         COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_first_screen.py)
+set_tests_properties(lab_first_screen_rules PROPERTIES LABELS lab TIMEOUT 60)

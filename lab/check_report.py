@@ -11,10 +11,14 @@
 - every CSV and plot RESULTS.md names exists;
 - thesis.csv, when there, has the ODE 0.11.1 rebuild's column and a
   sensitivity for every row with a thesis figure not reproduced;
-- the table at the top ("At a glance") has its seven columns and a row per
-  scene, test0 to test10; every sentence in claims.csv, recomputed from the
-  folder's CSVs by its lookups, gives the same text and its rule holds; each
-  row's figure cell is its claim's text (or says the data are absent);
+- the table at the top ("At a glance") has its six columns and a row per
+  scene, test0 to test10, all within the first 40 lines, no line of the first
+  screen over 160 characters and no row over 120 characters of cell text;
+  every sentence in claims.csv, recomputed from the folder's CSVs by its
+  lookups, gives the same text and its rule holds; each cell but the scene is
+  its claim's text or "n/a: <why>"; the verdict is one word; every lookup of
+  a row's claims reads the quantity at the setting of the row's definition
+  claim (readings.py says what a file reads where its columns do not);
 - every other sentence in claims.csv (headline findings, sections'
   conclusions) stands in RESULTS.md where claims.csv says, and every headline
   finding is such a sentence (but those of the experiments in UNCLAIMED,
@@ -24,7 +28,9 @@
 
 Usage: check_report.py REPORT_DIR   (exit 0: all good; 1: problems, listed)"""
 
+import ast
 import csv
+import json
 import re
 import struct
 import sys
@@ -32,15 +38,19 @@ import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from odelab_report.claims import read_rows, recheck  # noqa: E402 (standard library only)
+from odelab_report import readings  # noqa: E402 (standard library only)
+from odelab_report.claims import Data, _matches, read_rows, recheck  # noqa: E402
 
 HEADER_KEYS = ("ODE", "compiler", "CPU", "date", "commit")
-FIRST_COLUMNS = ["scene", "measured quantity (definition)", "ODE at the thesis's settings",
-                 "thesis (ODE 0.11.1) and verdict", "what decides it (measured)", "cheapest within 1% / 0.1%",
-                 "best other engine at step 0.001"]
+FIRST_COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE within 1%",
+                 "best other engine, step 0.001"]
 SCENES = [f"test{n}" for n in range(11)]
-ABSENT = "not in this report"
-FIRST_TABLE, HEADLINE = "first table", "headline"
+VERDICTS = ("reproduced", "partly", "differs", "untested")
+# The first screen: its eleven rows within the first FIRST_SCREEN_LINES lines,
+# no line of it longer than LONGEST_LINE, no row's cells longer than
+# LONGEST_ROW characters of text (a link counts by its text).
+FIRST_SCREEN_LINES, LONGEST_LINE, LONGEST_ROW = 40, 160, 120
+FIRST_TABLE, HEADLINE, DECIDES = "first table", "headline", "what decides"
 # Headline findings still made as plain text, by their first word: the
 # engines experiment (peers.py) writes its own verdicts.
 UNCLAIMED = ("peers ",)
@@ -124,6 +134,7 @@ def check_first_screen(folder, text):
     body = [cells(line) for line in table[2:]]
     if [row[0] for row in body] != SCENES:
         problems.append(f"the first table's rows are {[row[0] for row in body]}, expected {SCENES}")
+    problems += check_screen_size(lines, start, table, body)
     claims_path = folder / "claims.csv"
     claims = read_rows(claims_path) if claims_path.exists() else []
     problems += recheck(folder, claims)
@@ -134,9 +145,65 @@ def check_first_screen(folder, text):
         if row["text"] not in every_cell:
             problems.append(f"claim {row['key']} ('{row['text']}') is in no cell of the first table")
     for row in body:
-        figure = [v for k, v in shown.items() if k.startswith(f"first.{row[0]}.figure")]
-        if len(row) > 2 and row[2] != ABSENT and row[2] not in figure:
-            problems.append(f"{row[0]}: the figure '{row[2]}' is no claim recomputed from the CSVs")
+        for column, name in ((1, "definition"), (2, "figure"), (3, "thesis"), (4, "cheapest"), (5, "peer")):
+            made = [v for k, v in shown.items() if k.startswith(f"first.{row[0]}.{name}")
+                    or (name == "thesis" and k.startswith(f"first.{row[0]}") and k.endswith(".thesis"))]
+            if len(row) > column and not row[column].startswith("n/a: ") and row[column] not in made:
+                problems.append(f"{row[0]}: the cell '{row[column]}' ({FIRST_COLUMNS[column]}) is neither a claim "
+                                "recomputed from the CSVs nor 'n/a: <why>'")
+        if len(row) > 3 and row[3] not in VERDICTS:
+            problems.append(f"{row[0]}: the verdict '{row[3]}' is not one of {', '.join(VERDICTS)}")
+    problems += check_one_reading(folder, claims)
+    return problems
+
+
+def visible(cell):
+    """A cell's text as read: a markdown link counts by its text."""
+    return re.sub(r"\[([^\]]*)\]\([^)]*\)", r"\1", cell)
+
+
+def check_screen_size(lines, start, table, body):
+    """The first screen fits a screen: its rows within the first lines, no
+    long line, no long row."""
+    problems = []
+    last_row = start + 1 + lines[start + 1:].index(table[-1]) if table[-1] in lines[start + 1:] else len(lines)
+    if last_row + 1 > FIRST_SCREEN_LINES:
+        problems.append(f"the first table ends on line {last_row + 1}, after the first {FIRST_SCREEN_LINES}")
+    end = next((i for i in range(start + 1, len(lines)) if lines[i].startswith("## ")), len(lines))
+    for number, line in enumerate(lines[:end], 1):
+        if len(line) > LONGEST_LINE:
+            problems.append(f"line {number} of the first screen has {len(line)} characters (at most {LONGEST_LINE})")
+    for row in body:
+        size = sum(len(visible(cell)) for cell in row)
+        if size > LONGEST_ROW:
+            problems.append(f"{row[0]}: {size} characters of cell text (at most {LONGEST_ROW})")
+    return problems
+
+
+def check_one_reading(folder, claims):
+    """Each row's cells read the quantity at the setting its definition
+    claim (first.<scene>.definition) fixes: every lookup of the row's claims,
+    by what its file's columns and readings.py say it reads."""
+    data = Data(folder)
+    definitions = {}
+    for row in claims:
+        if row["key"].endswith(".definition"):
+            values = json.loads(row["values"])
+            definitions[row["key"].split(".")[1]] = {k: ast.literal_eval(v) for k, v in values.items()}
+    problems = [f"{scene}: no definition claim (first.{scene}.definition) saying its quantity and setting"
+                for scene in SCENES if scene not in definitions]
+    for row in claims:
+        scene = row["key"].split(".")[1]
+        if scene not in definitions:
+            continue
+        for name, spec in json.loads(row["values"]).items():
+            if not isinstance(spec, dict) or spec["file"] in readings.NOT_READINGS:
+                continue
+            rows = [r for r in data.rows(spec["file"])
+                    if all(_matches(r.get(k), v) for k, v in spec.get("where", {}).items())]
+            for difference in readings.differences(definitions[scene], readings.facts(spec, rows)):
+                problems.append(f"{scene}: claim {row['key']} reads {spec['file']} ({name}): {difference} "
+                                "(the row's definition)")
     return problems
 
 
@@ -177,7 +244,12 @@ def check_sentences(folder, text):
         place = row["place"]
         if place == FIRST_TABLE:
             continue
-        where = headline_lines(lines) if place == HEADLINE else experiment_lines(lines, place)
+        if place == HEADLINE:
+            where = headline_lines(lines)
+        elif place == DECIDES:
+            where = section_of(lines, lambda line: line == "## What decides each figure")
+        else:
+            where = experiment_lines(lines, place)
         if row["text"] not in "\n".join(where):
             problems.append(f"claim {row['key']} ('{row['text'][:80]}') is not in RESULTS.md's {place}")
     return problems

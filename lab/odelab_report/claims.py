@@ -55,7 +55,49 @@ def best_of(engines, values, cost, higher_better):
     return order[0]
 
 
-_SAFE.update(median=median, cheapest=cheapest, best_of=best_of, num=md.num, pct=md.pct)
+def cheapest_set(errors, cost, lo, hi, level):
+    """The indices `cheapest` names, cheapest first: one, or a tie within the
+    timing's scatter; empty when no setting reaches `level`."""
+    eligible = [i for i, e in enumerate(errors) if e is not None and cost[i] is not None and e <= level]
+    if not eligible:
+        return []
+    best = min(eligible, key=lambda i: cost[i])
+    return [best] + sorted((i for i in eligible if i != best and lo[i] <= hi[best]), key=lambda i: cost[i])
+
+
+def speed_options(solver, step, scene_options):
+    """The options of a speed-accuracy point's timed runs but --seconds
+    (experiments/speed_accuracy.py: the scene's, the solver's, the step)."""
+    chosen = {"--solver": "step"} if solver == "dWorldStep" else {"--solver": "quick",
+                                                                  "--iterations": solver.split()[-1]}
+    return dict(scene_options, **chosen, **{"--step": step})
+
+
+def runs_cost(runs, wanted, sim_seconds):
+    """CPU seconds per simulated second of the timed runs of one point:
+    `runs` is runs.csv's columns as lists (arguments, cpu_seconds,
+    sim_seconds, cpu_share, repeat), `wanted` every option but --seconds,
+    `sim_seconds` their simulated length. Of two runs of one repeat (a retry
+    of a run the machine slowed) the one with the larger CPU share counts, as
+    the lab keeps it. [median, min, max, runs]."""
+    kept = {}
+    for args, cpu, sim, share, repeat in zip(*runs):
+        words = (args or "").split()
+        options = {w: words[i + 1] for i, w in enumerate(words[:-1]) if w.startswith("--")}
+        options.pop("--seconds", None)
+        if (cpu is None or not sim or set(options) != set(wanted) or not math.isclose(sim, sim_seconds, rel_tol=1e-6)
+                or not all(_matches(options[k], v) for k, v in wanted.items())):
+            continue
+        if repeat not in kept or (share or 0) > kept[repeat][1]:
+            kept[repeat] = (cpu / sim, share or 0)
+    costs = [cost for cost, _ in kept.values()]
+    if not costs:
+        raise ValueError(f"no run with {wanted} of {sim_seconds} s")
+    return [median(costs), min(costs), max(costs), len(costs)]
+
+
+_SAFE.update(median=median, cheapest=cheapest, cheapest_set=cheapest_set, best_of=best_of, num=md.num,
+             pct=md.pct, speed_options=speed_options, runs_cost=runs_cost, dict=dict)
 
 
 def read_rows(path):
@@ -143,15 +185,17 @@ class _Formatter(string.Formatter):
     """str.format with the report's number styles: `{x:n}` / `{x:n2}` a number
     with 3 / 2 significant digits (markdown.num), `{x:p}` / `{x:p3}` a share
     as a percentage (markdown.pct), `{x:r}` a list of numbers as its range
-    'a to b'."""
+    'a to b', `{x:k2}` a number in few characters (markdown.short: 9.3e-5)."""
 
     def format_field(self, value, spec):
-        if spec[:1] in ("n", "p", "r") and (spec[1:].isdigit() or spec[1:] == ""):
+        if spec[:1] in ("n", "p", "r", "k") and (spec[1:].isdigit() or spec[1:] == ""):
             digits = int(spec[1:] or (2 if spec[0] == "p" else 3))
             if spec[0] == "n":
                 return md.num(value, digits)
             if spec[0] == "p":
                 return md.pct(value, digits)
+            if spec[0] == "k":
+                return md.short(value, digits)
             low, high = md.num(min(value), digits), md.num(max(value), digits)
             return f"{low} to {high}" if low != high else f"all {low}"
         return super().format_field(value, spec)
@@ -188,6 +232,7 @@ class Claim:
 
 FIRST_TABLE = "first table"  # where a claim shown in the table at the top stands
 HEADLINE = "headline"        # ... in the headline findings
+DECIDES = "what decides"     # ... in the table of what decides each figure, below the first screen
 _SLOT = re.compile(r"\[\[claim:([\w.+-]+)\]\]")
 
 

@@ -1,24 +1,40 @@
-"""The table at the top of RESULTS.md: a row per scene, test0 to test10, read
-from the CSVs the experiments wrote (so it stays true on another machine or
-ODE build): what is measured and how it is defined, ODE's figure at the
-thesis's settings, the thesis's figure and the verdict, what decides the
-figure with its measured effect, the cheapest setting within 1% / 0.1%, and
-the best other engine. Every cell is a Claim (claims.py); a cell whose data
-this report lacks says so."""
+"""The first screen of RESULTS.md: a row per scene, test0 to test10, that
+answers which ODE setting, at what cost, and whether another engine does
+better: the quantity and the setting the row is about (its definition),
+ODE's figure there, the thesis's verdict in one word, the cheapest ODE
+setting within 1% and the best other engine, costs in CPU seconds per
+simulated second. Every cell reads the row's quantity at the row's setting
+(readings.py says what each source reads); a source that reads another
+gives "n/a: <why>", never its figure. Every figure cell is a Claim
+(claims.py), read from the CSVs the experiments wrote.
+
+What decides each figure, and the long material (tie lists, the engines'
+matrix, the thesis's table, the machine), stand in sections below, which the
+first screen links to (decides_table here, the rest in results_md.py and the
+experiments)."""
 
 from . import markdown as md
-from .claims import Claim, q
+from . import readings
+from .claims import Claim, _matches, q
 
-COLUMNS = ["scene", "measured quantity (definition)", "ODE at the thesis's settings",
-           "thesis (ODE 0.11.1) and verdict", "what decides it (measured)", "cheapest within 1% / 0.1%",
-           "best other engine at step 0.001"]
-NOT_MEASURED = "not in this report"
+COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE within 1%",
+           "best other engine, step 0.001"]
+DECIDES_COLUMNS = ["scene", "what decides ODE's figure (measured)"]
+VERDICTS = ("reproduced", "partly", "differs", "untested")
+# The options of each speed sweep's runs but the solver's, the step and
+# --seconds (experiments/speed_accuracy.py's scene_args): how runs.csv names
+# the timed runs of a point.
+SPEED_OPTIONS = {"test2": {"--erp": 0.4, "--cfm": 0, "--sample-interval": 3600},
+                 "test8": {"--erp": 0.4, "--cfm": 0, "--sample-interval": 3600},
+                 "test9": {"--erp": 0.2, "--cfm": 0}}
+TIES_SECTION = "3"  # RESULTS.md's "Speed against accuracy"
 
 
 def thesis_cell(key):
-    return Claim(f"first.{key}.thesis", "{thesis} (**{verdict}**)",
-                 {"thesis": q("thesis.csv", "thesis_ode_0_11_1", "text", key=key),
-                  "verdict": q("thesis.csv", "verdict", "text", key=key)})
+    """The thesis's verdict, one word (thesis.csv's verdict before any ';')."""
+    return Claim(f"first.{key}.thesis", "{word}",
+                 {"verdict": q("thesis.csv", "verdict", "text", key=key),
+                  "word": "verdict.split(';')[0].strip()"}, f"word in {VERDICTS!r}")
 
 
 def value(key, name, agg="one"):
@@ -34,15 +50,39 @@ def speed_lookups(scene):
     return {"solvers": q(f, "solver", "texts"), "steps": q(f, "step_s", "list"), "errors": q(f, "error", "list"),
             "cost": q(f, "wall_per_sim_second", "list"), "wmin": q(f, "wall_seconds_min", "list"),
             "wmax": q(f, "wall_seconds_max", "list"), "timed": q(f, "timed_sim_seconds", "list"),
-            "names": "[s + ' at ' + num(h) for s, h in zip(solvers, steps)]",
+            "names": "[s + ' @ ' + num(h) for s, h in zip(solvers, steps)]",
             "lo": "[a / t for a, t in zip(wmin, timed)]", "hi": "[a / t for a, t in zip(wmax, timed)]"}
 
 
-def cheapest_cell(scene):
+def speed_lookups(scene):
+    f = f"speed-{scene}.csv"
+    return {"solvers": q(f, "solver", "texts"), "steps": q(f, "step_s", "list"), "errors": q(f, "error", "list"),
+            "cost": q(f, "wall_per_sim_second", "list"), "wmin": q(f, "wall_seconds_min", "list"),
+            "wmax": q(f, "wall_seconds_max", "list"), "timed": q(f, "timed_sim_seconds", "list"),
+            "names": "[s + ' @ ' + num(h) for s, h in zip(solvers, steps)]",
+            "lo": "[a / t for a, t in zip(wmin, timed)]", "hi": "[a / t for a, t in zip(wmax, timed)]"}
+
+
+def cheapest_cells(scene):
+    """The cheapest setting within 1%, judged by wall time as
+    speed_accuracy.py judges it: a tie within the timing's scatter links to
+    the speed section; one setting gives its CPU cost over its timed runs
+    (runs.csv)."""
     values = speed_lookups(scene)
-    values.update(c1="cheapest(names, errors, cost, lo, hi, 0.01, 'QuickStep 20 at 0.001')",
-                  c01="cheapest(names, errors, cost, lo, hi, 0.001, 'QuickStep 20 at 0.001')")
-    return Claim(f"first.{scene}.cheapest", "1%: {c1}; 0.1%: {c01}", values)
+    values.update(tied="cheapest_set(errors, cost, lo, hi, 0.01)")
+    tie = Claim(f"first.{scene}.cheapest.tie", f"[tie (see §{TIES_SECTION})](#exp-speed-{scene})", values,
+                "len(tied) > 1")
+    runs = {name: q("runs.csv", column, agg, program=scene, timed=1) for name, column, agg in (
+        ("args", "arguments", "texts"), ("cpu", "cpu_seconds", "list"), ("sim", "sim_seconds", "list"),
+        ("share", "cpu_share", "list"), ("repeat", "repeat", "list"))}
+    one = dict(values, **runs, i="tied[0]", scene_options=repr(SPEED_OPTIONS[scene]),
+               c="runs_cost([args, cpu, sim, share, repeat], speed_options(solvers[i], steps[i], scene_options), "
+                 "timed[i])")
+    single = Claim(f"first.{scene}.cheapest", "{name}: {m:k2} [{a:k2}-{b:k2}]",
+                   dict(one, name="names[i]", m="c[0]", a="c[1]", b="c[2]"), "len(tied) == 1 and c[3] > 1")
+    once = Claim(f"first.{scene}.cheapest.once", "{name}: {m:k2} (1 run)", dict(one, name="names[i]", m="c[0]"),
+                 "len(tied) == 1 and c[3] == 1")
+    return [tie, single, once]
 
 
 def step_decides(scene):
@@ -76,21 +116,20 @@ def solver_decides(scene):
                  values, "solver_span > 10 * step_span")
 
 
-def peer_cell(scene, quantity, higher_better, figure="{v:n}"):
-    """The best engine other than ODE at step 0.001 in peers.csv; no cell
-    when no other engine ran the scene."""
+def peer_cell(scene, higher_better, figure="{v:k2}"):
+    """The best engine other than ODE at step 0.001 in peers.csv, its figure
+    and CPU cost (one run per point: no range); no cell when no other engine ran the scene."""
     f = "peers.csv"
     values = {"engines": q(f, "engine", "texts", scene=scene, step=0.001),
               "settings": q(f, "setting", "texts", scene=scene, step=0.001),
               "vals": q(f, "value", "list", scene=scene, step=0.001),
-              "costs": q(f, "wall_s_per_sim_s", "list", scene=scene, step=0.001),
+              "costs": q(f, "cpu_s_per_sim_s", "list", scene=scene, step=0.001),
               "others": "[i for i, e in enumerate(engines) if e != 'ode' and vals[i] is not None]",
               "i": f"others[best_of([engines[j] for j in others], [vals[j] for j in others], "
                    f"[costs[j] for j in others], {higher_better})]",
-              "name": "engines[i] + ' (' + settings[i] + ')'",
+              "name": "engines[i]",
               "v": "vals[i]", "c": "costs[i]"}
-    return Claim(f"first.{scene}.peer", "{name}: " + figure + " " + quantity + " at {c:n2} wall s per simulated s",
-                 values, "len(others) > 0")
+    return Claim(f"first.{scene}.peer", "{name}: " + figure + ", {c:k2}", values, "len(others) > 0")
 
 
 STACKS = {"ten": q("limit-test5.csv", "tallest_plates", "list", setting="simple, 10 iterations"),
@@ -102,111 +141,160 @@ def CCD_COST(column):
     return q("remedy-test10.csv", column, kind="cost", setting="--ccd", launch_velocity=200)
 
 
+
+def definition(scene, text, quantity, **setting):
+    """A row's definition cell: `text`, and (for check_report.py) the quantity
+    and settings it fixes, as constant values of its claim."""
+    values = {"quantity": repr(quantity), **{k: repr(v) for k, v in setting.items()}}
+    return Claim(f"first.{scene}.definition", text, values), dict(quantity=quantity, **setting)
+
+
 def rows():
-    """(scene, definition, [claims per column...]) for test0 to test10; a
-    list of claims in a cell is alternatives, the first that holds shown."""
+    """(scene, definition, figure, thesis, decides, cheapest, peer) for test0
+    to test10: each a list of alternative claims (the first that holds
+    shown); cheapest and peer None where no such experiment exists."""
+    test3_runs = {"v": value("test3", "real_time_factor"),
+                  "lo": q("thesis-values.csv", "value_min", key="test3", name="real_time_factor"),
+                  "hi": q("thesis-values.csv", "value_max", key="test3", name="real_time_factor"),
+                  "n": q("thesis-values.csv", "repeats", key="test3", name="real_time_factor")}
+    plain6 = "QuickStep 20, step 0.001 (plain)"
     return [
-        ("test0", "bodies at rest on the platform; the thesis gives no figure", [
-            [figure_from_thesis("test0", "test0_hang", "resting", "{v:n} bodies at rest after 20 s")], [thesis_cell("test0_hang")], [], [], []]),
-        ("test1", "largest |apex2 / apex1 - e^2| over the balls, e >= 0.1", [
-            [figure_from_thesis("test1", "test1", "rebound_error")], [thesis_cell("test1")],
-            [Claim("first.test1.decides", "CFM: at CFM 1e-3 {b:n} balls rebound", {"b": value("test1", "bounced_cfm")})],
-            [], [peer_cell("test1", "largest rebound error", False)]]),
-        ("test2", "total energy (max - min) / max over 60 s, as the thesis", [
-            [figure_from_thesis("test2", "test2", "variation", "{v:p2}")], [thesis_cell("test2")],
-            [step_decides("test2"), solver_decides("test2")], [cheapest_cell("test2")],
-            [peer_cell("test2", "largest |E - E0| / E0", False)]]),
-        ("test3", "simulated seconds per wall second, physics only (median of the repeats)", [
-            [Claim("first.test3.figure", "{v:n} x real time (runs {lo:n} to {hi:n}, {n:n} runs)",
-                   {"v": value("test3", "real_time_factor"), "lo": q("thesis-values.csv", "value_min", key="test3",
-                                                                      name="real_time_factor"),
-                    "hi": q("thesis-values.csv", "value_max", key="test3", name="real_time_factor"),
-                    "n": q("thesis-values.csv", "repeats", key="test3", name="real_time_factor")}, "n > 1"),
-             figure_from_thesis("test3", "test3", "real_time_factor", "{v:n} x real time (one run)")],
-            [thesis_cell("test3")],
-            [Claim("first.test3.decides", "auto-disable and iterations: without auto-disable {a:n} x at 8 "
-                   "iterations, {b:n} x at 20", {"a": value("test3", "real_time_factor_8"),
-                                                 "b": value("test3", "real_time_factor_20")})], [],
-            [peer_cell("test3", "of the dominoes fallen in 20 s", True, "{v:p2}")]]),
-        ("test4", "heaviest big cube (kg) held on the 5 kg cube, QuickStep 20, step 0.001", [
-            [Claim("first.test4.figure", "{v:n} kg held {h:n} s", {
-                "v": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.001),
-                "h": q("limit-test4.csv", "hold_seconds", solver="QuickStep 20", step_s=0.001)})],
-            [thesis_cell("test4_fast")],
-            [Claim("first.test4.decides", "the solver: dWorldStep holds {dw:n} kg at step 0.001; the step: "
-                   "QuickStep 20 holds {fine:n} kg at 0.0001",
-                   {"dw": q("limit-test4.csv", "heaviest_held_kg", solver="dWorldStep", step_s=0.001),
-                    "fine": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.0001)})],
-            [], [peer_cell("test4", "kg", True)]]),
-        ("test5", "tallest stack (plates) aligned and in real time, simple space, 20 iterations, step 0.001", [
-            [Claim("first.test5.figure", "median {v:n} plates ({all:r} over {n:n} searches)", {
-                "v": q("limit-test5.csv", "tallest_plates", "median", setting="simple, 20 iterations"),
-                "all": q("limit-test5.csv", "tallest_plates", "list", setting="simple, 20 iterations"),
-                "n": q("limit-test5.csv", "tallest_plates", "count", setting="simple, 20 iterations")}, "n > 1"),
-             Claim("first.test5.figure.one", "{v:n} plates (one search)", {
-                 "v": q("limit-test5.csv", "tallest_plates", setting="simple, 20 iterations")})],
-            [thesis_cell("test5")],
-            [Claim("first.test5.decides", "iterations: 10 iterations {ten:r} plates, 20 iterations {twenty:r} "
-                   "(simple space, every search)", STACKS, "min(ten) > max(twenty) or min(twenty) > max(ten)"),
-             Claim("first.test5.decides.overlap", "no choice measured stands out: 10 iterations {ten:r} plates, "
-                   "20 iterations {twenty:r}, the ranges overlap (simple space); the spaces at 20 iterations "
-                   "{spaces:r}", STACKS, "True")], [], [peer_cell("test5", "plates", True)]]),
-        ("test6", "seconds the ball-joint axis system stays upright, QuickStep 20 (median over seeds)", [
-            [Claim("first.test6.figure", "{v:n} s (seeds {all:r}, {n:n} seeds)",
-                   {"v": q("remedy-test6.csv", "seconds_upright", "median", step_s=0.001,
-                           setting="QuickStep 20, step 0.001 (plain)"),
-                    "all": q("remedy-test6.csv", "seconds_upright", "list", setting="QuickStep 20, step 0.001 (plain)"),
-                    "n": q("remedy-test6.csv", "seconds_upright", "count", setting="QuickStep 20, step 0.001 (plain)")}),
-             figure_from_thesis("test6", "test6", "seconds_upright", "{v:n} s")],
-            [thesis_cell("test6")],
-            [Claim("first.test6.decides", "the solver: over the seeds dWorldStep stays up {dw:r} s, QuickStep 20 {qs:r} s",
-                   {"dw": q("remedy-test6.csv", "seconds_upright", "list", setting="dWorldStep, step 0.001 (remedy)"),
-                    "qs": q("remedy-test6.csv", "seconds_upright", "list", setting="QuickStep 20, step 0.001 (plain)")},
-                   "min(dw) > max(qs)")], [], [peer_cell("test6", "s upright (of 60)", True)]]),
-        ("test7", "largest joint error (m) over 3 throws", [
-            [figure_from_thesis("test7", "test7", "joint_error", "{v:n} m")], [thesis_cell("test7")], [], [],
-            [peer_cell("test7", "m joint error (no angular speed cap)", False)]]),
-        ("test8", "largest |l - l0| / l0 of the hinge over 60 s, 5000 kg bob, ERP 0.4, CFM 1e-4", [
-            [figure_from_thesis("test8", "test8_a", "elongation")], [thesis_cell("test8_a")],
-            [Claim("first.test8.decides", "CFM: {c0:n2} at CFM 0, {c4:n2} at 1e-4 (ERP 0.4)",
-                   {"c0": q("limit-test8.csv", "max_relative_elongation", sweep="cfm", erp=0.4, cfm=0),
-                    "c4": q("limit-test8.csv", "max_relative_elongation", sweep="cfm", erp=0.4, cfm=0.0001)},
-                   "c4 > 10 * c0"),
-             solver_decides("test8"), step_decides("test8")],
-            [cheapest_cell("test8")], [peer_cell("test8", "|l - l0| / l0", False)]]),
-        ("test9", "apex error after 20 bounces / drop height, ERP 0.2, CFM 0", [
-            [figure_from_thesis("test9", "test9_a", "apex_error_20")], [thesis_cell("test9_a")],
-            [solver_decides("test9"), step_decides("test9")], [cheapest_cell("test9")],
-            [peer_cell("test9", "apex error", False)]]),
-        ("test10", "highest launch velocity (m/s) with every cube stopped by the wall, step 0.001", [
-            [Claim("first.test10.figure", "{v:n} m/s", {"v": q("limit-test10.csv", "max_velocity", step_s=0.001)}),
-             figure_from_thesis("test10", "test10_a", "max_velocity", "{v:n} m/s")],
-            [thesis_cell("test10_a")],
-            [Claim("first.test10.decides", "the step ({a:n} / {b:n} / {c:n} m/s at step 0.01 / 0.001 / 0.0001) "
-                   "unless `--ccd`: {d:n4} m/s at 0.001 (the scan's limit), its wall time per launch {e:p2} against plain "
-                   "(pairs {lo:p2} to {hi:p2}, 200 m/s launches)",
-                   {"a": q("limit-test10.csv", "max_velocity", step_s=0.01),
-                    "b": q("limit-test10.csv", "max_velocity", step_s=0.001),
-                    "c": q("limit-test10.csv", "max_velocity", step_s=0.0001),
-                    "d": q("remedy-test10.csv", "max_velocity", kind="scan", setting="--ccd",
-                           case="face on, fixed launch point", step_s=0.001),
-                    "e": CCD_COST("extra_wall_per_launch"), "lo": CCD_COST("extra_wall_per_launch_min"),
-                    "hi": CCD_COST("extra_wall_per_launch_max")}, "a < b < c < d"),
-             Claim("first.test10.decides.step", "the step ({a:n} / {b:n} / {c:n} m/s at step 0.01 / 0.001 / 0.0001)",
-                   {"a": q("limit-test10.csv", "max_velocity", step_s=0.01),
-                    "b": q("limit-test10.csv", "max_velocity", step_s=0.001),
-                    "c": q("limit-test10.csv", "max_velocity", step_s=0.0001)}, "a < b < c")],
-            [], [peer_cell("test10", "m/s", True)]]),
+        ("test0", definition("test0", "bodies at rest after 20 s", "bodies at rest"),
+         [figure_from_thesis("test0", "test0_hang", "resting", "{v:n} bodies")], [thesis_cell("test0_hang")],
+         [], None, None),
+        ("test1", definition("test1", "max |apex2/apex1 - e^2|, e >= 0.1", "rebound error"),
+         [figure_from_thesis("test1", "test1", "rebound_error", "{v:k2}")], [thesis_cell("test1")],
+         [Claim("first.test1.decides", "CFM: at CFM 1e-3 {b:n} balls rebound", {"b": value("test1", "bounced_cfm")})],
+         None, [peer_cell("test1", False)]),
+        ("test2", definition("test2", "energy (max-min)/max, 60 s, CFM 0", "energy (max-min)/max",
+                             cfm=0, seconds=60),
+         [figure_from_thesis("test2", "test2", "variation", "{v:p2}")], [thesis_cell("test2")],
+         [step_decides("test2"), solver_decides("test2")], cheapest_cells("test2"), [peer_cell("test2", False)]),
+        ("test3", definition("test3", "simulated s per wall s", "real-time factor"),
+         [Claim("first.test3.figure", "{v:n}x ({lo:n}-{hi:n}, {n:n} runs)", test3_runs, "n > 1"),
+          figure_from_thesis("test3", "test3", "real_time_factor", "{v:n}x (1 run)")],
+         [thesis_cell("test3")],
+         [Claim("first.test3.decides", "auto-disable and iterations: without auto-disable {a:n} x at 8 "
+                "iterations, {b:n} x at 20", {"a": value("test3", "real_time_factor_8"),
+                                              "b": value("test3", "real_time_factor_20")})],
+         None, [peer_cell("test3", True, "{v:p2}")]),
+        ("test4", definition("test4", "heaviest cube held 20 s, QuickStep 20, 0.001", "heaviest cube held"),
+         [Claim("first.test4.figure", "{v:n} kg", {
+             "v": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.001)})],
+         [thesis_cell("test4_fast")],
+         [Claim("first.test4.decides", "the solver: dWorldStep holds {dw:n} kg at step 0.001; the step: "
+                "QuickStep 20 holds {fine:n} kg at 0.0001",
+                {"dw": q("limit-test4.csv", "heaviest_held_kg", solver="dWorldStep", step_s=0.001),
+                 "fine": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.0001)})],
+         None, [peer_cell("test4", True, "{v:k2} kg")]),
+        ("test5", definition("test5", "tallest stack in real time, 20 iterations", "tallest stack"),
+         [Claim("first.test5.figure", "{v:n} plates (median, {n:n})", {
+             "v": q("limit-test5.csv", "tallest_plates", "median", setting="simple, 20 iterations"),
+             "n": q("limit-test5.csv", "tallest_plates", "count", setting="simple, 20 iterations")}, "n > 1"),
+          Claim("first.test5.figure.one", "{v:n} plates (1 search)", {
+              "v": q("limit-test5.csv", "tallest_plates", setting="simple, 20 iterations")})],
+         [thesis_cell("test5")],
+         [Claim("first.test5.decides", "iterations: 10 iterations {ten:r} plates, 20 iterations {twenty:r} "
+                "(simple space, every search)", STACKS, "min(ten) > max(twenty) or min(twenty) > max(ten)"),
+          Claim("first.test5.decides.overlap", "no choice measured stands out: 10 iterations {ten:r} plates, "
+                "20 iterations {twenty:r}, the ranges overlap (simple space); the spaces at 20 iterations "
+                "{spaces:r}", STACKS, "True")], None, [peer_cell("test5", True, "{v:n} plates")]),
+        ("test6", definition("test6", "seconds upright, QuickStep 20, 0.001", "seconds upright"),
+         [Claim("first.test6.figure", "{v:n} s (median, {n:n} seeds)",
+                {"v": q("remedy-test6.csv", "seconds_upright", "median", step_s=0.001, setting=plain6),
+                 "n": q("remedy-test6.csv", "seconds_upright", "count", setting=plain6)}),
+          figure_from_thesis("test6", "test6", "seconds_upright", "{v:n} s")],
+         [thesis_cell("test6")],
+         [Claim("first.test6.decides", "the solver: over the seeds dWorldStep stays up {dw:r} s, QuickStep 20 {qs:r} s",
+                {"dw": q("remedy-test6.csv", "seconds_upright", "list", setting="dWorldStep, step 0.001 (remedy)"),
+                 "qs": q("remedy-test6.csv", "seconds_upright", "list", setting=plain6)},
+                "min(dw) > max(qs)")], None, [peer_cell("test6", True, "{v:n} s")]),
+        ("test7", definition("test7", "joint error (m), 3 throws, speed cap on", "joint error",
+                             angular_speed_cap="on"),
+         [figure_from_thesis("test7", "test7", "joint_error", "{v:k2} m")], [thesis_cell("test7")], [],
+         None, [peer_cell("test7", False, "{v:k2} m")]),
+        ("test8", definition("test8", "max |l-l0|/l0, 60 s, ERP 0.4, CFM 1e-4", "relative elongation",
+                             erp=0.4, cfm=0.0001, seconds=60, bob_mass_kg=5000),
+         [figure_from_thesis("test8", "test8_a", "elongation", "{v:k2}")], [thesis_cell("test8_a")],
+         [Claim("first.test8.decides", "CFM: {c0:n2} at CFM 0, {c4:n2} at 1e-4 (ERP 0.4)",
+                {"c0": q("limit-test8.csv", "max_relative_elongation", sweep="cfm", erp=0.4, cfm=0),
+                 "c4": q("limit-test8.csv", "max_relative_elongation", sweep="cfm", erp=0.4, cfm=0.0001)},
+                "c4 > 10 * c0"),
+          solver_decides("test8"), step_decides("test8")],
+         cheapest_cells("test8"), [peer_cell("test8", False)]),
+        ("test9", definition("test9", "20th apex error, ERP 0.2, CFM 0", "apex error after 20 bounces",
+                             erp=0.2, cfm=0),
+         [figure_from_thesis("test9", "test9_a", "apex_error_20", "{v:k2}")], [thesis_cell("test9_a")],
+         [solver_decides("test9"), step_decides("test9")], cheapest_cells("test9"), [peer_cell("test9", False)]),
+        ("test10", definition("test10", "fastest cube stopped, step 0.001", "velocity stopped"),
+         [Claim("first.test10.figure", "{v:n} m/s", {"v": q("limit-test10.csv", "max_velocity", step_s=0.001)}),
+          figure_from_thesis("test10", "test10_a", "max_velocity", "{v:n} m/s")],
+         [thesis_cell("test10_a")],
+         [Claim("first.test10.decides", "the step ({a:n} / {b:n} / {c:n} m/s at step 0.01 / 0.001 / 0.0001) "
+                "unless `--ccd`: {d:n4} m/s at 0.001 (the scan's limit), its wall time per launch {e:p2} against plain "
+                "(pairs {lo:p2} to {hi:p2}, 200 m/s launches)",
+                {"a": q("limit-test10.csv", "max_velocity", step_s=0.01),
+                 "b": q("limit-test10.csv", "max_velocity", step_s=0.001),
+                 "c": q("limit-test10.csv", "max_velocity", step_s=0.0001),
+                 "d": q("remedy-test10.csv", "max_velocity", kind="scan", setting="--ccd",
+                        case="face on, fixed launch point", step_s=0.001),
+                 "e": CCD_COST("extra_wall_per_launch"), "lo": CCD_COST("extra_wall_per_launch_min"),
+                 "hi": CCD_COST("extra_wall_per_launch_max")}, "a < b < c < d"),
+          Claim("first.test10.decides.step", "the step ({a:n} / {b:n} / {c:n} m/s at step 0.01 / 0.001 / 0.0001)",
+                {"a": q("limit-test10.csv", "max_velocity", step_s=0.01),
+                 "b": q("limit-test10.csv", "max_velocity", step_s=0.001),
+                 "c": q("limit-test10.csv", "max_velocity", step_s=0.0001)}, "a < b < c")],
+         None, [peer_cell("test10", True, "{v:k2} m/s")]),
     ]
 
 
+NO_SWEEP = "n/a: not swept"
+NO_PEERS = "n/a: no engine ran it"
+
+
+def reads_elsewhere(data, claims, setting):
+    """How the lookups of `claims` read another quantity or setting than the
+    row's definition (another quantity said first), or None (readings.py)."""
+    found = []
+    for claim in claims:
+        for spec in claim.values.values():
+            if not isinstance(spec, dict) or spec["file"] in readings.NOT_READINGS:
+                continue
+            where = spec.get("where", {})
+            rows = [row for row in data.rows(spec["file"])
+                    if all(_matches(row.get(k), v) for k, v in where.items())]
+            read = readings.facts(spec, rows)
+            other_quantity = "quantity" in read and read["quantity"] != setting["quantity"]
+            phrases = readings.differences(setting, read)  # another quantity comes first
+            found += [(0 if other_quantity and i == 0 else 1, phrase) for i, phrase in enumerate(phrases)]
+    return sorted(found, key=lambda kind_phrase: kind_phrase[0])[0][1] if found else None
+
+
+def cell(sentences, claims, setting, source, absent):
+    """A cell: the first claim that holds, when its source reads the row's
+    quantity at the row's setting; else "n/a: <why>"."""
+    if claims is None:
+        return absent
+    other = reads_elsewhere(sentences.data, claims, setting)
+    if other:
+        return f"n/a: {source} {other.split(', not ')[0]}"
+    return sentences.say(*claims) or absent
+
+
 def table(sentences):
-    """The markdown table; `sentences` (claims.Sentences) records each
-    claim shown."""
+    """The first screen's markdown table; `sentences` (claims.Sentences)
+    records each claim shown."""
     body = []
-    for scene, definition, cells in rows():
-        row = [scene, definition]
-        for alternatives in cells:
-            row.append((sentences.say(*alternatives) if alternatives else None) or NOT_MEASURED)
-        body.append(row)
+    for scene, (defined, setting), figure, thesis, _, cheapest, peer in rows():
+        body.append([scene, sentences.say(defined), cell(sentences, figure, setting, "ODE reads", "n/a: not measured"),
+                     cell(sentences, thesis, setting, "the thesis reads", "untested"),
+                     cell(sentences, cheapest, setting, "sweep reads", NO_SWEEP),
+                     cell(sentences, peer, setting, "engines read", NO_PEERS)])
     return md.table(COLUMNS, body)
+
+
+def decides_table(sentences, place):
+    """What decides each figure, measured: a section below the first screen."""
+    body = [[scene, sentences.say(*decides, place=place) or "not measured in this report"]
+            for scene, _, _, _, decides, _, _ in rows()]
+    return md.table(DECIDES_COLUMNS, body)

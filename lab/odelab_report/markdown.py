@@ -24,6 +24,16 @@ def num(value, digits=3, unit=""):
     return text + (" " + unit if unit else "")
 
 
+def short(value, digits=2):
+    """A number in few characters, for the first table: `digits`
+    significant digits, 9.3e-5 rather than 9.3e-05."""
+    text = num(value, digits)
+    if "e" in text:
+        mantissa, exponent = text.split("e")
+        text = f"{mantissa}e{int(exponent)}"
+    return text
+
+
 def pct(fraction, digits=2):
     """A fraction as a percentage with `digits` significant digits (at least
     every digit before the point: 100%, not 1e+02%)."""
