@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "StateHash.h"
 #include "WorldSettings.h"
 #include "shared/SceneConstants.h"
 
@@ -54,23 +55,6 @@ dBodyID addBall(dWorldID world, dSpaceID space, double radius, double mass, doub
   return body;
 }
 
-// The programs' state_hash (AbstractWindow::stateHash): equal hashes show
-// the bare loop steps the very scene the program does.
-std::uint64_t stateHash(const std::vector<dBodyID>& bodies) {
-  std::uint64_t hash = 1469598103934665603ull;
-  auto mix = [&hash](const dReal* values, int count) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values);
-    for (size_t i = 0; i < count * sizeof(dReal); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
-  };
-  for (const dBodyID body : bodies) {
-    mix(dBodyGetPosition(body), 3);
-    mix(dBodyGetQuaternion(body), 4);
-    mix(dBodyGetLinearVel(body), 3);
-    mix(dBodyGetAngularVel(body), 3);
-  }
-  return hash & ((1ull << 52) - 1);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -106,12 +90,16 @@ int main(int argc, char** argv) {
     bodies.push_back(addBall(world, space, BALL_RADIUS, BALL_MASS, 0.0, START_HEIGHT));
   }
   const long long steps = std::llround(seconds / settings.step);
+  double simulatedTime = 0.0;  // summed step by step, as the programs do
   for (long long i = 0; i < steps; ++i) {
     dSpaceCollide(space, &scene, &nearCallback);
     dWorldQuickStep(world, settings.step);
     dJointGroupEmpty(scene.contacts);
+    simulatedTime += settings.step;
   }
-  std::printf("steps = %lld\nstate_hash = %llu\n", steps, static_cast<unsigned long long>(stateHash(bodies)));
+  // The programs' state_hash: equal hashes show the bare loop steps the very scene the program does.
+  const std::uint64_t hash = odelab::stateHash(world, steps, simulatedTime, bodies);
+  std::printf("steps = %lld\nstate_hash = %llu\n", steps, static_cast<unsigned long long>(hash));
   dJointGroupDestroy(scene.contacts);
   dSpaceDestroy(space);
   dWorldDestroy(world);

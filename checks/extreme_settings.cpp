@@ -34,6 +34,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <iomanip>
@@ -260,9 +261,12 @@ void classify(Run& run, bool strictOdeErrors) {
 }
 
 void removeTree(const std::string& dir) {
-  for (const char* name : {"stdout.txt", "stderr.txt", "metrics.json", "metrics.json.tmp", "Test2_output.txt",
-                           "Test8_output.txt"})
+  for (const char* name : {"stdout.txt", "stderr.txt", "metrics.json", "Test2_output.txt", "Test8_output.txt"})
     std::remove((dir + "/" + name).c_str());
+  // A run cut short can leave the metrics' temporary file, .metrics.json.XXXXXX.
+  std::error_code ignored;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ignored))
+    if (entry.path().filename().string().rfind(".metrics.json.", 0) == 0) std::filesystem::remove(entry.path(), ignored);
   rmdir(dir.c_str());
 }
 

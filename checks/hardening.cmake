@@ -51,3 +51,12 @@ if(XVFB_RUN)
   odelab_refusals(test0 window_unreadable_shader_exits_5 window 5 --shader-dir=<unreadable-shaders>)
   odelab_refusals(test0 window_unusable_font_exits_5 window 5 --font=/etc/passwd --font=${_fixtures})
 endif()
+
+# ---- the promises hold ------------------------------------------------------
+# doc/hardening.md's "What you can rely on": every promise names checks,
+# and each is a test this build lists (scripts/promises_name_their_checks.py
+# reads the test2/test8_rest and BlowUp.* shorthands).
+add_test(NAME hardening_promises_name_listed_checks
+         COMMAND ${Python3_EXECUTABLE} ${ODELAB_CHECK_SCRIPTS}/promises_name_their_checks.py
+                 ${PROJECT_SOURCE_DIR}/doc/hardening.md ${CMAKE_CTEST_COMMAND} ${CMAKE_BINARY_DIR})
+set_tests_properties(hardening_promises_name_listed_checks PROPERTIES LABELS hardening TIMEOUT 120)

@@ -9,6 +9,19 @@ foreach(_program IN LISTS ODELAB_PROGRAMS)
   set_tests_properties(${_program}_knob_bounds PROPERTIES TIMEOUT 300 LABELS hardening)
 endforeach()
 
+# What --list-settings says is what the options do, for every program at
+# once: each setting names its option (mu and max_contacts too), its kind,
+# a range holding its default (max "inf" where the option takes inf), and
+# the option takes that default and refuses a value just outside with
+# status 2 (scripts/settings_listing.py). Parsing only.
+set(_listing_programs)
+foreach(_program IN LISTS ODELAB_PROGRAMS)
+  list(APPEND _listing_programs $<TARGET_FILE:${_program}>)
+endforeach()
+add_test(NAME every_program_lists_its_settings_as_its_options_take_them
+         COMMAND ${Python3_EXECUTABLE} ${ODELAB_CHECK_SCRIPTS}/settings_listing.py ${_listing_programs})
+set_tests_properties(every_program_lists_its_settings_as_its_options_take_them PROPERTIES TIMEOUT 300 LABELS hardening)
+
 # An interval knob holds at least one step, whichever scene declares it:
 # spawning, sampling and throwing all refuse an interval below the step,
 # and test0 an interval so short its objects pile up at the spawn point.

@@ -262,6 +262,12 @@ if(ODELAB_WEB_PEERS_READY)
   # Rapier without CCD lets a cube at 250 m/s through; its soft CCD stops it.
   odelab_peer_check(peers_rapier_wall_passed rapier_lab LABEL peers EXPECT passed_through==1 ARGS --scene test10 --velocity 250)
   odelab_peer_check(peers_rapier_ccd_stops rapier_lab LABEL peers EXPECT stopped==1 ARGS --scene test10 --velocity 250 --ccd)
+  # Rapier clamps every speed to 400 m/s x its lengthUnit (1000 on test10) in
+  # its step: a launch asked at 1e7 m/s starts at 4e5 m/s (measured), and
+  # the metrics say so rather than report a stop at 1e7 m/s.
+  odelab_peer_check(peers_rapier_clamped_launch_reports_speed_reached rapier_lab LABEL peers
+                   EXPECT launch_velocity==400000 launch_velocity_asked==1e7 launch_velocity_clamped==1 launches==1
+                   ARGS --scene test10 --velocity 1e7)
   # test1, fifty balls of restitution 0 to 1 (rebound apex ratio against e^2,
   # balls with e >= 0.1): Rapier reproduces every coefficient within 2e-3
   # (measured 8.6e-4); Havok within 2% (measured 1.1%, the e = 1 ball); Jolt

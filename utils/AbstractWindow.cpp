@@ -206,10 +206,16 @@ void AbstractWindow::useContactChoices(double defaultMu) {
   };
   bindKey(SDLK_f, "F", "lower the contact friction mu (ladder 0 ... 5, infinite)", [step](int) { step(-1); });
   bindKey(SDLK_g, "G", "raise the contact friction mu (ladder 0 ... 5, infinite)", [step](int) { step(+1); });
-  // --mu and --max-contacts are ContactChoices' own options (mu takes inf).
-  declare(Knob::real(ContactChoices::MU_KNOB, "contact friction mu (G: infinite)", "", contact_.mu, 0.0, ContactChoices::PANEL_MU_MAX));
-  declare(Knob::real(ContactChoices::MAX_CONTACTS_KNOB, "contacts per pair", "", contact_.maxContacts, 1.0,
-                     double(ContactChoices::MOST_CONTACTS)));
+  // --mu and --max-contacts are ContactChoices' own options (mu takes inf);
+  // the knobs name them and their true ranges, for --list-settings and the panel.
+  declare(Knob::real(ContactChoices::MU_KNOB, "contact friction mu (G: infinite)", "", contact_.mu, 0.0, 0.0)
+              .upToInfinity(ContactChoices::PANEL_MU_MAX)
+              .withOption("--mu", ContactChoices::MU_HELP)
+              .optionParsedByOwner());
+  declare(Knob::integer(ContactChoices::MAX_CONTACTS_KNOB, "contacts per pair", contact_.maxContacts, 1,
+                        ContactChoices::MOST_CONTACTS)
+              .withOption("--max-contacts", ContactChoices::MAX_CONTACTS_HELP)
+              .optionParsedByOwner());
 }
 
 void AbstractWindow::addContactOptions(CLI::App& app) {

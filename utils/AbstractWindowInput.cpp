@@ -34,7 +34,7 @@ Knob& AbstractWindow::declare(Knob declared) {
     rewind_.keep(*knob.value);
   // Every knob has its panel row, so that whatever the command line sets
   // can be tuned there too.
-  parameters_.add({&knob, knob.offAtZero ? 0.0 : knob.min, knob.max});
+  parameters_.add({&knob, knob.offAtZero ? 0.0 : knob.min, knob.panelMax()});
   panelKnobs_.push_back(&knob);
   if (knob.key != SDLK_UNKNOWN) {
     Knob* stepped = &knob;

@@ -11,7 +11,7 @@
 
 namespace odelab {
 
-int ContactChoices::contactLimit() const { return static_cast<int>(std::lround(maxContacts)); }
+int ContactChoices::contactLimit() const { return maxContacts; }
 
 const std::vector<double>& ContactChoices::muLadder() {
   static const std::vector<double> ladder{0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 5.0, dInfinity};
@@ -49,8 +49,7 @@ std::string ContactChoices::optionText(double value) {
 
 void ContactChoices::addOptions(CLI::App& app) {
   app.add_option_function<std::string>(
-         "--mu", [this](const std::string& text) { mu = parseMu(text); },
-         "contact friction coefficient: a number >= 0, or inf for infinite friction (never slides)")
+         "--mu", [this](const std::string& text) { mu = parseMu(text); }, MU_HELP)
       ->check(CLI::Validator(
           [](std::string& text) {
             return std::isnan(parseMu(text)) ? "'" + text + "' is not a number >= 0 or inf" : std::string();
@@ -58,8 +57,7 @@ void ContactChoices::addOptions(CLI::App& app) {
           "MU"))
       ->default_str(std::isinf(mu) ? "inf" : muText(mu));
   app.add_option_function<int>(
-         "--max-contacts", [this](int count) { maxContacts = count; },
-         "contact points dCollide may return per colliding pair")
+         "--max-contacts", [this](int count) { maxContacts = count; }, MAX_CONTACTS_HELP)
       ->check(CLI::Range(1, MOST_CONTACTS))
       ->default_str(std::to_string(contactLimit()));
 }

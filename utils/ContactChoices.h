@@ -24,8 +24,7 @@ struct ContactChoices {
   static constexpr double PANEL_MU_MAX = 10.0;
 
   double mu;  // >= 0, or dInfinity
-  // A double so the panel can set it; always a whole number in 1 ... 64.
-  double maxContacts = DEFAULT_MAX_CONTACTS;
+  int maxContacts = DEFAULT_MAX_CONTACTS;  // 1 ... MOST_CONTACTS
 
   int contactLimit() const;
   // The ladder F / G walk: 0 ... 5, then dInfinity.
@@ -47,6 +46,10 @@ struct ContactChoices {
   // A value of one of them as its option reads it back exactly: mu's
   // dInfinity as "inf", a number in its shortest exact form.
   static std::string optionText(double value);
+  // The options' help, also the knobs' (the panel's tooltip).
+  static constexpr const char* MU_HELP =
+      "contact friction coefficient: a number >= 0, or inf for infinite friction (never slides)";
+  static constexpr const char* MAX_CONTACTS_HELP = "contact points dCollide may return per colliding pair";
   // --mu and --max-contacts, with the scene's defaults in the help.
   void addOptions(CLI::App& app);
 };

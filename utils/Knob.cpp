@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 #include "FormatValue.h"
 #include "WorldSettings.h"
@@ -89,6 +90,17 @@ Knob& Knob::onlyWith(std::string flag) {
   return *this;
 }
 
+Knob& Knob::upToInfinity(double sliderTop) {
+  max = std::numeric_limits<double>::infinity();
+  sliderMax = sliderTop;
+  return *this;
+}
+
+Knob& Knob::optionParsedByOwner() {
+  ownParser = true;
+  return *this;
+}
+
 double Knob::get() const { return count ? *count : *value; }
 
 std::string Knob::set(double newValue) {
@@ -112,21 +124,24 @@ double Knob::next(int direction) const {
 }
 
 bool Knob::accepts(double candidate) const {
-  if (!std::isfinite(candidate)) return false;
+  // Infinity only where the range reaches it (max is infinity).
+  if (std::isnan(candidate) || candidate == -std::numeric_limits<double>::infinity()) return false;
   if (offAtZero && candidate == 0) return true;
   if (kind == KnobKind::Integer && candidate != std::floor(candidate)) return false;
   return candidate >= min && candidate <= max;
 }
 
 std::string Knob::rangeText() const {
-  const std::string range = "[" + jsonNumber(min) + ", " + jsonNumber(max) + "]";
+  const auto bound = [](double value) { return std::isinf(value) ? std::string("inf") : jsonNumber(value); };
+  const std::string range = "[" + bound(min) + ", " + bound(max) + "]";
   return offAtZero ? "0 (off) or " + range : range;
 }
 
 std::string Knob::optionText() const {
   // jsonNumber's text is the shortest that reads back as the same double,
-  // which is what CLI11's number parser does with it; counts are whole.
-  return jsonNumber(get());
+  // which is what CLI11's number parser does with it; counts are whole;
+  // infinity as "inf", which the options that take it read.
+  return std::isinf(get()) ? "inf" : jsonNumber(get());
 }
 
 std::string Knob::effectText() const {

@@ -27,10 +27,14 @@ struct Knob {
   std::string unit;   // "kg", "" for none
   double* value = nullptr;  // Real and Interval knobs
   int* count = nullptr;     // Integer knobs
-  double min = 0, max = 0;
+  double min = 0, max = 0;  // max is infinity where the option takes "inf" (mu)
+  double sliderMax = 0;     // the panel slider's top where max is infinity
   KnobKind kind = KnobKind::Real;
   bool offAtZero = false;  // 0 is accepted too, below min, and means "off"
   std::string option;      // "--big-mass"; "" when only the panel sets it
+  // The option is added by its owner (ContactChoices: --mu reads "inf"), not
+  // from this declaration; the knob still names it, so that --list-settings does.
+  bool ownParser = false;
   std::string help;        // --help's line
   SDL_Keycode key = SDLK_UNKNOWN;  // steps the value (Shift: back)
   std::string keyName, keyHelp;
@@ -60,6 +64,11 @@ struct Knob {
   Knob& onlyHeadless();
   Knob& defaultPickedByScene();
   Knob& onlyWith(std::string flag);
+  // Up to infinity, which the option takes as "inf"; the panel's slider stops at sliderTop.
+  Knob& upToInfinity(double sliderTop);
+  // The option is parsed by the knob's owner (see ownParser).
+  Knob& optionParsedByOwner();
+  double panelMax() const { return sliderMax > 0 ? sliderMax : max; }
 
   double get() const;
   // Sets a value clamped to the range (0 kept where it means off; integers
@@ -68,7 +77,7 @@ struct Knob {
   // The key's next value from the current one (direction -1 with Shift).
   double next(int direction) const;
   bool accepts(double candidate) const;
-  std::string rangeText() const;  // "[1, 1e+09]" or "0 or [1e-06, 1e+06]"
+  std::string rangeText() const;  // "[1, 1e+09]", "0 (off) or [1e-06, 1e+06]", "[0, inf]"
   // The value as its option reads it back to the same double ("0.30000000000000004", "20").
   std::string optionText() const;
   // What the panel's row says beside the value, "" for a knob that acts at once:

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "FormatValue.h"
+#include "StateHash.h"
 
 namespace odelab {
 
@@ -59,22 +60,11 @@ std::string WorldRun::stateProblem() const {
 }
 
 std::uint64_t WorldRun::stateHash() const {
-  // FNV-1a over the exact bytes of every body's position, orientation and
-  // velocities, in creation order; cut to 52 bits so JSON's doubles hold it.
-  std::uint64_t hash = 1469598103934665603ull;
-  auto mix = [&hash](const dReal* values, int count) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values);
-    for (size_t i = 0; i < count * sizeof(dReal); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
-  };
-  for (const auto& object : objects_) {
-    const dBodyID body = object->getBody();
-    if (!body) continue;
-    mix(dBodyGetPosition(body), 3);
-    mix(dBodyGetQuaternion(body), 4);
-    mix(dBodyGetLinearVel(body), 3);
-    mix(dBodyGetAngularVel(body), 3);
-  }
-  return hash & ((1ull << 52) - 1);
+  // Each object's body, in creation order.
+  std::vector<dBodyID> bodies;
+  for (const auto& object : objects_)
+    if (const dBodyID body = object->getBody()) bodies.push_back(body);
+  return odelab::stateHash(world_, steps_, simulatedTime_, bodies);
 }
 
 int WorldRun::bodyCount() const { return static_cast<int>(bodiesOf(objects_).size()); }

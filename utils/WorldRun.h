@@ -37,7 +37,8 @@ class WorldRun {
   const std::string& blowUpReason() const { return blowUpReason_; }
   int bodyCount() const;
   int disabledBodyCount() const;
-  // A hash of every body's exact state (the determinism check).
+  // A hash of the step count, the simulated time, the world's settings and
+  // every body's exact state (the determinism check; StateHash.h).
   std::uint64_t stateHash() const;
   std::vector<JointMarker> jointMarkers() const { return collectJointMarkers(objects_); }
   PickHit pickAt(const double origin[3], const double direction[3]) const;

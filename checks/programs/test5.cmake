@@ -46,7 +46,7 @@ odelab_check(test5_fast_drops_count_every_plate_landed test5
 # space one of four names; auto-disable thresholds finite and >= 0 (given
 # with --auto-disable: without it a threshold is refused for that alone, the
 # last case); threads 1 ... 64, an integer; contacts per pair 1 ... 64;
-# surface layer in [0, 0.1] m; max correcting velocity positive and finite. Then one common option and an
+# surface layer in [0, 0.1] m; max correcting velocity positive (inf, ODE's unlimited, is its default). Then one common option and an
 # unknown one (the shared options: common_options.cmake).
 odelab_refusals(test5 refuses_bad_options headless 2
   --plates=<empty> --plates=0 --plates=-5 --plates=100001 --plates=1.5 --plates=many --plates=99999999999999999999
@@ -59,7 +59,8 @@ odelab_refusals(test5 refuses_bad_options headless 2
   --threads=0 --threads=65 --threads=-2 --threads=two --threads=1.5
   --max-contacts=0 --max-contacts=65 --max-contacts=2.5 --max-contacts=<empty>
   --contact-surface-layer=-0.001 --contact-surface-layer=nan --contact-surface-layer=0.2
-  --contact-max-correcting-vel=0 --contact-max-correcting-vel=-1 --contact-max-correcting-vel=inf
+  --contact-max-correcting-vel=0 --contact-max-correcting-vel=-1 --contact-max-correcting-vel=-inf
+  --contact-max-correcting-vel=nan
   --auto-disable-linear=0.3
   --step=nan --no-such-option)
 odelab_determinism(test5 --seconds 3 --spawn-interval 0.1)

@@ -45,7 +45,10 @@ case $how in
   *) echo "usage: interrupted_output.sh kill|file-limit PROGRAM CHECKER FILE COLUMNS INTERVAL ARGS..."; exit 2 ;;
 esac
 [ -e metrics.json ] && fail "a metrics JSON exists after the interrupted run"
-[ -e metrics.json.tmp ] && fail "a partial metrics JSON (metrics.json.tmp) exists"
+# The metrics' temporary file is .metrics.json.XXXXXX (utils/SafeFile.cpp).
+for partial in .metrics.json.*; do
+  [ -e "$partial" ] && fail "a partial metrics JSON ($partial) exists"
+done
 [ -s "$file" ] || { fail "$file is missing or empty"; exit 1; }
 # A run cut short never claims to be whole.
 grep -q '^# complete: ' "$file" && fail "$file says '# complete' after a run that was cut short"

@@ -28,6 +28,10 @@ def listed(stdout):
     return {entry["name"]: entry for entry in json.loads(stdout)}
 
 
+def number(value):
+    return math.inf if value == "inf" else value
+
+
 def text(value):
     return repr(float(value)) if not float(value).is_integer() or abs(value) >= 1e16 else str(int(value))
 
@@ -69,13 +73,16 @@ def main():
                 failures.append(f"{option} none-of-them: status {status}, not 2 naming the option")
             continue
         whole = entry["kind"] == "integer"
-        for bound, outward in ((entry["min"], -math.inf), (entry["max"], math.inf)):
+        # A range up to infinity (max "inf": mu) ends there.
+        for bound, outward in ((entry["min"], -math.inf), (number(entry["max"]), math.inf)):
             status, out, stderr = run(program, [f"{option}={text(bound)}", *companions(entry, bound, step_min)])
             tried += 1
             if status != 0:
                 failures.append(f"{option}={text(bound)} (a bound): status {status}: {stderr.strip()}")
-            elif listed(out)[entry["name"]]["default"] != bound:
+            elif number(listed(out)[entry["name"]]["default"]) != bound:
                 failures.append(f"{option}={text(bound)}: listed as {listed(out)[entry['name']]['default']}")
+            if math.isinf(bound):
+                continue  # nothing lies past infinity
             past = bound + (1 if outward > 0 else -1) if whole else math.nextafter(bound, outward)
             if entry["off_at_zero"] and past == 0:
                 continue

@@ -85,7 +85,7 @@ class ManyCollisions : public AbstractWindow {
     dWorldSetAutoDisableFlag(world(), autoDisable_ ? 1 : 0);
     dWorldSetAutoDisableLinearThreshold(world(), disableLinear_);
     dWorldSetAutoDisableAngularThreshold(world(), disableAngular_);
-    if (maxCorrectingVel_ > 0) dWorldSetContactMaxCorrectingVel(world(), maxCorrectingVel_);
+    dWorldSetContactMaxCorrectingVel(world(), maxCorrectingVel_);  // dInfinity unless given
     dWorldSetContactSurfaceLayer(world(), surfaceLayer_);
     if (threads_ > 1) {
       if (!islandThreads_) islandThreads_ = std::make_unique<IslandThreads>(threads_);
@@ -201,15 +201,15 @@ class ManyCollisions : public AbstractWindow {
   SceneBounds bounds() const override { return {{0, 3, 0}, 8.0}; }
 
  private:
-  // The scene's knobs; 0 in
-  // --plates and --spawn-interval stands for the scene's default (refused
-  // when typed). The world values are set in configureWorld(), when the
-  // scene is built: a new one rebuilds it.
+  // The scene's knobs, each declared with its default (the headless one
+  // for --plates and --spawn-interval: the window spawns by itself only once
+  // the interval is given or changed). The world values are set in
+  // configureWorld(), when the scene is built: a new one rebuilds it.
   void declareKnobs() {
     declare(Knob::integer("plates", "plates", plateLimit_, 1, 100000)
                 .withOption("--plates", "timed spawning stops after N plates (default: 50 headless)")
                 .defaultPickedByScene());
-    declare(Knob::interval("spawn_interval", "spawn interval", spawnInterval_, 1e-6, 1e6)
+    spawnKnob_ = &declare(Knob::interval("spawn_interval", "spawn interval", spawnInterval_, 1e-6, 1e6)
                 .withOption("--spawn-interval",
                             "drop a plate every S simulated seconds (default: 0.3 headless; in the window the "
                             "first plate at once, then N)")
@@ -226,10 +226,11 @@ class ManyCollisions : public AbstractWindow {
                                             "auto-disable angular velocity threshold, rad/s (default ODE's 0.01)")
                                 .onlyWith("--auto-disable")
                                 .rebuildsScene());
-    declare(Knob::real("contact_max_correcting_vel", "contact max correcting velocity", "m/s", maxCorrectingVel_, 1e-6, 1e9)
+    declare(Knob::real("contact_max_correcting_vel", "contact max correcting velocity", "m/s", maxCorrectingVel_, 1e-6, 0)
+                .upToInfinity(1e9)
                 .withOption("--contact-max-correcting-vel",
                             "dWorldSetContactMaxCorrectingVel: the fastest a contact pushes bodies apart to undo "
-                            "penetration, m/s (default ODE's: unlimited)")
+                            "penetration, m/s, or inf (default ODE's: inf, unlimited)")
                 .rebuildsScene());
     declare(Knob::real("contact_surface_layer", "contact surface layer", "m", surfaceLayer_, 0.0, 0.1)
                 .withOption("--contact-surface-layer",
@@ -240,11 +241,17 @@ class ManyCollisions : public AbstractWindow {
                 .rebuildsScene());
   }
 
+  // The window drops plates by itself (timed) only once the interval is
+  // given or changed; until then its first plate falls at once, N the next.
   double spawnInterval() const {
-    if (spawnInterval_ > 0) return spawnInterval_;
-    return options().headless ? DEFAULT_SPAWN_INTERVAL : 0.0;
+    const bool given = spawnKnob_->parsed && spawnKnob_->parsed->count() > 0;
+    return options().headless || given || spawnChanged_ ? spawnInterval_ : 0.0;
   }
-  int plateLimit() const { return plateLimit_ > 0 ? plateLimit_ : DEFAULT_PLATES; }
+  int plateLimit() const { return plateLimit_; }
+
+  void onKnobChanged(const Knob& knob) override {
+    if (&knob == spawnKnob_) spawnChanged_ = true;
+  }
 
   void spawnPlate() {
     Box& plate = add<Box>(world(), space(), PLATE_WIDTH, PLATE_THICKNESS, PLATE_WIDTH, PLATE_MASS);
@@ -273,15 +280,17 @@ class ManyCollisions : public AbstractWindow {
   double collidedSeconds_ = 0.0;
   double nextSpawn_ = 0.0;
   bool firstPlateDropped_ = false;  // the window's first plate (no timed spawning)
-  double spawnInterval_ = 0.0;
-  int plateLimit_ = 0;
+  double spawnInterval_ = DEFAULT_SPAWN_INTERVAL;
+  int plateLimit_ = DEFAULT_PLATES;
+  const Knob* spawnKnob_ = nullptr;
+  bool spawnChanged_ = false;  // on the panel or by a replay: the window spawns by it
   SpaceKind requestedSpace_ = SpaceKind::Simple;
   bool spaceChosen_ = false;
   bool autoDisable_ = false;
   double disableLinear_ = ODE_DEFAULT_DISABLE_THRESHOLD;
   double disableAngular_ = ODE_DEFAULT_DISABLE_THRESHOLD;
   int threads_ = 1;
-  double maxCorrectingVel_ = 0.0;  // 0: not set, ODE's unlimited
+  double maxCorrectingVel_ = dInfinity;  // ODE's own default: unlimited
   double surfaceLayer_ = 0.0;
   std::unique_ptr<IslandThreads> islandThreads_;  // only with --threads > 1
 };
