@@ -26,12 +26,6 @@ bool isWritableDirectory(const std::string& path) {
   return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode) && access(path.c_str(), W_OK) == 0;
 }
 
-std::string directoryOf(const std::string& file) {
-  const auto slash = file.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : file.substr(0, slash);
-}
-
 #ifdef __EMSCRIPTEN__
 // In the browser the options come from the page's address (web/scene.js
 // turns "&erp=0.4" into "--erp 0.4"): there is no command line to add
@@ -54,22 +48,30 @@ std::string usageAdvice(const std::string& message) {
 std::string usageAdvice(const std::string&) { return "Run with --help for the options."; }
 #endif
 
+std::string fileName(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// A name --record gives a frame (FrameLoop::recordFrame): <program>_frame_
+// then six or more digits, then .png; any program's, as the launcher's
+// scenes each record under their own.
+bool isRecordedFrameName(const std::string& path) {
+  const std::string name = fileName(path), marker = "_frame_", ending = ".png";
+  const auto at = name.rfind(marker);
+  if (at == std::string::npos || at == 0 || name.size() < at + marker.size() + 6 + ending.size()) return false;
+  if (name.compare(name.size() - ending.size(), ending.size(), ending) != 0) return false;
+  const std::string digits = name.substr(at + marker.size(), name.size() - ending.size() - at - marker.size());
+  return digits.find_first_not_of("0123456789") == std::string::npos;
+}
+
 }  // namespace
 
 void requireReplaceableFile(const char* option, const std::string& file) {
   if (file.empty()) return;
-  struct stat info {};
-  if (stat(file.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
-    throw UsageError(std::string(option) + ": '" + file + "' is a folder, not a file");
-  // The file is replaced by a rename, which would swap a device, FIFO or
-  // link for a regular file (as root, /dev/null): refused before running.
-  const std::string why = whyNotReplaceable(file);
+  const std::string why = whyNotWritable(file);
   if (!why.empty())
-    throw UsageError(std::string(option) + ": '" + file + "' " + why + "; only a regular file (or a new one) is written");
-  const std::string folder = directoryOf(file);
-  if (!isWritableDirectory(folder))
-    throw UsageError(std::string(option) + ": cannot write '" + file + "': folder '" + folder +
-                     "' does not exist or is not writable");
+    throw UsageError(std::string(option) + ": cannot write '" + file + "': " + why);
 }
 
 namespace {
@@ -273,13 +275,27 @@ void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>&
     const std::string output = joinPath(options.outDir, name);
     if (!options.metricsJson.empty() && sameFilePath(options.metricsJson, output))
       throw UsageError("--metrics-json: '" + options.metricsJson + "' is this program's own output file '" + output +
-                       "'; name another file");
+                       "' (a scene this session can open writes it); name another file");
     if (!options.screenshot.empty() && sameFilePath(options.screenshot, output))
       throw UsageError("--screenshot: '" + options.screenshot + "' is this program's own output file '" + output +
-                       "'; name another file");
+                       "' (a scene this session can open writes it); name another file");
   }
   if (!options.metricsJson.empty() && sameFilePath(options.metricsJson, options.screenshot))
     throw UsageError("--metrics-json: '" + options.metricsJson + "' is also the --screenshot file");
+  if (options.recordDir.empty()) return;
+  for (const auto& [option, file] : {std::pair{"--metrics-json", options.metricsJson}, {"--screenshot", options.screenshot}})
+    if (!file.empty() && isRecordedFrameName(file) && sameFilePath(file, joinPath(options.recordDir, fileName(file))))
+      throw UsageError(std::string(option) + ": '" + file + "' is a frame --record saves in '" + options.recordDir +
+                       "'; name another file");
+}
+
+void refuseUnwritableOutputs(const RunOptions& options, const std::vector<std::string>& outputNames) {
+  for (const std::string& name : outputNames) {
+    const std::string output = joinPath(options.outDir, name);
+    const std::string why = whyNotWritable(output);
+    if (!why.empty())
+      throw UsageError("cannot write '" + output + "': " + why);
+  }
 }
 
 void refuseBelowStep(const char* option, double interval, double step) {

@@ -149,7 +149,8 @@ int runScene(AbstractWindow& scene, const char* description, int argc, char** ar
   app.footer(cli::keysHelp(scene));
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     cli::validateRunOptions(options);
-    cli::refuseOwnOutputs(options, scene.outputFileNames());
+    cli::refuseOwnOutputs(options, switching ? switching->outputFileNames() : scene.outputFileNames());
+    cli::refuseUnwritableOutputs(options, scene.outputFileNames());
     cli::refuseRunShorterThanStep(options, scene.tuning().settings().step);
     cli::checkKnobs(app, scene.tuning().knobs(), scene.tuning().settings().step);
     scene.setRunOptions(options);

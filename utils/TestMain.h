@@ -19,6 +19,9 @@ class SceneSwitching {
   virtual AbstractWindow& next(int offset, const RunOptions& options) = 0;
   virtual std::vector<SceneChoice> scenes() const = 0;  // every scene, in order
   virtual int current() const = 0;                       // the index of the one on screen
+  // The output file names of every scene it may switch to, which the
+  // session's other files must not name.
+  virtual std::vector<std::string> outputFileNames() const = 0;
 };
 
 // With `switching` (the launcher), a window run may go on to other scenes.
