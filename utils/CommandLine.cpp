@@ -166,7 +166,8 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
   }
   app.add_option("--seed", options.seed, "seed for every random choice of the scene and for ODE's dRandSetSeed")
       ->capture_default_str();
-  app.add_option("--out-dir", options.outDir, "folder for output files such as Test2_output.txt")
+  app.add_option("--out-dir", options.outDir,
+                 "folder for output files such as Test2_output.txt (a link, hard link or FIFO there is refused)")
       ->capture_default_str();
   app.add_option("--metrics-json", options.metricsJson,
                  "write the metrics as a flat JSON object to FILE (atomically: to a hidden temporary file "
@@ -176,9 +177,11 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   app.add_option("--record", options.recordDir,
-                 "window: save every frame as DIR/<test>_frame_000001.png ... (see doc/manual.md for a video)");
+                 "window: save every frame as DIR/<test>_frame_000001.png ... (see doc/manual.md for a video); "
+                 "--metrics-json and --screenshot may not name one");
   app.add_option("--events", options.eventsFile,
-                 "window: play scripted input from FILE (see doc/manual.md, \"Scripted input\")")
+                 "window: play scripted input from FILE, a regular file of at most 8 MiB (see doc/manual.md, "
+                 "\"Scripted input\")")
       ->check(CLI::ExistingFile);
   app.add_option("--shader-dir", options.shaderDir, "folder holding the GLSL shaders (see doc/manual.md)");
   app.add_option("--font", options.fontPath, "TTF font for the HUD (see doc/manual.md)");
