@@ -9,6 +9,7 @@
 
 #include "ExitCodes.h"
 #include "MeasurementLog.h"
+#include "Platform.h"
 #include "SafeFile.h"
 
 namespace odelab::cli {
@@ -49,7 +50,7 @@ std::string usageAdvice(const std::string&) { return "Run with --help for the op
 #endif
 
 std::string fileName(const std::string& path) {
-  const auto slash = path.find_last_of('/');
+  const auto slash = path.find_last_of(platform::FOLDER_SEPARATORS);
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
