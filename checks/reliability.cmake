@@ -16,6 +16,17 @@ odelab_refusals(test0 refuses_files_naming_a_recorded_frame no-display 2
 odelab_refusals(odelab refuses_files_naming_any_scenes_output no-display 2
                 "--metrics-json=Test2_output.txt --scene=test3" --metrics-json=Test8_output.txt
                 "--screenshot=Test2_output.txt --scene=test0" "--metrics-json=test2_frame_000001.png --record=.")
+# ...and a hard link at another scene's output file is refused before the
+# launcher's window opens on test1, not once Page Down reaches test8.
+set(_dir ${CMAKE_CURRENT_BINARY_DIR}/runs/odelab_hard_link)
+file(MAKE_DIRECTORY ${_dir})
+add_test(NAME odelab_refuses_a_hard_link_at_any_scenes_output
+         COMMAND sh -c "rm -f victim Test8_output.txt err.txt && echo precious > victim && ln victim Test8_output.txt &&
+                        env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 \"$1\" --seconds 0.1 >/dev/null 2>err.txt; s=$?;
+                        cat err.txt; [ $s = 2 ] && grep -q \"^error: cannot write 'Test8_output.txt': has more than one link\" err.txt &&
+                        [ \"$(cat victim)\" = precious ]" sh $<TARGET_FILE:odelab>
+         WORKING_DIRECTORY ${_dir})
+set_tests_properties(odelab_refuses_a_hard_link_at_any_scenes_output PROPERTIES TIMEOUT 120 LABELS hardening)
 odelab_refusals(test2 refuses_runs_and_intervals_below_one_step headless 2
                 --seconds=1e-7 "--seconds=0.009 --step=0.01" --sample-interval=1e-300 "--sample-interval=0.001 --step=0.002")
 odelab_refusals(test8 refuses_sample_interval_below_the_step headless 2 --sample-interval=1e-300)

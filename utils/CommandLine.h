@@ -89,7 +89,7 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const 
 // passes every scene's), nor a frame --record saves (<test>_frame_NNNNNN.png
 // in its folder), nor each other. Throws UsageError.
 void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>& outputNames);
-// The streamed outputs this run opens (`outputNames` in --out-dir) meet the
+// The streamed outputs this session may open (`outputNames` in --out-dir) meet the
 // same rule as the files replaced whole (whyNotWritable): a hard link, a
 // symbolic link, a FIFO there is refused before the run. Throws UsageError.
 void refuseUnwritableOutputs(const RunOptions& options, const std::vector<std::string>& outputNames);
