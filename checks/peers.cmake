@@ -340,6 +340,11 @@ if(ODELAB_WEB_PEERS_READY)
                      $<TARGET_FILE:replay_lab> ${_row})
     list(APPEND ODELAB_WEB_CHECKS peers_rules_parity_${_name})
   endforeach()
+  # The recordings are read by the one bounded reader: /dev/zero, a FIFO, a
+  # folder, an absent path refused with status 2 at once.
+  add_test(NAME replay_lab_refuses_what_is_not_a_small_regular_file
+           COMMAND sh ${ODELAB_CHECK_SCRIPTS}/bounded_reader_refusals.sh $<TARGET_FILE:replay_lab>)
+  set_tests_properties(replay_lab_refuses_what_is_not_a_small_regular_file PROPERTIES TIMEOUT 60 LABELS peers)
   # MuJoCo 3 (npm mujoco-js) on the MJCF mujoco_lab runs with Debian's
   # MuJoCo 2.2.2, measured by the same rules: the two versions agree to 1e-6
   # relative on the Euler pendulum's energy error and the spring bounce's 20th

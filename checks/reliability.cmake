@@ -8,6 +8,25 @@ odelab_refusals(test2 refuses_metrics_json_that_is_not_a_regular_file headless 2
                 --metrics-json=/dev/null --metrics-json=/dev/stdout --metrics-json=Test2_output.txt)
 odelab_refusals(test8 refuses_metrics_json_naming_its_output headless 2 --metrics-json=Test8_output.txt
                 --metrics-json=./Test8_output.txt)
+# Names that collide, refused by the options' checks before any window
+# opens (so without a display too): a frame --record saves, and, in the
+# launcher's window that may switch to any scene, any scene's output file.
+odelab_refusals(test0 refuses_files_naming_a_recorded_frame no-display 2
+                "--metrics-json=test0_frame_000002.png --record=." "--screenshot=test0_frame_000001.png --record=.")
+odelab_refusals(odelab refuses_files_naming_any_scenes_output no-display 2
+                "--metrics-json=Test2_output.txt --scene=test3" --metrics-json=Test8_output.txt
+                "--screenshot=Test2_output.txt --scene=test0" "--metrics-json=test2_frame_000001.png --record=.")
+# ...and a hard link at another scene's output file is refused before the
+# launcher's window opens on test1, not once Page Down reaches test8.
+set(_dir ${CMAKE_CURRENT_BINARY_DIR}/runs/odelab_hard_link)
+file(MAKE_DIRECTORY ${_dir})
+add_test(NAME odelab_refuses_a_hard_link_at_any_scenes_output
+         COMMAND sh -c "rm -f victim Test8_output.txt err.txt && echo precious > victim && ln victim Test8_output.txt &&
+                        env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 \"$1\" --seconds 0.1 >/dev/null 2>err.txt; s=$?;
+                        cat err.txt; [ $s = 2 ] && grep -q \"^error: cannot write 'Test8_output.txt': has more than one link\" err.txt &&
+                        [ \"$(cat victim)\" = precious ]" sh $<TARGET_FILE:odelab>
+         WORKING_DIRECTORY ${_dir})
+set_tests_properties(odelab_refuses_a_hard_link_at_any_scenes_output PROPERTIES TIMEOUT 120 LABELS hardening)
 odelab_refusals(test2 refuses_runs_and_intervals_below_one_step headless 2
                 --seconds=1e-7 "--seconds=0.009 --step=0.01" --sample-interval=1e-300 "--sample-interval=0.001 --step=0.002")
 odelab_refusals(test8 refuses_sample_interval_below_the_step headless 2 --sample-interval=1e-300)
@@ -28,6 +47,13 @@ foreach(_program_file test2:Test2_output.txt test8:Test8_output.txt)
   add_test(NAME ${_program}_output_file_whole_unshared_and_marked
            COMMAND sh ${ODELAB_CHECK_SCRIPTS}/output_files.sh $<TARGET_FILE:${_program}> ${_file} ${_window})
   set_tests_properties(${_program}_output_file_whole_unshared_and_marked PROPERTIES TIMEOUT 300 LABELS hardening)
+  # The one file rule's refusals that came late or never: a hard-linked
+  # output or metrics file, a metrics name too long for its temporary file,
+  # a missing folder; status 2 before the run, nothing written.
+  add_test(NAME ${_program}_refuses_hard_links_and_late_failures_before_the_run
+           COMMAND sh ${ODELAB_CHECK_SCRIPTS}/late_failures_refused.sh $<TARGET_FILE:${_program}> ${_file})
+  set_tests_properties(${_program}_refuses_hard_links_and_late_failures_before_the_run PROPERTIES TIMEOUT 120
+                       LABELS hardening)
   # Every way a run ends leaves the file marked: SIGHUP and SIGINT, and in a
   # window --record on a full disk and the display going away (Xlib's
   # exit()). They ended with a plain row, though the program knew why it

@@ -4,7 +4,6 @@
 #include <sys/resource.h>
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
 #include <map>
 
@@ -12,6 +11,7 @@
 #include "Measurements.h"
 #include "Metrics.h"
 #include "PeerScene.h"
+#include "SafeFile.h"
 #include "shared/SceneConstants.h"
 
 namespace odelab::peers {
@@ -95,10 +95,11 @@ int runPeer(int argc, char** argv, Engine& engine) {
                 << "Run with --help for the options.\n";
       return 2;
     }
-    std::ofstream out(modelFile);
-    out << model;
-    if (!out) {
-      std::cerr << "error: --write-model: cannot write " << modelFile << '\n';
+    // Replaced whole, as every file the project writes (SafeFile.h).
+    try {
+      writeFileAtomically(modelFile, model);
+    } catch (const std::exception& error) {
+      std::cerr << "error: --write-model: " << error.what() << '\n';
       return 1;
     }
     return 0;

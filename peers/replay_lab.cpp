@@ -4,9 +4,9 @@
 // to stdout as JSON. peers/check_parity.py runs this and the JavaScript
 // rules on the same file and compares them.
 //
-// Usage: replay_lab FILE. Exit 0 done, 1 an unreadable or short trajectory,
-// 2 bad usage.
-#include <fstream>
+// Usage: replay_lab FILE. Exit 0 done, 1 a short or malformed trajectory,
+// 2 bad usage or a FILE that is not a regular file of at most 256 MiB
+// (absent, a folder, a FIFO, a device: refused before anything is read).
 #include <iostream>
 #include <map>
 #include <memory>
@@ -17,6 +17,7 @@
 
 #include "Measurements.h"
 #include "PeerScene.h"
+#include "SafeFile.h"
 
 namespace {
 
@@ -29,9 +30,12 @@ struct Trajectory {
   double number(const std::string& key) const { return std::stod(header.at(key)); }
 };
 
+// The longest recording record.js writes is a few MiB; what is larger (or
+// endless, /dev/zero) is refused before it is read.
+constexpr std::size_t MAX_TRAJECTORY_BYTES = 256u << 20;
+
 Trajectory readTrajectory(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
+  std::istringstream in(readBoundedFile(path, MAX_TRAJECTORY_BYTES, "the trajectory"));
   Trajectory t;
   std::string line;
   while (std::getline(in, line) && line != "rows") {
@@ -222,6 +226,9 @@ int main(int argc, char** argv) {
     }
     else throw std::runtime_error("unknown scene " + options.scene);
     std::cout << metrics.toJson();
+  } catch (const ReadRefused& error) {
+    std::cerr << "replay_lab: " << error.what() << '\n';
+    return 2;
   } catch (const std::exception& error) {
     std::cerr << "replay_lab: " << error.what() << '\n';
     return 1;

@@ -18,7 +18,8 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$root/build}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
-# Debian packages: compiler and build tools, the libraries, the HUD font; for
+# Debian packages: compiler and build tools, the libraries, the HUD font
+# (nlohmann-json3-dev for the unit check of checks/file_rules.json); for
 # the windowed checks an X server with Mesa's software OpenGL; for the lab's
 # report (lab/odelab-report) Debian's Python with matplotlib.
 # The peer engines (peers/, doc/peers.md): Bullet and MuJoCo (whose CMake
@@ -29,7 +30,7 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 packages=(
   g++ make cmake pkg-config
   libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev
-  libcli11-dev libstb-dev libglm-dev libgtest-dev libimgui-dev
+  libcli11-dev libstb-dev libglm-dev libgtest-dev libimgui-dev nlohmann-json3-dev
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
   python3 python3-matplotlib

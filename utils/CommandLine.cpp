@@ -9,6 +9,7 @@
 
 #include "ExitCodes.h"
 #include "MeasurementLog.h"
+#include "Platform.h"
 #include "SafeFile.h"
 
 namespace odelab::cli {
@@ -24,12 +25,6 @@ std::string formatNumber(double value) {
 bool isWritableDirectory(const std::string& path) {
   struct stat info {};
   return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode) && access(path.c_str(), W_OK) == 0;
-}
-
-std::string directoryOf(const std::string& file) {
-  const auto slash = file.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : file.substr(0, slash);
 }
 
 #ifdef __EMSCRIPTEN__
@@ -54,22 +49,30 @@ std::string usageAdvice(const std::string& message) {
 std::string usageAdvice(const std::string&) { return "Run with --help for the options."; }
 #endif
 
+std::string fileName(const std::string& path) {
+  const auto slash = path.find_last_of(platform::FOLDER_SEPARATORS);
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// A name --record gives a frame (FrameLoop::recordFrame): <program>_frame_
+// then six or more digits, then .png; any program's, as the launcher's
+// scenes each record under their own.
+bool isRecordedFrameName(const std::string& path) {
+  const std::string name = fileName(path), marker = "_frame_", ending = ".png";
+  const auto at = name.rfind(marker);
+  if (at == std::string::npos || at == 0 || name.size() < at + marker.size() + 6 + ending.size()) return false;
+  if (name.compare(name.size() - ending.size(), ending.size(), ending) != 0) return false;
+  const std::string digits = name.substr(at + marker.size(), name.size() - ending.size() - at - marker.size());
+  return digits.find_first_not_of("0123456789") == std::string::npos;
+}
+
 }  // namespace
 
 void requireReplaceableFile(const char* option, const std::string& file) {
   if (file.empty()) return;
-  struct stat info {};
-  if (stat(file.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
-    throw UsageError(std::string(option) + ": '" + file + "' is a folder, not a file");
-  // The file is replaced by a rename, which would swap a device, FIFO or
-  // link for a regular file (as root, /dev/null): refused before running.
-  const std::string why = whyNotReplaceable(file);
+  const std::string why = whyNotWritable(file);
   if (!why.empty())
-    throw UsageError(std::string(option) + ": '" + file + "' " + why + "; only a regular file (or a new one) is written");
-  const std::string folder = directoryOf(file);
-  if (!isWritableDirectory(folder))
-    throw UsageError(std::string(option) + ": cannot write '" + file + "': folder '" + folder +
-                     "' does not exist or is not writable");
+    throw UsageError(std::string(option) + ": cannot write '" + file + "': " + why);
 }
 
 namespace {
@@ -164,7 +167,8 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
   }
   app.add_option("--seed", options.seed, "seed for every random choice of the scene and for ODE's dRandSetSeed")
       ->capture_default_str();
-  app.add_option("--out-dir", options.outDir, "folder for output files such as Test2_output.txt")
+  app.add_option("--out-dir", options.outDir,
+                 "folder for output files such as Test2_output.txt (a link, hard link or FIFO there is refused)")
       ->capture_default_str();
   app.add_option("--metrics-json", options.metricsJson,
                  "write the metrics as a flat JSON object to FILE (atomically: to a hidden temporary file "
@@ -174,9 +178,11 @@ void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& setting
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   app.add_option("--record", options.recordDir,
-                 "window: save every frame as DIR/<test>_frame_000001.png ... (see doc/manual.md for a video)");
+                 "window: save every frame as DIR/<test>_frame_000001.png ... (see doc/manual.md for a video); "
+                 "--metrics-json and --screenshot may not name one");
   app.add_option("--events", options.eventsFile,
-                 "window: play scripted input from FILE (see doc/manual.md, \"Scripted input\")")
+                 "window: play scripted input from FILE, a regular file of at most 8 MiB (see doc/manual.md, "
+                 "\"Scripted input\")")
       ->check(CLI::ExistingFile);
   app.add_option("--shader-dir", options.shaderDir, "folder holding the GLSL shaders (see doc/manual.md)");
   app.add_option("--font", options.fontPath, "TTF font for the HUD (see doc/manual.md)");
@@ -275,13 +281,27 @@ void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>&
     const std::string output = joinPath(options.outDir, name);
     if (!options.metricsJson.empty() && sameFilePath(options.metricsJson, output))
       throw UsageError("--metrics-json: '" + options.metricsJson + "' is this program's own output file '" + output +
-                       "'; name another file");
+                       "' (a scene this session can open writes it); name another file");
     if (!options.screenshot.empty() && sameFilePath(options.screenshot, output))
       throw UsageError("--screenshot: '" + options.screenshot + "' is this program's own output file '" + output +
-                       "'; name another file");
+                       "' (a scene this session can open writes it); name another file");
   }
   if (!options.metricsJson.empty() && sameFilePath(options.metricsJson, options.screenshot))
     throw UsageError("--metrics-json: '" + options.metricsJson + "' is also the --screenshot file");
+  if (options.recordDir.empty()) return;
+  for (const auto& [option, file] : {std::pair{"--metrics-json", options.metricsJson}, {"--screenshot", options.screenshot}})
+    if (!file.empty() && isRecordedFrameName(file) && sameFilePath(file, joinPath(options.recordDir, fileName(file))))
+      throw UsageError(std::string(option) + ": '" + file + "' is a frame --record saves in '" + options.recordDir +
+                       "'; name another file");
+}
+
+void refuseUnwritableOutputs(const RunOptions& options, const std::vector<std::string>& outputNames) {
+  for (const std::string& name : outputNames) {
+    const std::string output = joinPath(options.outDir, name);
+    const std::string why = whyNotWritable(output);
+    if (!why.empty())
+      throw UsageError("cannot write '" + output + "': " + why);
+  }
 }
 
 void refuseBelowStep(const char* option, double interval, double step) {

@@ -64,8 +64,6 @@ CLI::Validator decimalInteger();
 // window-only options are not combined with --headless. Throws UsageError.
 void validateRunOptions(const RunOptions& options);
 
-// --metrics-json and --screenshot must not name one of the program's own
-// output files (names in --out-dir), nor each other. Throws UsageError.
 // An interval (between rows, between throws) below one step: a row or a
 // throw that no step separates. Throws UsageError naming `option`.
 void refuseBelowStep(const char* option, double interval, double step);
@@ -73,8 +71,10 @@ void refuseBelowStep(const char* option, double interval, double step);
 void refuseRunShorterThanStep(const RunOptions& options, double step);
 // The same for a run length given as `seconds` (0 or less: not given).
 void refuseRunShorterThanStep(double seconds, double step);
-// FILE (of `option`) will be replaced whole by a rename: it must not be a
-// folder, device, FIFO or link, and its folder must be writable. Throws UsageError.
+// FILE (of `option`) will be replaced whole by a rename at the run's end:
+// whyNotWritable (SafeFile.h) must find nothing against it (no folder,
+// device, FIFO, link or hard link; its folder there and taking its hidden
+// temporary file), so the run never fails late. Throws UsageError.
 void requireReplaceableFile(const char* option, const std::string& file);
 
 // Parses the command line the one way every program does (the ODE programs
@@ -84,7 +84,15 @@ void requireReplaceableFile(const char* option, const std::string& file);
 // the program should go on.
 std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const std::function<void()>& checks);
 
+// --metrics-json and --screenshot must not name an output file of any scene
+// the session can open (`outputNames`, names in --out-dir: the launcher
+// passes every scene's), nor a frame --record saves (<test>_frame_NNNNNN.png
+// in its folder), nor each other. Throws UsageError.
 void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>& outputNames);
+// The streamed outputs this session may open (`outputNames` in --out-dir) meet the
+// same rule as the files replaced whole (whyNotWritable): a hard link, a
+// symbolic link, a FIFO there is refused before the run. Throws UsageError.
+void refuseUnwritableOutputs(const RunOptions& options, const std::vector<std::string>& outputNames);
 
 // "Keys:" section for --help, from the scene's key table plus the camera keys.
 std::string keysHelp(const AbstractWindow& scene);

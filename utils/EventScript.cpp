@@ -1,15 +1,13 @@
 #include "EventScript.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "CommandLine.h"
+#include "SafeFile.h"
 
 namespace odelab {
 
@@ -203,14 +201,13 @@ std::vector<ScriptEvent> parseEventScript(std::istream& in, const std::string& f
 }
 
 std::vector<ScriptEvent> loadEventScript(const std::string& path, const KeyLookup& keyLookup) {
-  // A FIFO would block and /dev/zero never ends: regular files only.
-  struct stat info {};
-  if (stat(path.c_str(), &info) != 0) throw UsageError("--events: cannot read '" + path + "'");
-  if (!S_ISREG(info.st_mode)) throw UsageError("--events: '" + path + "' is not a regular file");
-  if (info.st_size > MAX_SCRIPT_BYTES)
-    throw UsageError("--events: '" + path + "' is larger than " + std::to_string(MAX_SCRIPT_BYTES >> 20) + " MiB");
-  std::ifstream file(path);
-  if (!file) throw UsageError("--events: cannot read '" + path + "'");
+  // A FIFO would block and /dev/zero never ends: the one bounded reader.
+  std::istringstream file;
+  try {
+    file.str(readBoundedFile(path, MAX_SCRIPT_BYTES, "the script"));
+  } catch (const ReadRefused& error) {
+    throw UsageError(std::string("--events: ") + error.what());
+  }
   return parseEventScript(file, path, keyLookup);
 }
 

@@ -78,6 +78,7 @@ class RegistrySwitching : public odelab::SceneSwitching {
   }
 
   int current() const override { return static_cast<int>(index_); }
+  std::vector<std::string> outputFileNames() const override { return odelab::outputFileNamesOfEveryScene(); }
 
  private:
   // "Pendulum" from "test2 - Pendulum".

@@ -1,70 +1,56 @@
 #include "MeasurementLog.h"
 
-#include "FormatValue.h"
-#include "SafeFile.h"
+#include <cstdio>
 
-#include <cerrno>
-#include <cstring>
-#include <exception>
-#include <stdexcept>
+#include "FormatValue.h"
 
 namespace odelab {
 
-MeasurementLog::~MeasurementLog() {
-  if (file_) std::fclose(file_);
+namespace {
+
+std::string formatted(const char* format, double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
 }
+
+}  // namespace
 
 void MeasurementLog::open(const std::string& path, const std::string& title,
                           const std::vector<std::pair<std::string, std::string>>& settings,
                           const std::vector<std::string>& columns) {
-  close();
-  path_ = path;
   rows_ = 0;
   finished_ = false;
-  file_ = openExclusiveOutput(path);
-  check(std::fprintf(file_, "# %s\n", title.c_str()));
-  for (const auto& [key, value] : settings) check(std::fprintf(file_, "# %s: %s\n", key.c_str(), value.c_str()));
+  file_.open(path);
+  std::string head = "# " + title + "\n";
+  for (const auto& [key, value] : settings) head += "# " + key + ": " + value + "\n";
   // The column names are the first line that is not a comment, so the file
   // loads as a table: pandas.read_csv(f, sep='\t', comment='#'), gnuplot's
   // columnheaders.
   std::string header;
   for (const auto& column : columns) header += (header.empty() ? "" : "\t") + column;
-  check(std::fprintf(file_, "%s\n", header.c_str()));
-  check(std::fflush(file_));
+  file_.write(head + header + "\n");
 }
 
 void MeasurementLog::row(const std::vector<double>& values) {
-  if (!file_) return;
-  for (size_t i = 0; i < values.size(); ++i) check(std::fprintf(file_, i ? "\t%.10g" : "%.10g", values[i]));
-  check(std::fputc('\n', file_));
-  check(std::fflush(file_));
+  if (!file_.isOpen()) return;
+  std::string line;
+  for (size_t i = 0; i < values.size(); ++i) line += formatted(i ? "\t%.10g" : "%.10g", values[i]);
+  file_.write(line + "\n");
   ++rows_;
 }
 
 void MeasurementLog::comment(double time, const std::string& text) {
-  if (!file_) return;
-  check(std::fprintf(file_, "# %s: %s\n", timeStamp(time).c_str(), text.c_str()));
-  check(std::fflush(file_));
+  file_.write("# " + timeStamp(time) + ": " + text + "\n");
 }
 
 void MeasurementLog::finish(const std::string& line) {
-  if (!file_ || finished_) return;
+  if (!file_.isOpen() || finished_) return;
   finished_ = true;
-  check(std::fprintf(file_, "# %s\n", line.c_str()));
-  check(std::fflush(file_));
+  file_.write("# " + line + "\n");
 }
 
-void MeasurementLog::close() {
-  std::FILE* file = file_;
-  file_ = nullptr;
-  // fclose writes what is buffered and releases the lock; a failure there
-  // is a lost row, reported like any other (not from the destructor).
-  if (file && std::fclose(file) != 0 && !std::uncaught_exceptions()) check(-1);
-}
-
-void MeasurementLog::check(int result) {
-  if (result < 0) throw std::runtime_error("cannot write '" + path_ + "': " + std::strerror(errno));
-}
+void MeasurementLog::close() { file_.close(); }
 
 std::string timeStamp(double simulatedTime) { return "t=" + formatValue(simulatedTime) + " s"; }
 

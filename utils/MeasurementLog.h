@@ -1,9 +1,10 @@
 #pragma once
 
-#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "StreamedFile.h"
 
 namespace odelab {
 
@@ -13,15 +14,11 @@ namespace odelab {
 // crash or kill loses at most the row being written. A run that ends
 // normally adds a last line "# complete: ..." (finish); one cut short says
 // "# incomplete: ..." when it still can, and a file with neither was cut
-// short by a kill or a full disk. The file is opened through
-// openExclusiveOutput (SafeFile.h): no links followed, one run at a time.
+// short by a kill or a full disk. The file is written by StreamedFile, the
+// one writer of streamed outputs (the one rule of SafeFile.h: no link or
+// hard link written through, one run at a time).
 class MeasurementLog {
  public:
-  MeasurementLog() = default;
-  MeasurementLog(const MeasurementLog&) = delete;
-  MeasurementLog& operator=(const MeasurementLog&) = delete;
-  ~MeasurementLog();
-
   // Creates or truncates `path` and writes the header. Throws
   // std::runtime_error naming the path when it cannot be written, is not a
   // regular file, or another run holds it.
@@ -34,15 +31,12 @@ class MeasurementLog {
   void finish(const std::string& line);
   bool finished() const { return finished_; }
   void close();
-  bool isOpen() const { return file_ != nullptr; }
-  const std::string& path() const { return path_; }
+  bool isOpen() const { return file_.isOpen(); }
+  const std::string& path() const { return file_.path(); }
   long rows() const { return rows_; }
 
  private:
-  void check(int result);
-
-  std::FILE* file_ = nullptr;
-  std::string path_;
+  StreamedFile file_;
   long rows_ = 0;
   bool finished_ = false;
 };

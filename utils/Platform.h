@@ -60,9 +60,11 @@ void removeFile(const std::string& path);
 // alone: on POSIX an exclusive flock(2), on Windows a handle that shares
 // reading only, so a second writer's open fails. Refuses a symbolic link and
 // anything not a regular file without writing to it, and truncates only once
-// the file is held. The stream is binary: rows end in "\n" on every system.
+// the file is held; a file with another name (a hard link) is refused too,
+// before it is truncated. The stream is binary: rows end in "\n" on every
+// system.
 struct OutputFile {
-  enum class Refusal { None, Link, NotRegular, Held, Failed };
+  enum class Refusal { None, Link, NotRegular, Shared, Held, Failed };
   std::FILE* file = nullptr;  // set when refusal is None
   Refusal refusal = Refusal::None;
   std::string why;            // the reason, when refused
@@ -70,8 +72,30 @@ struct OutputFile {
 };
 OutputFile openHeldOutput(const std::string& path);
 
-// Reads a whole regular file of at most `maxBytes` into `bytes`; a FIFO or
-// device is refused without waiting on it. Returns "" or why it was not read.
+// What the check before a run learns of a write's target `path` in
+// `folder` (not following a final link): its kind, how many names its
+// contents have (more than one: a hard link, whose other names a write in
+// place or a rename would change or cut off), and whether the system would
+// refuse to replace it for its owner: in a sticky folder (/tmp) only the
+// file's owner, the folder's owner or root may rename over a file.
+struct TargetFacts {
+  FileKind kind = FileKind::Absent;
+  unsigned long links = 0;
+  bool anotherUsersInStickyFolder = false;
+};
+TargetFacts targetFacts(const std::string& path, const std::string& folder);
+// Creates a new file named `stem` plus a unique suffix, as writeNewFile
+// does, and removes it at once: proof that a later write's temporary file
+// can exist. "" or why not: "name is too long" past the file system's limit
+// on a name, else "cannot create a file there: <the system's reason>".
+std::string probeNewFile(const std::string& stem);
+
+// Reads a whole regular file of at most `maxBytes` into `bytes`. Following
+// links, what the path names is looked at before it is opened, so a FIFO is
+// refused without waiting on it and a device (/dev/zero) without reading
+// it; the open file is looked at again, so what is checked is what is read.
+// Returns "" or why it was not read: "does not exist", "is a folder", "is a
+// FIFO", "is a device", "is larger than N bytes", or the system's reason.
 std::string readRegularFile(const std::string& path, std::size_t maxBytes, std::string& bytes);
 
 // Calls `handler` with the signal's number when the user asks the program to

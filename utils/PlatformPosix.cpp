@@ -103,6 +103,10 @@ OutputFile openHeldOutput(const std::string& path) {
     close(fd);
     return refuse(OutputFile::Refusal::NotRegular, describe(kindOfMode(info.st_mode)));
   }
+  if (info.st_nlink > 1) {
+    close(fd);
+    return refuse(OutputFile::Refusal::Shared, "has more than one link (a hard link: another name shares its contents)");
+  }
   if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
     const int error = errno;
     close(fd);
@@ -125,19 +129,51 @@ OutputFile openHeldOutput(const std::string& path) {
   return out;
 }
 
+TargetFacts targetFacts(const std::string& path, const std::string& folder) {
+  TargetFacts facts;
+  struct stat info {};
+  if (lstat(path.c_str(), &info) != 0) return facts;
+  facts.kind = kindOfMode(info.st_mode);
+  facts.links = static_cast<unsigned long>(info.st_nlink);
+  struct stat home {};
+  const uid_t me = geteuid();
+  // rename(2)'s rule for sticky folders; root (CAP_FOWNER) is exempt.
+  facts.anotherUsersInStickyFolder = me != 0 && stat(folder.c_str(), &home) == 0 && (home.st_mode & S_ISVTX) &&
+                                     info.st_uid != me && home.st_uid != me;
+  return facts;
+}
+
+std::string probeNewFile(const std::string& stem) {
+  std::string pattern = stem + "XXXXXX";
+  std::vector<char> name(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  const int fd = mkstemp(name.data());
+  if (fd < 0) {
+    if (errno == ENAMETOOLONG) return "name is too long: the hidden temporary file beside it cannot be named";
+    return std::string("cannot create a file there: ") + std::strerror(errno);
+  }
+  close(fd);
+  unlink(name.data());
+  return "";
+}
+
 std::string readRegularFile(const std::string& path, std::size_t maxBytes, std::string& bytes) {
-  // O_NONBLOCK: a FIFO is refused, not waited on; the size is read from the
-  // open file, so what is checked is what is read.
+  // Looked at before opening: a FIFO is never opened (an open for reading
+  // would wait for a writer), a device never read.
+  struct stat info {};
+  if (stat(path.c_str(), &info) != 0) return errno == ENOENT ? "does not exist" : std::strerror(errno);
+  if (!S_ISREG(info.st_mode)) return describe(kindOfMode(info.st_mode));
+  // O_NONBLOCK: a FIFO swapped in meanwhile is not waited on either; the
+  // open file is looked at again, so what is checked is what is read.
   const int fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return std::strerror(errno);
-  struct stat info {};
   std::string why;
   if (fstat(fd, &info) != 0)
     why = std::strerror(errno);
   else if (!S_ISREG(info.st_mode))
-    why = "not a regular file";
+    why = describe(kindOfMode(info.st_mode));
   else if (static_cast<unsigned long long>(info.st_size) > maxBytes)
-    why = "larger than " + std::to_string(maxBytes) + " bytes";
+    why = "is larger than " + std::to_string(maxBytes) + " bytes";
   if (why.empty()) {
     bytes.resize(static_cast<std::size_t>(info.st_size));
     std::size_t got = 0;

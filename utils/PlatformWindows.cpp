@@ -204,6 +204,11 @@ OutputFile openHeldOutput(const std::string& path) {
     return refuse(kind == FileKind::Link ? OutputFile::Refusal::Link : OutputFile::Refusal::NotRegular,
                   describe(kind));
   }
+  BY_HANDLE_FILE_INFORMATION info{};
+  if (GetFileInformationByHandle(handle, &info) && info.nNumberOfLinks > 1) {
+    CloseHandle(handle);
+    return refuse(OutputFile::Refusal::Shared, "has more than one link (a hard link: another name shares its contents)");
+  }
   if (!SetEndOfFile(handle)) {
     const DWORD error = GetLastError();
     CloseHandle(handle);
@@ -222,18 +227,50 @@ OutputFile openHeldOutput(const std::string& path) {
   return out;
 }
 
+TargetFacts targetFacts(const std::string& path, const std::string&) {
+  TargetFacts facts;
+  facts.kind = fileKind(path);
+  if (facts.kind == FileKind::Absent) return facts;
+  // Windows has no sticky folders; its hard links count as on POSIX.
+  const HANDLE handle = openForInspection(path);
+  BY_HANDLE_FILE_INFORMATION info{};
+  facts.links = 1;
+  if (handle != INVALID_HANDLE_VALUE) {
+    if (GetFileInformationByHandle(handle, &info)) facts.links = info.nNumberOfLinks;
+    CloseHandle(handle);
+  }
+  return facts;
+}
+
+std::string probeNewFile(const std::string& stem) {
+  try {
+    removeFile(writeNewFile(stem, ""));
+  } catch (const std::exception& error) {
+    const std::string why = error.what();
+    if (why.find(message(ERROR_FILENAME_EXCED_RANGE)) != std::string::npos)
+      return "name is too long: the hidden temporary file beside it cannot be named";
+    return "cannot create a file there: " + why.substr(why.find(": ") + 2);
+  }
+  return "";
+}
+
 std::string readRegularFile(const std::string& path, std::size_t maxBytes, std::string& bytes) {
+  if (isReservedDeviceName(path)) return describe(FileKind::Device);
   const HANDLE handle = CreateFileW(wide(path).c_str(), GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, nullptr,
                                     OPEN_EXISTING, FILE_FLAG_BACKUP_SEMANTICS, nullptr);
-  if (handle == INVALID_HANDLE_VALUE) return message(GetLastError());
+  if (handle == INVALID_HANDLE_VALUE) {
+    const DWORD error = GetLastError();
+    return error == ERROR_FILE_NOT_FOUND || error == ERROR_PATH_NOT_FOUND ? "does not exist" : message(error);
+  }
   std::string why;
   LARGE_INTEGER size{};
-  if (kindOfHandle(handle) != FileKind::Regular)
-    why = "not a regular file";
+  const FileKind kind = kindOfHandle(handle);
+  if (kind != FileKind::Regular)
+    why = describe(kind);
   else if (!GetFileSizeEx(handle, &size))
     why = message(GetLastError());
   else if (static_cast<unsigned long long>(size.QuadPart) > maxBytes)
-    why = "larger than " + std::to_string(maxBytes) + " bytes";
+    why = "is larger than " + std::to_string(maxBytes) + " bytes";
   if (why.empty()) {
     bytes.resize(static_cast<std::size_t>(size.QuadPart));
     std::size_t got = 0;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "Platform.h"
+#include "SafeFile.h"
 
 // CMake defines the source tree's root so that programs run from the build
 // directory find shaders without installing them, the build folder so that
@@ -109,10 +110,7 @@ bool isReadableFile(const std::string& path) {
 }
 
 std::string readSmallRegularFile(const std::string& path, std::size_t maxBytes) {
-  std::string bytes;
-  const std::string why = platform::readRegularFile(path, maxBytes, bytes);
-  if (!why.empty()) throw std::runtime_error(path + ": " + why);
-  return bytes;
+  return readBoundedFile(path, maxBytes, "the file");
 }
 
 bool isShaderDir(const std::string& path) { return isReadableFile(join(path, "scene.vert")); }

@@ -61,9 +61,10 @@ std::string sourceTreeFor(const std::string& executableDir, const std::string& b
 bool isShaderDir(const std::string& path);
 // A font candidate counts when it is a readable regular file.
 bool isReadableFile(const std::string& path);
-// The whole of `path`, a regular file of at most `maxBytes` (a shader): a
-// FIFO, a device such as /dev/zero, or a larger file is refused without
-// waiting or reading it. Throws std::runtime_error naming the path and why.
+// The whole of `path`, a regular file of at most `maxBytes`, through the
+// one bounded reader (readBoundedFile, SafeFile.h): a FIFO, a device such as
+// /dev/zero, or a larger file is refused without waiting or reading it.
+// Throws ReadRefused (a std::runtime_error) naming the path and why.
 std::string readSmallRegularFile(const std::string& path, std::size_t maxBytes);
 constexpr std::size_t MAX_SHADER_BYTES = 1 << 20;
 

@@ -1,21 +1,18 @@
 #pragma once
 
-#include <cstdio>
 #include <string>
+#include <utility>
+
+#include "StreamedFile.h"
 
 namespace odelab {
 
 // The window session's record of inputs that changed the simulation
 // (<test>_run_log.txt in --out-dir). Opened on the first entry, so a session
-// with no input leaves no file; closes itself. A failure to open is
-// reported once and the session goes on without a log.
+// with no input leaves no file; closes itself. A failure to open or
+// write is reported once and the session goes on without a log.
 class RunLog {
  public:
-  RunLog() = default;
-  RunLog(const RunLog&) = delete;
-  RunLog& operator=(const RunLog&) = delete;
-  ~RunLog();
-
   void setTarget(std::string path, std::string title) {
     path_ = std::move(path);
     title_ = std::move(title);
@@ -25,10 +22,8 @@ class RunLog {
   std::string write(double simulatedTime, long long step, const std::string& text);
 
  private:
-  std::string fail(const std::string& why);
-
   std::string path_, title_;
-  std::FILE* file_ = nullptr;
+  StreamedFile file_;  // the one writer of streamed outputs
   bool failed_ = false;
 };
 

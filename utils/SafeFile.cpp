@@ -19,6 +19,11 @@ std::string nameOf(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+// The hidden name beside `path` that its temporary files start with: the
+// replace stays within one file system, and mkstemp's suffix keeps two
+// writers apart.
+std::string temporaryStem(const std::string& path) { return folderOf(path) + "/." + nameOf(path) + "."; }
+
 std::runtime_error failure(const std::string& path, const std::string& why) {
   return std::runtime_error("cannot write '" + path + "': " + why);
 }
@@ -26,20 +31,44 @@ std::runtime_error failure(const std::string& path, const std::string& why) {
 }  // namespace
 
 std::string whyNotReplaceable(const std::string& path) {
-  const platform::FileKind kind = platform::fileKind(path);
-  // Absent (or its folder is: checked elsewhere) or a regular file.
-  if (kind == platform::FileKind::Absent || kind == platform::FileKind::Regular) return {};
-  return platform::describe(kind);
+  const platform::TargetFacts facts = platform::targetFacts(path, folderOf(path));
+  // Absent (or its folder is: whyNotWritable says so) or a regular file.
+  if (facts.kind != platform::FileKind::Absent && facts.kind != platform::FileKind::Regular)
+    return platform::describe(facts.kind);
+  // Written in place, the other names would change too; replaced, they
+  // would keep the old contents while this one moves on.
+  if (facts.links > 1) return "has more than one link (a hard link: another name shares its contents)";
+  if (facts.anotherUsersInStickyFolder)
+    return "is another user's file in a sticky folder, where only its owner may replace it";
+  return {};
+}
+
+std::string whyNotWritable(const std::string& path) {
+  const std::string folder = folderOf(path);
+  const std::string resolved = platform::canonicalPath(folder);
+  if (resolved.empty()) return "no such folder '" + folder + "'";
+  if (platform::fileKind(resolved) != platform::FileKind::Folder) return "'" + folder + "' is not a folder";
+  const std::string why = whyNotReplaceable(path);
+  if (!why.empty()) return why;
+  // The very name writeFileAtomically will use, made and removed: a name
+  // too long for it, a folder that refuses new files, fail here, not after
+  // the run.
+  return platform::probeNewFile(temporaryStem(path));
+}
+
+std::string readBoundedFile(const std::string& path, std::size_t maxBytes, const std::string& what) {
+  std::string bytes;
+  const std::string why = platform::readRegularFile(path, maxBytes, bytes);
+  if (!why.empty()) throw ReadRefused("cannot read " + what + " '" + path + "': " + why);
+  return bytes;
 }
 
 void writeFileAtomically(const std::string& path, const std::string& bytes) {
   const std::string why = whyNotReplaceable(path);
   if (!why.empty()) throw failure(path, why + "; only a regular file is replaced");
-  // A hidden name in the target folder: the replace stays within one file
-  // system, and two writers never share a temporary file.
   std::string temporary;
   try {
-    temporary = platform::writeNewFile(folderOf(path) + "/." + nameOf(path) + ".", bytes);
+    temporary = platform::writeNewFile(temporaryStem(path), bytes);
   } catch (const std::exception& error) {
     throw failure(path, error.what());
   }
@@ -68,6 +97,7 @@ std::FILE* openExclusiveOutput(const std::string& path) {
     case Refusal::None: return out.file;
     case Refusal::Link: throw failure(path, out.why + "; output files are never written through one");
     case Refusal::NotRegular: throw failure(path, out.why + "; output files are written only as regular files");
+    case Refusal::Shared: throw failure(path, out.why + "; output files are written only to a file of their own");
     case Refusal::Held: throw failure(path, "another run is writing it now; give each run its own --out-dir");
     case Refusal::Failed: break;
   }

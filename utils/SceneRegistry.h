@@ -21,6 +21,9 @@ struct SceneEntry {
 const std::vector<SceneEntry>& sceneRegistry();
 // The scene called `name`, or nullptr.
 const SceneEntry* findScene(const std::string& name);
+// The output files (names in --out-dir) of every scene, which a session
+// that may switch to any scene keeps its other files off.
+std::vector<std::string> outputFileNamesOfEveryScene();
 
 }  // namespace odelab
 

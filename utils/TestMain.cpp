@@ -5,6 +5,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "CommandLine.h"
 #include "CopyLine.h"
@@ -126,7 +127,11 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   app.footer(cli::keysHelp(scene));
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     cli::validateRunOptions(options);
-    cli::refuseOwnOutputs(options, scene.outputFileNames());
+    // The launcher's window may switch to any scene: every scene's files
+    // are this session's.
+    const std::vector<std::string> outputs = switching ? switching->outputFileNames() : scene.outputFileNames();
+    cli::refuseOwnOutputs(options, outputs);
+    cli::refuseUnwritableOutputs(options, outputs);
     cli::refuseRunShorterThanStep(options, scene.tuning().settings().step);
     cli::checkKnobs(app, scene.tuning().knobs(), scene.tuning().settings().step);
     scene.setRunOptions(options);

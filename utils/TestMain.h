@@ -30,6 +30,9 @@ class SceneSwitching {
   // every scene it may switch to (--seconds at least one step of each).
   // Throws UsageError naming the option and the scene.
   virtual void checkOptions(const RunOptions& options) const = 0;
+  // The output file names of every scene it may switch to, which the
+  // session's other files must not name.
+  virtual std::vector<std::string> outputFileNames() const = 0;
 };
 
 // With `switching` (the launcher), a window run may go on to other scenes.

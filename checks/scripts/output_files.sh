@@ -5,7 +5,8 @@
 # on"), checked on PROGRAM and its output FILE (Test2_output.txt, ...):
 #   - a whole run ends FILE with "# complete: ..." and records the run length
 #     asked for ("# run_seconds_asked: ...");
-#   - a planted symbolic link at FILE is not followed (status 1, target kept);
+#   - a planted symbolic link at FILE is refused before the run (status 2,
+#     target kept);
 #   - a second run into the same folder while the first runs is refused
 #     (status 1, "another run"), and the first run's file stays whole;
 #   - SIGTERM ends a headless run with status 143, "# incomplete: ... stopped
@@ -31,7 +32,7 @@ echo "precious" > "$root/target"
 ln -s "$root/target" "$file"
 "$program" --headless --seconds 0.1 >/dev/null 2>err.txt
 status=$?
-[ "$status" = 1 ] || fail "planted link: status $status, expected 1"
+[ "$status" = 2 ] || fail "planted link: status $status, expected 2 (refused before the run)"
 grep -q "error: cannot write '$file': is a symbolic link" err.txt && ok "planted link refused: $(head -1 err.txt)" ||
   fail "planted link: message '$(head -1 err.txt)'"
 [ "$(cat "$root/target")" = precious ] || fail "planted link: its target was overwritten"

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "../ResourcePaths.h"
+#include "../SafeFile.h"
 #include "RenderError.h"
 
 namespace odelab {
@@ -13,9 +14,9 @@ namespace {
 
 std::string readFile(const std::string& path) {
   try {
-    return readSmallRegularFile(path, MAX_SHADER_BYTES);
-  } catch (const std::runtime_error& error) {
-    throw ResourceError(std::string("cannot read shader ") + error.what());
+    return readBoundedFile(path, MAX_SHADER_BYTES, "shader");
+  } catch (const ReadRefused& error) {
+    throw ResourceError(error.what());
   }
 }
 
