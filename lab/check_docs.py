@@ -82,16 +82,25 @@ NUMBER = re.compile(r"(?<![\w./])(-?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:[eE][
 CITATION = re.compile(r"\[([^\]\n]+)\]\(([^)\s#]+\.csv)#([^)\s]+)\)")
 
 
+def uncoded(text):
+    """The text with code blocks, HTML comments and `code spans` blanked (line
+    breaks kept): a citation written as an example is none."""
+    text = re.sub(r"```.*?```", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    text = re.sub(r"<!--.*?-->", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    return re.sub(r"`[^`\n]*`", " ", text)
+
+
 def citations(text):
     """(line number, link text, CSV path as written, row key) of every
     citation link in a document's text."""
+    text = uncoded(text)
     return [(text[:m.start()].count("\n") + 1, m.group(1), m.group(2), m.group(3)) for m in CITATION.finditer(text)]
 
 
 def without_citations(text):
     """The text with each citation's link blanked (its figures are checked
     against their rows instead)."""
-    return CITATION.sub(" ", text)
+    return CITATION.sub(" ", uncoded(text))
 
 
 def cited_rows(rows, key):

@@ -58,6 +58,9 @@ class DocCitations(unittest.TestCase):
         self.assertIn("11900 kg cites no CSV row", problems[0])
         self.assertEqual(self.problems(text, "doc/page.md uncited  # not cited yet\n"), [])
 
+    def test_a_citation_in_a_code_span_is_an_example(self):
+        self.assertEqual(self.problems("the form: `[figure](path.csv#column=value)`.\n"), [])
+
     def test_the_committed_docs_pass(self):
         root = Path(__file__).resolve().parents[2]
         failing = [p for waiting, p in check_docs.check(root)[0] if not waiting]
