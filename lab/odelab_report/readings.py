@@ -20,7 +20,8 @@ SAID = {"erp": "ERP {}", "cfm": "CFM {}", "seconds": "{} s", "bob_mass_kg": "{} 
 
 # Columns that give a figure (a quantity); other columns a lookup reads
 # (costs, solvers, steps, counts) are only compared for their setting.
-QUANTITY_COLUMNS = {"value", "error", "heaviest_held_kg", "tallest_plates", "seconds_upright", "max_velocity"}
+QUANTITY_COLUMNS = {"value", "error", "heaviest_held_kg", "tallest_plates", "seconds_upright", "max_velocity",
+                    "fall_time_error"}
 
 # The quantity a column, a peers.csv `quantity` or a thesis-values.csv `name` stands for.
 QUANTITIES = {
@@ -30,6 +31,7 @@ QUANTITIES = {
     "real_time_factor": "real-time factor", "fallen_fraction": "dominoes fallen",
     "heaviest_held_kg": "heaviest cube held", "tallest_plates": "tallest stack",
     "tallest_aligned_plates": "tallest stack", "seconds_upright": "seconds upright",
+    "fall_time_error": "fall-time error",
     "joint_error": "joint error", "max_joint_error": "joint error",
     "elongation": "relative elongation", "max_relative_elongation": "relative elongation",
     "apex_error_20": "apex error after 20 bounces", "max_velocity": "velocity stopped",
