@@ -1,8 +1,12 @@
 """Unit checks of the report's physics scores: test6's fall time against the
 analytic inverted pendulum (inverted_pendulum.py, experiments/remedy_test6.py,
-the test6 row of the first screen, the engines' test6 figure left unranked).
+the test6 row of the first screen, the engines' test6 figure left unranked);
+test2's energy errors against the swing's energy m g d, not E0
+(swing_energy.py, and each place the report gives one).
 Run: /usr/bin/python3 -m unittest discover -s lab/tests (CTest: lab_executor_units, lab_physics_scores)."""
 
+import collections
+import csv
 import math
 import re
 import shutil
@@ -14,9 +18,10 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from odelab_report import first_screen, inverted_pendulum  # noqa: E402
+from odelab_report import first_screen, inverted_pendulum, swing_energy  # noqa: E402
 from odelab_report.claims import Data, Sentences  # noqa: E402
-from odelab_report.experiments import peers  # noqa: E402
+from odelab_report.experiments import peers, speed_accuracy, thesis  # noqa: E402
+from odelab_report.runner import LabError  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 COMMITTED = ROOT / "doc" / "results"
@@ -114,6 +119,69 @@ class EnginesTest6Unranked(unittest.TestCase):
         self.assertEqual(headline, [])
         self.assertIn("Not ranked: standing longer is not better physics", text)
         self.assertNotIn("is best with", text)
+
+
+
+class FakeRun:
+    """A run's metrics, as runner.RunResult gives them."""
+
+    def __init__(self, metrics, rc=0):
+        self.metrics, self.rc = metrics, rc
+
+    def m(self, name):
+        return self.metrics.get(name)
+
+
+E0 = 0.43 * 9.823 * 7.0  # m g H: released horizontal, the potential's zero on the ground
+SWING = 0.43 * 9.823 * (0.1 * 1.5 + 0.33 * 3.3) / 0.43  # m g d
+
+
+class SwingEnergy(unittest.TestCase):
+    """test2's relative energy errors divide by m g d, not by E0 (2.4x larger)."""
+
+    def test_the_inputs_are_the_scenes_own_constants(self):
+        header = "tests/shared/SceneConstants.h"
+        for mine, name in ((swing_energy.HINGE_HEIGHT_M, "ANCHOR_HEIGHT"), (swing_energy.ROD_LENGTH_M, "ROD_LENGTH"),
+                           (swing_energy.ROD_MASS_KG, "ROD_MASS"), (swing_energy.BOB_MASS_KG, "BOB_MASS"),
+                           (swing_energy.BOB_DISTANCE_M, "BOB_DISTANCE")):
+            self.assertEqual(mine, constant(header, name, "test2"), name)
+        self.assertEqual(swing_energy.GRAVITY_M_S2, constant("utils/WorldSettings.h", "SURFACE_GRAVITY"))
+
+    def test_m_g_d_and_the_dilution_of_e0(self):
+        self.assertAlmostEqual(swing_energy.swing_joules(), SWING)
+        self.assertAlmostEqual(swing_energy.start_joules(), E0)
+        self.assertAlmostEqual(E0 / SWING, 2.43, delta=0.005)
+        # The committed report's test2 run started at m g H: the constants describe the scene that ran.
+        with open(ROOT / "doc/results/energy-test2-summary.csv") as f:
+            row = next(csv.DictReader(line for line in f if not line.startswith("#")))
+        self.assertAlmostEqual(float(row["energy_start_J"]), E0, delta=1e-6 * E0)
+        for words in ("m g d = 12.17", "E0 = m g H = 29.567", "m = 0.43 kg", "g = 9.823", "d = 2.8814 m"):
+            self.assertIn(words, swing_energy.header())
+
+    def test_a_run_from_another_start_is_refused(self):
+        with self.assertRaises(LabError):
+            swing_energy.largest_error(E0 * 1.01, E0, E0 * 1.01)
+        self.assertAlmostEqual(swing_energy.largest_error(E0, E0 - 0.1, E0 + 0.05), 0.1 / SWING)
+
+    def test_the_speed_sweep_reads_the_error_per_swing_energy(self):
+        run = FakeRun({"energy_start_J": E0, "energy_min_J": E0 - 0.2, "energy_max_J": E0 + 0.1})
+        self.assertAlmostEqual(speed_accuracy.SpeedTest2().error_of(run), 0.2 / SWING)
+        self.assertIn("(m g d)", speed_accuracy.SpeedTest2.error_label)
+
+    def test_every_engines_test2_figure_is_per_swing_energy(self):
+        scene = next(s for s in peers.SCENES if s.name == "test2")
+        ctx = types.SimpleNamespace(quick=False, runner=types.SimpleNamespace(
+            run=lambda spec: FakeRun({"energy_max_deviation": 0.01, "energy_start_J": E0})))
+        value, _ = peers.Peers().measure(ctx, scene, "bullet", [], 0.001)
+        self.assertAlmostEqual(value, 0.01 * E0 / SWING)
+        self.assertIn("(m g d)", scene.label)
+
+    def test_the_thesis_rows_value_is_per_swing_energy(self):
+        results = collections.defaultdict(lambda: FakeRun({}))
+        results["t2"] = FakeRun({"energy_start_J": E0, "energy_min_J": E0 - 0.3, "energy_max_J": E0})
+        rows = {r["name"]: r for r in thesis.Thesis.values(results) if r["key"] == "test2"}
+        self.assertNotIn("max_deviation", rows)
+        self.assertAlmostEqual(rows["max_swing_error"]["value"], 0.3 / SWING)
 
 
 if __name__ == "__main__":
