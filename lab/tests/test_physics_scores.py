@@ -20,7 +20,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from odelab_report import first_screen, inverted_pendulum, swing_energy  # noqa: E402
 from odelab_report.claims import Data, Sentences  # noqa: E402
-from odelab_report.experiments import peers, speed_accuracy, thesis  # noqa: E402
+from odelab_report.experiments import limit_test10, peers, speed_accuracy, thesis  # noqa: E402
 from odelab_report.runner import LabError  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -182,6 +182,34 @@ class SwingEnergy(unittest.TestCase):
         rows = {r["name"]: r for r in thesis.Thesis.values(results) if r["key"] == "test2"}
         self.assertNotIn("max_deviation", rows)
         self.assertAlmostEqual(rows["max_swing_error"]["value"], 0.3 / SWING)
+
+
+
+class Test10Symbols(unittest.TestCase):
+    """test10's symbols mean one thing each: a the cube's half-size, w the
+    wall's thickness, h the step (as in test8's F h CFM / ERP)."""
+
+    def test_the_csv_header_defines_them(self):
+        for words in ("a the cube's half-size", "w the wall's thickness", "h the step",
+                      "geometric_prediction = (a + w) / h", "guaranteed_stop_velocity = (a + w/2) / h"):
+            self.assertIn(words, limit_test10.SYMBOLS)
+
+    def test_no_text_uses_h_for_the_half_size(self):
+        places = [*sorted((ROOT / "lab/odelab_report").rglob("*.py")),
+                  *(ROOT / name for name in ("doc/lab.md", "doc/peers.md", "doc/tests/test10.md"))]
+        for path in places:
+            text = path.read_text()
+            for old in ("h + t", "(h+t)", "2h + t"):
+                self.assertNotIn(old, text, f"{path.relative_to(ROOT)} writes {old!r}")
+
+    def test_doc_lab_defines_the_symbols_once(self):
+        text = (ROOT / "doc/lab.md").read_text()
+        self.assertEqual(text.count("### Symbols"), 1)
+        start = text.index("### Symbols")
+        section = " ".join(text[start:text.index("\n###", start + 3)].split())
+        for words in ("a the cube's half-size", "w the wall's thickness", "h the step", "|E - E0| / (m g d)",
+                      "theta_0 the start tilt"):
+            self.assertIn(words, section)
 
 
 if __name__ == "__main__":

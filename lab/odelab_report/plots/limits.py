@@ -102,9 +102,9 @@ def velocity_limit(out_dir, stem, rows):
     fine = [10 ** (math.log10(min(steps)) + i * (math.log10(max(steps)) - math.log10(min(steps))) / 50)
             for i in range(51)]
     ax.plot(fine, [(half_size + wall) / s for s in fine], color="grey", linestyle="--",
-            label="geometric prediction (h + t) / step")
+            label="geometric prediction (a + w) / h")
     ax.plot(fine, [(half_size + wall / 2) / s for s in fine], color="grey", linestyle=":",
-            label="every phase stopped below (h + t/2) / step")
+            label="every phase stopped below (a + w/2) / h")
     ax.plot(steps, [r["max_velocity"] for r in rows], marker="o", color="#1f77b4", label="measured limit")
     banded = [r for r in rows if r["velocities_stopped_in_band"]]
     for i, r in enumerate(banded):
@@ -116,9 +116,9 @@ def velocity_limit(out_dir, stem, rows):
     ax.plot([1e-3], [350], **HAVOK_STYLE, label="Havok 6.5 (quoted): 350 m/s")
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("step (s)")
+    ax.set_xlabel("step h (s)")
     ax.set_ylabel("highest launch velocity with every launch stopped (m/s)")
-    ax.set_title(f"test10: cube (h = {half_size:g} m) against a {wall:g} m wall, ERP 0.3, CFM 0")
+    ax.set_title(f"test10: cube (half-size a = {half_size:g} m) against a wall (w = {wall:g} m), ERP 0.3, CFM 0")
     ax.legend(loc="upper right")
     return save(fig, out_dir, stem)
 
