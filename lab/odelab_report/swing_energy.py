@@ -65,6 +65,15 @@ def of_run(r):
     return None if None in (start, low, high) else largest_error(start, low, high)
 
 
+def drift_of_run(r):
+    """A test2 run's (last - first) / (m g d): the energy it gained (lost: below 0) by its end."""
+    start, last = r.m("energy_start_J"), r.m("energy_last_J")
+    if None in (start, last):
+        return None
+    largest_error(start, start, start)  # the same rig check
+    return (last - start) / swing_joules()
+
+
 def header():
     """The definition and its inputs, for a CSV header and a definition cell."""
     return (f"energy errors relative to the swing's energy m g d = {swing_joules():.6g} J, not to E0 = m g H = "

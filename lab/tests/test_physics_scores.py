@@ -183,6 +183,12 @@ class SwingEnergy(unittest.TestCase):
         self.assertNotIn("max_deviation", rows)
         self.assertAlmostEqual(rows["max_swing_error"]["value"], 0.3 / SWING)
 
+    def test_the_drift_is_per_swing_energy(self):
+        results = collections.defaultdict(lambda: FakeRun({}))
+        results["t2_cfm"] = FakeRun({"energy_start_J": E0, "energy_last_J": E0 - 0.2, "energy_drift": -0.2 / E0})
+        rows = {r["name"]: r for r in thesis.Thesis.values(results) if r["key"] == "test2_cfm"}
+        self.assertAlmostEqual(rows["drift"]["value"], -0.2 / SWING)
+
 
 
 class Test10Symbols(unittest.TestCase):
