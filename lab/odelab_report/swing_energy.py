@@ -79,5 +79,6 @@ def header():
     return (f"energy errors relative to the swing's energy m g d = {swing_joules():.6g} J, not to E0 = m g H = "
             f"{start_joules():.6g} J (potential zero on the ground, H = {HINGE_HEIGHT_M:g} m the hinge's height; "
             f"E0 / (m g d) = {start_joules() / swing_joules():.4g}): m = {mass():.4g} kg the rod ({ROD_MASS_KG:g} kg, "
-            f"{ROD_LENGTH_M:g} m) and the bob ({BOB_MASS_KG:g} kg at {BOB_DISTANCE_M:g} m), g = {GRAVITY_M_S2:g} m/s^2, "
+            f"{ROD_LENGTH_M:g} m) and the bob ({BOB_MASS_KG:g} kg at {BOB_DISTANCE_M:g} m), "
+            f"g = {GRAVITY_M_S2:g} m/s^2, "
             f"d = {centre_distance():.6g} m the hinge to their centre of mass (how far it falls from horizontal)")

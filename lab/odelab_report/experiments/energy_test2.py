@@ -104,7 +104,8 @@ class EnergyTest2(Experiment):
             "period_s", "period_exact_s", "thesis_min_J", "thesis_max_J", "thesis_variation"], [dict(
                 seconds=seconds, energy_start_J=start, swing_energy_J=swing, energy_min_J=r.m("energy_min_J"),
                 energy_max_J=r.m("energy_max_J"), variation=variation, max_swing_error=worst,
-                drift=swing_energy.drift_of_run(r), period_s=r.m("period_seconds"), period_exact_s=r.m("period_exact_seconds"),
+                drift=swing_energy.drift_of_run(r), period_s=r.m("period_seconds"),
+                period_exact_s=r.m("period_exact_seconds"),
                 thesis_min_J=thesis_min, thesis_max_J=thesis_max, thesis_variation=thesis_variation)],
             notes=["test2's metrics over every step of the run above: variation = (max - min) / max of the total "
                    "energy (the thesis's definition), max_swing_error = largest |E - E0| / (m g d), drift = (last - "

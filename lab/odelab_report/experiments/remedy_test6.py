@@ -57,9 +57,9 @@ _SYMMETRIC = {"dw": q("remedy-test6.csv", "seconds_upright", "list", setting=REM
               "dw_fell": q("remedy-test6.csv", "fell", "list", setting=REMEDY),
               "dw0": "dw[0]", "k": "len(dw)"}
 SYMMETRIC = Claim("remedy-test6.symmetric",
-                  "With no start tilt dWorldStep falls at {dw0:n4} s in each of its {k:n} runs (it is deterministic: the seed "
-                  "orders only QuickStep's constraints), as if started {dw_eq:k2} "
-                  "degrees off upright; QuickStep 20 falls at {qs:r} s, as if started {qs_eq:r} degrees off.",
+                  "With no start tilt dWorldStep falls at {dw0:n4} s in each of its {k:n} runs (it is "
+                  "deterministic: the seed orders only QuickStep's constraints), as if started {dw_eq:k2} degrees "
+                  "off upright; QuickStep 20 falls at {qs:r} s, as if started {qs_eq:r} degrees off.",
                   _SYMMETRIC, "all(f == 1 for f in dw_fell) and min(dw) == max(dw)")
 
 
