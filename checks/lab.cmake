@@ -60,3 +60,12 @@ set_tests_properties(lab_doc_citations PROPERTIES LABELS lab TIMEOUT 60)
 add_test(NAME lab_first_screen_rules
          COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_first_screen.py)
 set_tests_properties(lab_first_screen_rules PROPERTIES LABELS lab TIMEOUT 60)
+
+# The report's physics scores on their own (also part of lab_executor_units):
+# test6's fall time against the analytic inverted pendulum from the scene's own
+# constants, its first-screen row, the engines' untilted test6 left unranked;
+# test2's energy errors per swing energy m g d.
+# (Debian's Python, as lab_executor_units: the experiments import matplotlib.)
+add_test(NAME lab_physics_scores
+         COMMAND /usr/bin/python3 -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_physics_scores.py)
+set_tests_properties(lab_physics_scores PROPERTIES LABELS lab TIMEOUT 60)

@@ -20,16 +20,19 @@ SAID = {"erp": "ERP {}", "cfm": "CFM {}", "seconds": "{} s", "bob_mass_kg": "{} 
 
 # Columns that give a figure (a quantity); other columns a lookup reads
 # (costs, solvers, steps, counts) are only compared for their setting.
-QUANTITY_COLUMNS = {"value", "error", "heaviest_held_kg", "tallest_plates", "seconds_upright", "max_velocity"}
+QUANTITY_COLUMNS = {"value", "error", "heaviest_held_kg", "tallest_plates", "seconds_upright", "max_velocity",
+                    "fall_time_error"}
 
 # The quantity a column, a peers.csv `quantity` or a thesis-values.csv `name` stands for.
 QUANTITIES = {
     "max_rebound_error": "rebound error", "rebound_error": "rebound error",
     "variation": "energy (max-min)/max", "energy_max_deviation": "energy |E-E0|/E0",
-    "max_deviation": "energy |E-E0|/E0",
+    "max_deviation": "energy |E-E0|/E0", "energy_swing_error": "energy |ΔE|/mgd",
+    "max_swing_error": "energy |ΔE|/mgd",
     "real_time_factor": "real-time factor", "fallen_fraction": "dominoes fallen",
     "heaviest_held_kg": "heaviest cube held", "tallest_plates": "tallest stack",
     "tallest_aligned_plates": "tallest stack", "seconds_upright": "seconds upright",
+    "fall_time_error": "fall-time error",
     "joint_error": "joint error", "max_joint_error": "joint error",
     "elongation": "relative elongation", "max_relative_elongation": "relative elongation",
     "apex_error_20": "apex error after 20 bounces", "max_velocity": "velocity stopped",
@@ -39,7 +42,7 @@ QUANTITIES = {
 # Settings fixed by the experiment that wrote a file (file -> facts), or one
 # scene's / thesis row's part of it ((file, key) -> facts).
 FIXED = {
-    "speed-test2.csv": dict(quantity="energy |E-E0|/E0", erp=0.4, cfm=0, seconds=20),
+    "speed-test2.csv": dict(quantity="energy |ΔE|/mgd", erp=0.4, cfm=0, seconds=20),
     "speed-test8.csv": dict(quantity="relative elongation", erp=0.4, cfm=0, seconds=20, bob_mass_kg=5000),
     "speed-test9.csv": dict(quantity="apex error after 20 bounces", erp=0.2, cfm=0),
     ("thesis-values.csv", "test2"): dict(erp=0.4, cfm=0, seconds=60),

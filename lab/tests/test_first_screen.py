@@ -71,7 +71,7 @@ class OneReadingPerRow(unittest.TestCase):
         self.assertEqual(first_screen.cell(sentences, peer8, setting8, "engines read", "-"), "n/a: engines read 20 s")
         _, (_, setting2), _, _, _, cheapest2, _ = rows["test2"]
         self.assertEqual(first_screen.cell(sentences, cheapest2, setting2, "sweep reads", "-"),
-                         "n/a: sweep reads energy |E-E0|/E0")
+                         "n/a: sweep reads energy |ΔE|/mgd")
 
     def test_a_source_that_did_not_run_is_absent_not_another_quantity(self):
         # --quick runs no other engine on test1: the cell says so.

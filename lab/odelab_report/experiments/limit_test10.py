@@ -1,5 +1,5 @@
 """test10: the highest launch velocity with every launch stopped, at steps
-log-spaced from 1e-2 to 1e-4, beside v = (h + t) / step."""
+log-spaced from 1e-2 to 1e-4, beside v = (a + w) / h (SYMBOLS)."""
 
 from .. import markdown as md
 from ..claims import Claim, q, slot
@@ -8,6 +8,10 @@ from ..runner import RunSpec
 from .base import Experiment, Outcome, log_space
 
 BAND_FACTOR = 1.6
+# The geometry's symbols, defined once here (each CSV of test10 says them; doc/lab.md too):
+# h is the step, as in ODE's own ERP and CFM formulas and test8's estimate F h CFM / ERP.
+SYMBOLS = ("symbols: a the cube's half-size (cube_half_size_m), w the wall's thickness (wall_thickness_m), "
+           "h the step (step_s); geometric_prediction = (a + w) / h, guaranteed_stop_velocity = (a + w/2) / h")
 
 
 def _scan(column, agg="one", **where):
@@ -19,7 +23,7 @@ _LIMITS = {"a": _scan("max_velocity", step_s=0.001), "b": _scan("max_velocity", 
 # the headline's reading: the finer step stops faster cubes, measured and predicted
 _FINER_STOPS_FASTER = "a < b and pa < pb"
 _HEADLINE = ("test10: the wall stops every cube up to {a:n4} m/s at step 0.001 and {b:n4} m/s at 0.0001 (prediction "
-             "(h + t)/step: {pa:n4} / {pb:n4} m/s")
+             "(a + w) / h: {pa:n4} / {pb:n4} m/s")
 HEADLINE = [Claim("headline.test10", _HEADLINE + "; thesis: {ta:n} / about {tb:n}).",
                   dict(_LIMITS, ta=q("thesis.csv", "thesis_figure", key="test10_a"),
                        tb=q("thesis.csv", "thesis_figure", key="test10_b")), _FINER_STOPS_FASTER),
@@ -27,11 +31,11 @@ HEADLINE = [Claim("headline.test10", _HEADLINE + "; thesis: {ta:n} / about {tb:n
 _ALL = {"v": _scan("max_velocity", "list"), "g": _scan("geometric_prediction", "list"),
         "g2": _scan("guaranteed_stop_velocity", "list"), "ratios": "[a / b for a, b in zip(v, g)]"}
 READING = {
-    "ratio": Claim("limit-test10.ratio", "the measured limit is {ratios:r} times v = (h + t) / step across the "
-                   "steps (the column limit / (h+t)/step).", _ALL, "len(ratios) > 1"),
-    "phase": [Claim("limit-test10.phase", "At every step the limit is at or above (h + t/2) / step, below which "
+    "ratio": Claim("limit-test10.ratio", "the measured limit is {ratios:r} times v = (a + w) / h across the "
+                   "steps (the column limit / ((a + w) / h)).", _ALL, "len(ratios) > 1"),
+    "phase": [Claim("limit-test10.phase", "At every step the limit is at or above (a + w/2) / h, below which "
                     "every arrival phase is stopped;", _ALL, "all(a >= b for a, b in zip(v, g2))"),
-              Claim("limit-test10.phase.below", "At some step the limit is below (h + t/2) / step, which every "
+              Claim("limit-test10.phase.below", "At some step the limit is below (a + w/2) / h, which every "
                     "arrival phase should pass: the geometry does not explain it;", _ALL,
                     "any(a < b for a, b in zip(v, g2))")],
 }
@@ -83,7 +87,7 @@ class LimitTest10(Experiment):
                             notes=["test10 --headless --find-max-velocity --step S --band-factor 1.6 --launches 1 "
                                    "(ERP 0.3, CFM 0, QuickStep 20, fixed launch point x = -4)",
                                    "failure rule (test10's): a launch fails when the whole cube ends beyond the "
-                                   "wall's far face"])
+                                   "wall's far face", SYMBOLS])
         ctx.register_files(plots.velocity_limit(ctx.out_dir, "limit-test10", rows))
         table_rows = []
         for row in rows:
@@ -101,8 +105,10 @@ launch up to it stopped, found by test10's scan (1 m/s steps to 1000 m/s, 0.1%
 above); after the first failure the scan goes on to {BAND_FACTOR} times it, to show
 velocities that are stopped again (the band). ERP 0.3, CFM 0, QuickStep 20,
 surface layer 0, one launch per velocity from the fixed launch point.
+Symbols: a the cube's half-size ({md.num(rows[0]["cube_half_size_m"])} m), w the wall's thickness
+({md.num(rows[0]["wall_thickness_m"])} m), h the step.
 
-{md.table(["step (s)", "limit (m/s)", "(h + t) / step", "(h + t/2) / step", "limit / (h+t)/step",
+{md.table(["step h (s)", "limit (m/s)", "(a + w) / h", "(a + w/2) / h", "limit / ((a + w) / h)",
            "band above the limit"], table_rows)}
 
 {md.figure("limit-test10", "test10: highest velocity with every launch stopped against the step (log-log), "
@@ -111,7 +117,7 @@ surface layer 0, one launch per velocity from the fixed launch point.
 {md.files_line([csv])}
 
 How to read it: {slot("ratio")} {slot("phase")}
-between (h + t/2) / step and (h + t) / step whether a cube is stopped depends on where it
+between (a + w/2) / h and (a + w) / h whether a cube is stopped depends on where it
 happens to be at the steps around the wall, which is why bands of stopped velocities appear
 above the first failure."""
         return Outcome(text, [HEADLINE], claims=READING)

@@ -8,7 +8,7 @@ from ..claims import Claim, q
 from ..plots import remedies as plots
 from ..runner import RunSpec, median
 from .base import Experiment, Outcome
-from .limit_test10 import scan_row, scan_spec
+from .limit_test10 import SYMBOLS, scan_row, scan_spec
 
 SCAN_LIMIT = 10000.0   # m/s: the issue asks for no pass up to 10,000 m/s, for every case below
 TARGET = 10000.0
@@ -138,7 +138,7 @@ class RemedyTest10(Experiment):
             "as the case says (x5: 5)",
             f"kind=cost: {launches} launches at the velocity, the program's wall_seconds, median of {repeats} runs; "
             "extra_*: median over the repeats of --ccd's over plain's, each pair run at the same time, minus 1; "
-            "_min / _max: the least and largest pair"])
+            "_min / _max: the least and largest pair", SYMBOLS])
         ctx.register_files(plots.ccd(ctx.out_dir, "remedy-test10", rows, SCAN_LIMIT, TARGET))
         scan_table = [[x["setting"], x["case"], md.num(x["step_s"]),
                        (f"none up to {md.num(SCAN_LIMIT)}" if not x["first_failure_velocity"]
