@@ -62,7 +62,7 @@ class ClaimRules(unittest.TestCase):
 
     def test_iterations_gain_inside_the_scatter_is_no_reproduction(self):
         def results(f8, f20):
-            return {"t3": [Fake(real_time_factor=x, active_bodies=5) for x in f8],
+            return {"c_t3_8_on": [Fake(real_time_factor=x, active_bodies=5) for x in f8],
                     "c_t3_20_on": [Fake(real_time_factor=x, active_bodies=5) for x in f20]}
         self.assertEqual(claim("test3_iterations_on", results([1.2, 1.21, 1.19], [1.0, 1.01, 0.99]))[1], "reproduced")
         self.assertEqual(claim("test3_iterations_on", results([1.2, 1.0, 1.19], [1.0, 1.01, 0.99]))[1], "differs")

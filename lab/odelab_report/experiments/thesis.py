@@ -166,10 +166,10 @@ class Thesis(Experiment):
             specs.update(sweep.specs())
         # The thesis's claims without a figure (thesis_claims.py).
         specs.update(claims.specs(q, h4, s8, n_small, SPAWN_INTERVAL, SETTLE))
-        timed.update(claims.timed(q))
         for space in ("simple", "hash"):
             specs[f"t5_{space}_{n_large}_4"] = stack_spec(space, 20, 0.001, n_large, extra=("--max-contacts", 4))
-        ctx.expect(len(specs) + len(timed))
+        claim_timed = claims.timed_specs(q)
+        ctx.expect(len(specs) + len(timed) + len(claim_timed))
         keys = list(specs)
         results = dict(zip(keys, ctx.runner.map([specs[k] for k in keys])))
         ctx.advance(len(specs))
@@ -177,6 +177,8 @@ class Thesis(Experiment):
         timed_results = ctx.runner.parallel([lambda a=a: ctx.runner.run_timed(*a, repeats) for a in timed.values()])
         results.update({k: v for k, v in zip(timed, timed_results)})
         ctx.advance(len(timed))
+        results.update(claims.split_timed(ctx.runner.map(claim_timed)))
+        ctx.advance(len(claim_timed))
 
         second = self.second_build(ctx, specs, timed, keys)
         rows = []
@@ -263,6 +265,9 @@ Rules and commands (every command adds `--headless`):
         repeats = 1 if ctx.quick else 3
         results.update(zip(timed, runner.parallel([lambda a=a: kept(lambda: runner.run_timed(*a, repeats))
                                                    for a in timed.values()])))
+        claim_timed = kept(lambda: runner.map(claims.timed_specs(ctx.quick)))
+        if claim_timed:
+            results.update(claims.split_timed(claim_timed))
         q = ctx.quick
         n_small, n_large = (15, 30) if q else (40, 90)
         judged = []
