@@ -99,13 +99,15 @@ def judges(r, q, s8):
         solver = var_with >= var_without / 5
         verdict = "reproduced" if spin or solver else "differs"
         cause = ("the spin left out of the kinetic energy" if spin and not solver else
-                 "the solver" if solver and not spin else "both" if spin else "neither")
+                 "the hinge's stretch (the thesis's cause, as in test8)" if solver and not spin else
+                 "both" if spin else "neither")
         return (f"(max - min)/max without the spin {md.pct(var_without, 2)}, the spin's largest share "
                 f"{md.pct(share, 2)}, with the spin {md.pct(var_with, 2)}", verdict,
-                f"the dip is measured; its cause: {cause} (the spin's energy peaks where the swing is fastest, "
-                "at the bottom)",
+                f"the dip is measured; its cause: {cause}; counting the spin, what the stretch can leave is "
+                f"{md.pct(var_with, 2)} (the spin's energy is largest where the swing is fastest, at the bottom)",
                 f"the dip's cause is the left-out spin when the variation without it is within {CLOSE}x of the "
-                "spin's largest share; the solver when the variation with it is at least a fifth of that",
+                "spin's largest share; the hinge's stretch when the variation with the spin counted is at least a "
+                "fifth of that",
                 "test2 --erp 0.4 --cfm 0 --step 0.001 --seconds 60 [--no-rotational-energy]")
 
     def test2_erp0(reference):
