@@ -13,8 +13,8 @@ from odelab_report.experiments import thesis, thesis_claims as claims, thesis_ha
 
 
 class Fake:
-    def __init__(self, rc=0, **metrics):
-        self.rc, self.metrics = rc, metrics
+    def __init__(self, rc=0, cpu_seconds=1.0, **metrics):
+        self.rc, self.metrics, self.cpu_seconds = rc, metrics, cpu_seconds
 
     def m(self, name, default=None):
         value = self.metrics.get(name)
@@ -62,8 +62,8 @@ class ClaimRules(unittest.TestCase):
 
     def test_iterations_gain_inside_the_scatter_is_no_reproduction(self):
         def results(f8, f20):
-            return {"c_t3_8_on": [Fake(real_time_factor=x, active_bodies=5) for x in f8],
-                    "c_t3_20_on": [Fake(real_time_factor=x, active_bodies=5) for x in f20]}
+            return {"c_t3_8_on": [Fake(sim_seconds=x, active_bodies=5) for x in f8],
+                    "c_t3_20_on": [Fake(sim_seconds=x, active_bodies=5) for x in f20]}
         self.assertEqual(claim("test3_iterations_on", results([1.2, 1.21, 1.19], [1.0, 1.01, 0.99]))[1], "reproduced")
         self.assertEqual(claim("test3_iterations_on", results([1.2, 1.0, 1.19], [1.0, 1.01, 0.99]))[1], "differs")
 

@@ -85,8 +85,7 @@ def judges(r, q, s8):
         return (f"ERP 0.2: {erp.m('balls_bounced'):g} balls rebound, largest rebound error "
                 f"{erp.m('max_rebound_error'):.2g}; ERP 0: {zero.m('balls_bounced'):g}, {zero.m('max_rebound_error'):.2g}",
                 verdict,
-                ("ERP 0.2 makes a ball rebound that does not at ERP 0 (the push out of the ground adds a bounce)"
-                 if more else "no extra ball rebounds") + "; the measured balls' (e >= 0.1) rebound error is "
+                ("ERP 0.2 makes a ball rebound that does not at ERP 0" if more else "no extra ball rebounds") + "; the measured balls' (e >= 0.1) rebound error is "
                 + ("worse" if worse else "not worse (within 0.01)"),
                 "reproduced when ERP 0.2 makes more balls rebound than ERP 0 or its max_rebound_error exceeds "
                 "both 0.01 and ERP 0's", "test1 --erp 0.2|0 --cfm 0 --seconds 15")
@@ -135,16 +134,19 @@ def judges(r, q, s8):
                 "end", f"test3 --seconds {10 if q else 20} --auto-disable-threshold {ODE_THRESHOLD:g}")
 
     def test3_iterations_on(reference):
-        f8 = [x.m("real_time_factor") for x in r["c_t3_8_on"]]
-        f20 = [x.m("real_time_factor") for x in r["c_t3_20_on"]]
+        # Simulated seconds per CPU second of the process: steadier than the
+        # wall clock on a shared machine (doc/tests/test3.md).
+        f8 = [x.m("sim_seconds") / x.cpu_seconds for x in r["c_t3_8_on"]]
+        f20 = [x.m("sim_seconds") / x.cpu_seconds for x in r["c_t3_20_on"]]
         gain = median(f8) / median(f20) - 1
         separated = min(f8) > max(f20)
         near = THESIS_GAIN / CLOSE <= gain <= THESIS_GAIN * CLOSE
         verdict = "reproduced" if separated and near else ("partly" if separated else "differs")
         slower = max(f8) < min(f20)
         active8, active20 = r["c_t3_8_on"][0].m("active_bodies"), r["c_t3_20_on"][0].m("active_bodies")
-        return (f"{100 * gain:+.0f}% (8 iterations {median(f8):.3g} x [{min(f8):.3g}, {max(f8):.3g}], 20: "
-                f"{median(f20):.3g} x [{min(f20):.3g}, {max(f20):.3g}], {len(f8)} and {len(f20)} runs)", verdict,
+        return (f"{100 * gain:+.0f}% (simulated s per CPU s, 8 iterations {median(f8):.3g} [{min(f8):.3g}, "
+                f"{max(f8):.3g}], 20: {median(f20):.3g} [{min(f20):.3g}, {max(f20):.3g}], {len(f8)} and {len(f20)} "
+                "runs)", verdict,
                 ("8 iterations faster in every run" if separated else "8 iterations slower in every run" if slower
                  else "a tie within the runs' scatter")
                 + f"; bodies active at the end: {active8:g} at 8 iterations, {active20:g} at 20; physics only, where "
