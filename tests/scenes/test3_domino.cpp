@@ -74,6 +74,13 @@ class Domino : public AbstractWindow {
     declare(Knob::integer("dominoes", "dominoes", dominoCount_, 2, 1000)
                 .withOption("--dominoes", "number of dominoes along the spiral")
                 .rebuildsScene());  // the spiral is laid when the scene is built
+    // ODE's own thresholds are 0.01: there the thesis saw fallen plates stay
+    // active though they did not move, and raised them to 0.1.
+    declare(Knob::real("auto_disable_threshold", "auto-disable threshold", "m/s, rad/s", disableThreshold_, 0.0, 1e6)
+                .withOption("--auto-disable-threshold",
+                            "auto-disable linear (m/s) and angular (rad/s) velocity threshold (default the "
+                            "thesis's 0.1; ODE's own is 0.01)")
+                .rebuildsScene());
     useContactChoices(DEFAULT_MU);
   }
 
@@ -85,8 +92,8 @@ class Domino : public AbstractWindow {
  protected:
   void configureWorld() override {
     dWorldSetAutoDisableFlag(world(), noAutoDisable_ ? 0 : 1);
-    dWorldSetAutoDisableLinearThreshold(world(), AUTO_DISABLE_THRESHOLD);
-    dWorldSetAutoDisableAngularThreshold(world(), AUTO_DISABLE_THRESHOLD);
+    dWorldSetAutoDisableLinearThreshold(world(), disableThreshold_);
+    dWorldSetAutoDisableAngularThreshold(world(), disableThreshold_);
   }
 
   void buildScene() override {
@@ -116,7 +123,7 @@ class Domino : public AbstractWindow {
     lines.push_back(s.str());
     s.str("");
     s << "mu " << ContactChoices::muWords(contactMu()) << " (F lower, G raise)   auto-disable "
-      << (noAutoDisable_ ? "off" : "on, thresholds 0.1 / 0.1");
+      << (noAutoDisable_ ? "off" : "on, thresholds " + std::to_string(disableThreshold_));
     lines.push_back(s.str());
   }
 
@@ -126,6 +133,7 @@ class Domino : public AbstractWindow {
     m.set("chain_seconds", chainSeconds());
     m.set("active_bodies", activeBodies());
     m.set("auto_disable", noAutoDisable_ ? 0 : 1);
+    m.set("auto_disable_threshold", disableThreshold_);
     m.set("min_fallen_tilt_degrees", minFallenTilt());
   }
 
@@ -200,6 +208,7 @@ class Domino : public AbstractWindow {
   std::vector<double> fellAt_;  // simulated time each domino fell; < 0 while standing
   int dominoCount_ = DEFAULT_DOMINOES;
   bool noAutoDisable_ = false;
+  double disableThreshold_ = AUTO_DISABLE_THRESHOLD;
 };
 
 }  // namespace

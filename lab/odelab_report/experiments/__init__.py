@@ -14,9 +14,10 @@ from .remedy_test6 import RemedyTest6
 from .remedy_test10 import RemedyTest10
 from .speed_accuracy import SpeedTest2, SpeedTest8, SpeedTest9
 from .thesis import Thesis
+from .thesis_havok import ThesisHavok
 
 ALL = [
-    Thesis(),
+    Thesis(), ThesisHavok(),
     LimitTest4(), LimitTest10(), LimitTest5(), LimitTest8(), LimitTest9(), EnergyTest2(),
     SpeedTest2(), SpeedTest8(), SpeedTest9(),
     RemedyTest10(), RemedyTest4(), RemedyTest6(), RemedyTest5(),

@@ -16,6 +16,7 @@ from .limit_test5 import SETTLE, SPAWN_INTERVAL, stack_spec, step_cost
 from .limit_test8 import estimate, run_spec as test8_spec
 from .limit_test10 import scan_spec
 from . import thesis_choices as choices
+from . import thesis_claims as claims
 
 REFERENCE = Path(__file__).resolve().parents[2] / "reference" / "thesis-figures.csv"
 CLOSE = 1.5  # "about X" is reproduced when this build's figure is within a factor 1.5 of X
@@ -48,7 +49,7 @@ def about(measured, thesis):
 ROW_KEYS = ["test1", "test2", "test3", "test4_fast", "test4_small", "test5", "test6", "test7", "test8_a", "test8_b",
             "test8_c", "test9_a", "test9_b", "test10_a", "test10_b",
             "test0_hang", "test2_cfm", "test3_active", "test7_faster", "test8_settles", "test10_sharp",
-            "test10_settings"]
+            "test10_settings"] + claims.KEYS
 
 # The figures the first table and the docs quote, per row: (row key, name,
 # the run's key, its metric, definition). A run key naming repeats gives
@@ -167,9 +168,12 @@ class Thesis(Experiment):
         sweeps = choices.sweeps(q, h4, s8)
         for sweep in sweeps:
             specs.update(sweep.specs())
+        # The thesis's claims without a figure (thesis_claims.py).
+        specs.update(claims.specs(q, h4, s8, n_small, SPAWN_INTERVAL, SETTLE))
         for space in ("simple", "hash"):
             specs[f"t5_{space}_{n_large}_4"] = stack_spec(space, 20, 0.001, n_large, extra=("--max-contacts", 4))
-        ctx.expect(len(specs) + len(timed))
+        claim_timed = claims.timed_specs(q)
+        ctx.expect(len(specs) + len(timed) + len(claim_timed))
         keys = list(specs)
         results = dict(zip(keys, ctx.runner.map([specs[k] for k in keys])))
         ctx.advance(len(specs))
@@ -177,6 +181,8 @@ class Thesis(Experiment):
         timed_results = ctx.runner.parallel([lambda a=a: ctx.runner.run_timed(*a, repeats) for a in timed.values()])
         results.update({k: v for k, v in zip(timed, timed_results)})
         ctx.advance(len(timed))
+        results.update(claims.split_timed(ctx.runner.map(claim_timed)))
+        ctx.advance(len(claim_timed))
 
         second = self.second_build(ctx, specs, timed, keys)
         rows = []
@@ -263,6 +269,9 @@ Rules and commands (every command adds `--headless`):
         repeats = 1 if ctx.quick else 3
         results.update(zip(timed, runner.parallel([lambda a=a: kept(lambda: runner.run_timed(*a, repeats))
                                                    for a in timed.values()])))
+        claim_timed = kept(lambda: runner.map(claims.timed_specs(ctx.quick)))
+        if claim_timed:
+            results.update(claims.split_timed(claim_timed))
         q = ctx.quick
         n_small, n_large = (15, 30) if q else (40, 90)
         judged = []
@@ -627,6 +636,15 @@ Rules and commands (every command adds `--headless`):
                     "than the scan's 1 m/s", "reproduced when every setting's limit is within 1 m/s of the default's",
                     "test10 --find-max-velocity --band-factor 1.6 --iterations 5|50 | --sor 1 | --erp 0.1|0.9")
 
+        def claim(key, function):
+            def judge(reference):
+                if reference["test"] != key.split("_")[0]:
+                    raise RuntimeError(f"thesis-figures.csv changed: expected a {key.split('_')[0]} row for {key}, "
+                                       f"found {reference['test']} '{reference['conditions']}'")
+                return function(reference)
+            return judge
+
         return [test1, test2, test3, test4_fast, test4_small, test5, test6, test7, test8_a, test8_b, test8_c,
                 test9_a, test9_b, test10_a, test10_b, test0_hang, test2_cfm, test3_active, test7_faster,
-                test8_settles, test10_sharp, test10_settings]
+                test8_settles, test10_sharp, test10_settings] + [
+            claim(key, function) for key, function in zip(claims.KEYS, claims.judges(r, q, s8))]

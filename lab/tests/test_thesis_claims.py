@@ -1,0 +1,103 @@
+"""The thesis's claims without a figure (thesis_claims.py) and its Havok
+comparisons (thesis_havok.py): every claim has a row, and each row's
+verdict follows its rule on the measured values.
+Run: /usr/bin/python3 -m unittest discover -s lab/tests."""
+
+import sys
+import unittest
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from odelab_report.experiments import thesis, thesis_claims as claims, thesis_havok as havok  # noqa: E402
+
+
+class Fake:
+    def __init__(self, rc=0, cpu_seconds=1.0, **metrics):
+        self.rc, self.metrics, self.cpu_seconds = rc, metrics, cpu_seconds
+
+    def m(self, name, default=None):
+        value = self.metrics.get(name)
+        return default if value is None else value
+
+
+def claim(key, results):
+    judge = dict(zip(claims.KEYS, claims.judges(results, False, 60)))[key]
+    return judge({})
+
+
+class EveryClaimHasARow(unittest.TestCase):
+    def test_each_row_of_the_reference_has_a_judge(self):
+        self.assertEqual(len(thesis.ROW_KEYS), len(thesis.reference_rows()))
+        for key, row in zip(thesis.ROW_KEYS, thesis.reference_rows()):
+            self.assertEqual(key.split("_")[0], row["test"], key)
+
+    def test_the_audits_claims_are_rows(self):
+        for key in ("test1_erp", "test2_dip", "test2_erp0", "test3_left_active", "test3_iterations_on",
+                    "test4_sinks", "test5_auto_disable", "test6_cap", "test8_where", "test8_erp1", "test8_mass",
+                    "test9_any_erp", "test10_step"):
+            self.assertIn(key, thesis.ROW_KEYS)
+
+
+class ClaimRules(unittest.TestCase):
+    def test_mass_independence_needs_a_flat_and_matching_stretch(self):
+        flat = {f"c_t8_mass_{m:g}": Fake(max_relative_elongation=v) for m, v in zip(claims.MASSES, (3.47e-5, 3.5e-5, 3.55e-5))}
+        self.assertEqual(claim("test8_mass", flat)[1], "reproduced")
+        steep = {f"c_t8_mass_{m:g}": Fake(max_relative_elongation=v) for m, v in zip(claims.MASSES, (3.47e-5, 5e-5, 3.55e-5))}
+        self.assertEqual(claim("test8_mass", steep)[1], "partly")
+
+    def test_erp1_halves_at_cfm_0(self):
+        def results(rigid):
+            return {"t8_e": Fake(max_relative_elongation=3.5e-5), "t8_b": Fake(max_relative_elongation=rigid),
+                    "t8_a": Fake(max_relative_elongation=1e-2), "t8_d": Fake(max_relative_elongation=4e-3)}
+        self.assertEqual(claim("test8_erp1", results(1.5e-5))[1], "reproduced")
+        self.assertEqual(claim("test8_erp1", results(3.4e-5))[1], "differs")
+
+    def test_the_stretch_is_at_the_bottom_within_ten_degrees(self):
+        def results(angle):
+            return {"t8_a": Fake(deflection_at_max_elongation_deg=angle),
+                    "t8_e": Fake(deflection_at_max_elongation_deg=40.0)}
+        self.assertEqual(claim("test8_where", results(-0.7))[1], "reproduced")
+        self.assertEqual(claim("test8_where", results(39.6))[1], "differs")
+
+    def test_iterations_gain_inside_the_scatter_is_no_reproduction(self):
+        def results(f8, f20):
+            return {"c_t3_8_on": [Fake(sim_seconds=x, active_bodies=5) for x in f8],
+                    "c_t3_20_on": [Fake(sim_seconds=x, active_bodies=5) for x in f20]}
+        self.assertEqual(claim("test3_iterations_on", results([1.2, 1.21, 1.19], [1.0, 1.01, 0.99]))[1], "reproduced")
+        self.assertEqual(claim("test3_iterations_on", results([1.2, 1.0, 1.19], [1.0, 1.01, 0.99]))[1], "differs")
+
+    def test_a_setting_sinks_when_it_falls_or_doubles_the_overlap(self):
+        base = Fake(held=1, max_penetration=0.005, seconds_held=20)
+        results = {"t4_3": base, "c_t4_cfm": Fake(held=1, max_penetration=0.005, seconds_held=20),
+                   "c_t4_erp": Fake(held=0, max_penetration=0.03, seconds_held=14)}
+        self.assertEqual(claim("test4_sinks", results)[1], "partly")
+
+    def test_tenfold(self):
+        def results(fine):
+            return {"t10_3": Fake(max_velocity=250.0), "t10_4": Fake(max_velocity=fine)}
+        self.assertEqual(claim("test10_step", results(2353.0))[1], "reproduced")
+        self.assertEqual(claim("test10_step", results(700.0))[1], "differs")
+
+
+class HavokRules(unittest.TestCase):
+    def test_every_comparison_of_the_thesis_has_a_row(self):
+        self.assertEqual([j.__name__ for j in havok.JUDGES],
+                         ["test1", "test2", "test4", "test5", "test6", "test7", "test9", "test10"])
+
+    def test_havok_faster_only_outside_the_scatter(self):
+        def results(h):
+            return {"h5": [Fake(cpu_ms_per_step=x, max_axis_offset=0.2) for x in h],
+                    "o5": [Fake(cpu_ms_per_step=x) for x in (0.08, 0.081, 0.082)]}
+        self.assertEqual(havok.test5(results((0.07, 0.071, 0.072)), False, 20, 40)["verdict"], "reproduced")
+        self.assertEqual(havok.test5(results((0.07, 0.081, 0.09)), False, 20, 40)["verdict"], "differs")
+
+    def test_energy_loss_near_half(self):
+        def results(drift):
+            return {"h2": Fake(energy_drift=drift), "o2": Fake(energy_drift=1e-4), "h2_best": Fake(energy_drift=-0.03)}
+        self.assertEqual(havok.test2(results(-0.45), False, 20, 40)["verdict"], "reproduced")
+        self.assertEqual(havok.test2(results(-0.23), False, 20, 40)["verdict"], "differs")
+
+
+if __name__ == "__main__":
+    unittest.main()
