@@ -92,7 +92,9 @@ def listed_tests(ctest, build_dir):
     done = subprocess.run([ctest, "-N"], cwd=build_dir, capture_output=True, text=True, timeout=120)
     if done.returncode != 0:
         raise SystemExit(f"FAIL: ctest -N in {build_dir}: status {done.returncode}: {done.stderr.strip()}")
-    return set(re.findall(r"^\s*Test\s+#\d+: (\S+)$", done.stdout, re.MULTILINE))
+    # A parametrized GoogleTest is listed with its parameter after its name
+    # ("Suite/Test.Name/case  # GetParam() = ..."): the name is the first word.
+    return {line.split()[0] for line in re.findall(r"^\s*Test\s+#\d+: (.+)$", done.stdout, re.MULTILINE)}
 
 
 def main():
@@ -112,6 +114,11 @@ def main():
             continue
         held += 1
         for name in names:
+            # A name that is itself a test or a pattern of tests (GoogleTest's
+            # "Suite/Test.Name/case" has slashes of its own) is no shorthand.
+            whole = pattern(name)
+            if (any(whole.match(test) for test in tests) if whole else name in tests):
+                continue
             for expanded in expand(name):
                 match = pattern(expanded)
                 found = any(match.match(test) for test in tests) if match else expanded in tests
