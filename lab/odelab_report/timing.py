@@ -1,0 +1,74 @@
+"""Timing figures a reader may rely on: each the median and the range of
+several interleaved runs, every run long enough to time, and a choice
+between two timings made only outside their scatter.
+
+A run of a few milliseconds is timed mostly by the scheduler and the
+process's start-up, not by the engine: a timed run lasts at least
+MIN_RUN_CPU_SECONDS of CPU, its simulated length stretched from a first
+(untimed) run's cost where the scene allows it."""
+
+import math
+
+from .runner import median
+
+MIN_RUN_CPU_SECONDS = 0.5
+# The first run's cost per simulated second includes its start-up, so the
+# stretched run is made this much longer than the bare estimate.
+LENGTH_MARGIN = 1.5
+# A run within this factor above the minimum is stretched too: its repeats
+# scatter, and each of them must last the minimum.
+SURE = 1.2
+# Untimed runs made at most to find a stretch that lasts long enough.
+CALIBRATIONS = 3
+MAX_TIMED_SIM_SECONDS = 1e6  # an engine costing nothing measurable is not run for ever
+REPEATS = 5  # timed runs per figure (full report)
+QUICK_REPEATS = 2  # --quick: enough to see a spread and to catch a replayed timing
+
+
+def repeats(quick):
+    return QUICK_REPEATS if quick else REPEATS
+
+
+def timed_seconds(sim_seconds, cpu_seconds, minimum=MIN_RUN_CPU_SECONDS):
+    """The simulated length of a timed run of the scene that a first run of
+    `sim_seconds` made in `cpu_seconds`: the scene's own length, or longer
+    so that the run lasts at least `minimum` CPU seconds (rounded up to two
+    significant digits)."""
+    if not sim_seconds or sim_seconds <= 0:
+        raise ValueError(f"a run of {sim_seconds!r} simulated seconds cannot be stretched")
+    if cpu_seconds is not None and cpu_seconds >= SURE * minimum:
+        return sim_seconds
+    per_second = max(cpu_seconds or 0.0, 1e-9) / sim_seconds
+    wanted = min(MAX_TIMED_SIM_SECONDS, LENGTH_MARGIN * minimum / per_second)
+    if wanted <= sim_seconds:
+        return sim_seconds
+    digits = 10 ** (math.floor(math.log10(wanted)) - 1)
+    return float(math.ceil(wanted / digits) * digits)
+
+
+def with_seconds(args, seconds):
+    """`args` with its --seconds value set to `seconds` (added if absent)."""
+    args = list(args)
+    if "--seconds" in args:
+        args[args.index("--seconds") + 1] = seconds
+    else:
+        args += ["--seconds", seconds]
+    return args
+
+
+def spread(values):
+    """(median, min, max) of the values that exist; (None, None, None) if none."""
+    values = [v for v in values if v is not None]
+    if not values:
+        return None, None, None
+    return median(values), min(values), max(values)
+
+
+def overlap(a_low, a_high, b_low, b_high):
+    """Whether two timing ranges overlap: neither is faster in every run."""
+    return a_low <= b_high and b_low <= a_high
+
+
+def ratio_range(low, high, base_low, base_high):
+    """The range of a cost over a base cost, from both ranges: (least, most)."""
+    return low / base_high, high / base_low
