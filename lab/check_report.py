@@ -43,7 +43,7 @@ from odelab_report.claims import Data, _matches, read_rows, recheck  # noqa: E40
 
 HEADER_KEYS = ("ODE", "compiler", "CPU", "date", "commit")
 FIRST_COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE within 1%",
-                 "other engine (defaults, step 0.001)"]
+                 "best other engine, step 0.001"]
 SCENES = [f"test{n}" for n in range(11)]
 VERDICTS = ("reproduced", "partly", "differs", "untested")
 # The first screen: its eleven rows within the first FIRST_SCREEN_LINES lines,

@@ -19,7 +19,7 @@ from .claims import Claim, _matches, q
 from .peer_compare import FRICTION_ACTS
 
 COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE within 1%",
-           "other engine (defaults, step 0.001)"]
+           "best other engine, step 0.001"]
 DECIDES_COLUMNS = ["scene", "what decides ODE's figure (measured)"]
 VERDICTS = ("reproduced", "partly", "differs", "untested")
 # The options of each speed sweep's runs but the solver's, the step and
