@@ -47,3 +47,12 @@ set_tests_properties(lab_file_rules PROPERTIES LABELS lab TIMEOUT 60)
 add_test(NAME lab_first_screen_rules
          COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_first_screen.py)
 set_tests_properties(lab_first_screen_rules PROPERTIES LABELS lab TIMEOUT 60)
+
+# Like with like across engines and timing with spread on their own (also
+# part of lab_executor_units): another surface or a figure zero by
+# construction takes no part, defaults beside defaults, an equal figure
+# inside the cheapest's timing range is a tie, timed runs last 0.5 s of CPU,
+# the tuning's and the remedies' choices inside the scatter are ties.
+add_test(NAME lab_like_with_like
+         COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_like_with_like.py)
+set_tests_properties(lab_like_with_like PROPERTIES LABELS lab TIMEOUT 60)
