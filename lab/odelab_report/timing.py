@@ -72,3 +72,39 @@ def overlap(a_low, a_high, b_low, b_high):
 def ratio_range(low, high, base_low, base_high):
     """The range of a cost over a base cost, from both ranges: (least, most)."""
     return low / base_high, high / base_low
+
+
+def stretched(runner, program, args):
+    """`args` with --seconds stretched so that a run lasts MIN_RUN_CPU_SECONDS
+    of CPU: a first run's cost includes the process's start-up, so each
+    stretch is checked by an untimed run at the new length and made again
+    from it, up to CALIBRATIONS times. The arguments to time."""
+    from .runner import RunSpec  # the runner imports nothing of this module's
+
+    args = list(args)
+    r = runner.run(RunSpec(program, args, measures_blow_ups=True))
+    for _ in range(CALIBRATIONS):
+        if r.rc != 0 or not r.m("sim_seconds"):
+            break
+        seconds = timed_seconds(r.m("sim_seconds"), r.cpu_seconds)
+        if seconds == r.m("sim_seconds"):
+            break
+        args = with_seconds(args, seconds)
+        r = runner.run(RunSpec(program, args, measures_blow_ups=True))
+    return args
+
+
+def interleaved(runner, commands, count):
+    """`count` timed runs of each (program, args) in `commands`, interleaved:
+    every command's first, then every command's second..., so that a busy
+    spell of the machine falls on many commands, not on the repeats of one.
+    The results per command, in repeat order."""
+    from .runner import RunSpec
+
+    out = [[] for _ in commands]
+    for repeat in range(count):
+        results = runner.map([RunSpec(program, args, timed=True, repeat=repeat, measures_blow_ups=True)
+                              for program, args in commands])
+        for mine, result in zip(out, results):
+            mine.append(result)
+    return out

@@ -186,22 +186,11 @@ def first_line_of(r):
 
 def timed_args(runner, scene, r):
     """The arguments of a cell's timed runs: its figure run's, stretched to
-    last timing.MIN_RUN_CPU_SECONDS unless the scene's length is its figure
-    (FIXED_LENGTH). A first run's cost includes the process's start-up, so
-    the stretch is checked by an untimed run at the new length and made
-    again from it, up to timing.CALIBRATIONS times."""
-    args = list(r.spec.args)
+    last timing.MIN_RUN_CPU_SECONDS (timing.stretched) unless the scene's
+    length is its figure (FIXED_LENGTH)."""
     if scene.name in FIXED_LENGTH:
-        return args
-    for _ in range(timing.CALIBRATIONS):
-        seconds = timing.timed_seconds(r.m("sim_seconds"), r.cpu_seconds)
-        if seconds == r.m("sim_seconds"):
-            break
-        args = timing.with_seconds(args, seconds)
-        r = runner.run(RunSpec(r.spec.program, args, measures_blow_ups=True))
-        if r.rc != 0 or not r.m("sim_seconds"):
-            break
-    return args
+        return list(r.spec.args)
+    return timing.stretched(runner, r.spec.program, r.spec.args)
 
 
 def costs(results):
