@@ -108,3 +108,33 @@ def interleaved(runner, commands, count):
         for mine, result in zip(out, results):
             mine.append(result)
     return out
+
+
+def scatter_of(costs):
+    """The timing's relative scatter from repeated runs of one setting:
+    (max - min) / median of their costs (0 for fewer than two)."""
+    costs = [c for c in costs if c is not None]
+    if len(costs) < 2:
+        return 0.0
+    middle, low, high = spread(costs)
+    return (high - low) / middle if middle else 0.0
+
+
+def keep(scored, current, scatter):
+    """The trial the descent keeps among `scored` [((margin, limit), setting,
+    run)]: the smallest margin, but where it and the value already chosen
+    (`current`) are both bound by real time, a margin smaller by no more
+    than the timing's relative `scatter` is a tie, and the value already
+    chosen stays. Returns (kept entry, [settings tied with it])."""
+    smallest = min(scored, key=lambda x: (x[0][0], x[1] != current))
+    mine = next((x for x in scored if x[1] == current), None)
+    if mine is None or mine is smallest:
+        kept = smallest
+    elif (smallest[0][1] == mine[0][1] == "real time"
+          and mine[0][0] - smallest[0][0] <= scatter * mine[0][0]):
+        kept = mine
+    else:
+        kept = smallest
+    tied = [x[1] for x in scored if x is not kept and x[0][1] == kept[0][1] == "real time"
+            and abs(x[0][0] - kept[0][0]) <= scatter * max(x[0][0], kept[0][0])]
+    return kept, tied

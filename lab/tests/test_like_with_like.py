@@ -15,7 +15,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from odelab_report import first_screen, peer_compare, timing  # noqa: E402
 from odelab_report.claims import Data, Sentences  # noqa: E402
-from odelab_report.experiments import remedy_test4, stack_tuning  # noqa: E402
+from odelab_report import remedy_test4_claims as remedy_test4  # noqa: E402
 
 HEADER = "# ODE: test\n"
 COLUMNS = ("scene,engine,setting,step,quantity,value,friction,like_ode_surface,by_construction,"
@@ -123,29 +123,29 @@ class EnginesCell(unittest.TestCase):
 
 
 class TuningTies(unittest.TestCase):
-    """remedy-test5's descent (stack_tuning.keep) and remedy-test4's cost."""
+    """remedy-test5's descent (timing.keep) and remedy-test4's cost."""
 
     def test_a_smaller_real_time_margin_inside_the_scatter_keeps_the_value_chosen(self):
         # SOR 1.6 against 1.0 in the committed report: 0.829 against 0.842 from one run each.
         current, other = {"sor": 1.3}, {"sor": 1.6}
         scored = [((0.842, "real time"), current, None), ((0.829, "real time"), other, None)]
-        (margin, chosen, _), tied = stack_tuning.keep(scored, current, scatter=0.03)
+        (margin, chosen, _), tied = timing.keep(scored, current, scatter=0.03)
         self.assertIs(chosen, current)
         self.assertEqual(tied, [other])
-        (_, chosen, _), tied = stack_tuning.keep(scored, current, scatter=0.005)
+        (_, chosen, _), tied = timing.keep(scored, current, scatter=0.005)
         self.assertIs(chosen, other)
         self.assertEqual(tied, [])
 
     def test_a_margin_the_timing_does_not_set_is_compared_as_it_is(self):
         current, other = {"erp": 0.2}, {"erp": 0.4}
         scored = [((0.50, "axis offset"), current, None), ((0.49, "axis offset"), other, None)]
-        (_, chosen, _), tied = stack_tuning.keep(scored, current, scatter=0.5)
+        (_, chosen, _), tied = timing.keep(scored, current, scatter=0.5)
         self.assertIs(chosen, other)
         self.assertEqual(tied, [])
 
     def test_the_scatter_is_the_range_over_the_median(self):
-        self.assertAlmostEqual(stack_tuning.scatter_of([0.80, 0.84, 0.82]), 0.04 / 0.82)
-        self.assertEqual(stack_tuning.scatter_of([0.8]), 0.0)
+        self.assertAlmostEqual(timing.scatter_of([0.80, 0.84, 0.82]), 0.04 / 0.82)
+        self.assertEqual(timing.scatter_of([0.8]), 0.0)
 
     def test_remedy_test4_cost_within_the_scatter_is_said_so(self):
         folder = Path(tempfile.mkdtemp())

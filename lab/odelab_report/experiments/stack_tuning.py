@@ -108,36 +108,6 @@ def run_setting(runner, setting, plates):
                                  measures_blow_ups=True))
 
 
-def scatter_of(costs):
-    """The timing's relative scatter from repeated runs of one setting:
-    (max - min) / median of their costs (0 for fewer than two)."""
-    costs = [c for c in costs if c is not None]
-    if len(costs) < 2:
-        return 0.0
-    middle, low, high = timing.spread(costs)
-    return (high - low) / middle if middle else 0.0
-
-
-def keep(scored, current, scatter):
-    """The trial the descent keeps among `scored` [((margin, limit), setting,
-    run)]: the smallest margin, but where it and the value already chosen
-    (`current`) are both bound by real time, a margin smaller by no more
-    than the timing's relative `scatter` is a tie, and the value already
-    chosen stays. Returns (kept entry, [settings tied with it])."""
-    smallest = min(scored, key=lambda x: (x[0][0], x[1] != current))
-    mine = next((x for x in scored if x[1] == current), None)
-    if mine is None or mine is smallest:
-        kept = smallest
-    elif (smallest[0][1] == mine[0][1] == "real time"
-          and mine[0][0] - smallest[0][0] <= scatter * mine[0][0]):
-        kept = mine
-    else:
-        kept = smallest
-    tied = [x[1] for x in scored if x is not kept and x[0][1] == kept[0][1] == "real time"
-            and abs(x[0][0] - kept[0][0]) <= scatter * max(x[0][0], kept[0][0])]
-    return kept, tied
-
-
 def measured_scatter(ctx, setting):
     """The timing's relative scatter at the target: timing.repeats timed runs
     of the descent's start setting, made before the descent."""
@@ -147,13 +117,13 @@ def measured_scatter(ctx, setting):
     ctx.expect(len(specs))
     results = ctx.runner.map(specs)
     ctx.advance(len(specs))
-    return scatter_of([cost_ms(r) for r in results if r.rc == 0])
+    return timing.scatter_of([cost_ms(r) for r in results if r.rc == 0])
 
 
 def descend(ctx, start):
     """One pass of coordinate descent from `start`; (best setting, its
     margin, probe rows). A choice inside the timing's scatter (measured
-    first, measured_scatter) keeps the value already chosen (keep)."""
+    first, measured_scatter) keeps the value already chosen (timing.keep)."""
     quick = ctx.quick
     target = TARGET[quick]
     best = dict(DEFAULTS, **start)
@@ -172,7 +142,7 @@ def descend(ctx, start):
         results = ctx.runner.parallel([lambda s=s: one(s) for s in trials])
         scored = [(margin(r, target), s, r) for s, r in zip(trials, results)]
         # the smallest margin wins; a tie (equal, or inside the timing's scatter) keeps the value already chosen
-        ((m, limit), chosen, _), tied = keep(scored, best, scatter)
+        ((m, limit), chosen, _), tied = timing.keep(scored, best, scatter)
         for (mv, lim), s, r in scored:
             rows.append(dict(coordinate=name, value=_text(s[name]), setting=describe(s), plates=target,
                              margin=mv, binding_limit=lim, passed=mv <= 1, chosen=s is chosen,
