@@ -26,7 +26,8 @@ _HEADLINE = {"p": _setting("heaviest_held_kg", SETTINGS[0][0]), "s": _setting("h
              "smhi": _setting("cost_relative_max", SETTINGS[2][0])}
 # The cost against the plain setting: the ratio of the medians and its range
 # over the runs; where the two settings' ranges overlap, neither is cheaper.
-HEADLINE = [Claim("headline.test4.remedy", "test4 remedy: dWorldStep at step 0.001 holds {s:n} kg (QuickStep: {p:n} kg) "
+HEADLINE = [Claim("headline.test4.remedy", "test4 remedy: dWorldStep at step 0.001 holds {s:n} kg (QuickStep: "
+                  "{p:n} kg) "
                   "at {sr:.2f}x the CPU cost ({slo:.2f}-{shi:.2f}x over {n:.0f} runs each); step 0.0001 holds "
                   "{small:n} kg at {smallr:.1f}x ({smlo:.1f}-{smhi:.1f}x).", _HEADLINE, "tie == 0"),
             Claim("headline.test4.remedy.tie", "test4 remedy: dWorldStep at step 0.001 holds {s:n} kg (QuickStep: "

@@ -12,6 +12,8 @@ import math
 from .runner import median
 
 MIN_RUN_CPU_SECONDS = 0.5
+# --quick is a smoke run of the lab, not a measurement: shorter runs.
+QUICK_MIN_RUN_CPU_SECONDS = 0.1
 # The first run's cost per simulated second includes its start-up, so the
 # stretched run is made this much longer than the bare estimate.
 LENGTH_MARGIN = 1.5
@@ -27,6 +29,10 @@ QUICK_REPEATS = 2  # --quick: enough to see a spread and to catch a replayed tim
 
 def repeats(quick):
     return QUICK_REPEATS if quick else REPEATS
+
+
+def min_run_cpu(quick):
+    return QUICK_MIN_RUN_CPU_SECONDS if quick else MIN_RUN_CPU_SECONDS
 
 
 def timed_seconds(sim_seconds, cpu_seconds, minimum=MIN_RUN_CPU_SECONDS):
@@ -74,8 +80,8 @@ def ratio_range(low, high, base_low, base_high):
     return low / base_high, high / base_low
 
 
-def stretched(runner, program, args):
-    """`args` with --seconds stretched so that a run lasts MIN_RUN_CPU_SECONDS
+def stretched(runner, program, args, minimum=MIN_RUN_CPU_SECONDS):
+    """`args` with --seconds stretched so that a run lasts `minimum` seconds
     of CPU: a first run's cost includes the process's start-up, so each
     stretch is checked by an untimed run at the new length and made again
     from it, up to CALIBRATIONS times. The arguments to time."""
@@ -86,7 +92,7 @@ def stretched(runner, program, args):
     for _ in range(CALIBRATIONS):
         if r.rc != 0 or not r.m("sim_seconds"):
             break
-        seconds = timed_seconds(r.m("sim_seconds"), r.cpu_seconds)
+        seconds = timed_seconds(r.m("sim_seconds"), r.cpu_seconds, minimum)
         if seconds == r.m("sim_seconds"):
             break
         args = with_seconds(args, seconds)

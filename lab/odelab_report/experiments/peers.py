@@ -184,13 +184,13 @@ def first_line_of(r):
     return (r.stdout.splitlines() or [""])[0] if r is not None else ""
 
 
-def timed_args(runner, scene, r):
+def timed_args(runner, scene, r, minimum):
     """The arguments of a cell's timed runs: its figure run's, stretched to
-    last timing.MIN_RUN_CPU_SECONDS (timing.stretched) unless the scene's
+    last `minimum` CPU seconds (timing.stretched) unless the scene's
     length is its figure (FIXED_LENGTH)."""
     if scene.name in FIXED_LENGTH:
         return list(r.spec.args)
-    return timing.stretched(runner, r.spec.program, r.spec.args)
+    return timing.stretched(runner, r.spec.program, r.spec.args, minimum)
 
 
 def costs(results):
@@ -294,7 +294,7 @@ class Peers(Experiment):
             "(friction 100 is the peers' never-sliding contact, ODE's infinite) or friction does not act; "
             "by_construction: why the figure cannot be wrong on that engine (it takes no part in a comparison)",
             f"costs: the median, min and max over `repeats` interleaved timed runs of timed_sim_seconds each (at "
-            f"least {timing.MIN_RUN_CPU_SECONDS:g} CPU s where the scene can be lengthened; "
+            f"least {timing.min_run_cpu(ctx.quick):g} CPU s where the scene can be lengthened; "
             f"{', '.join(FIXED_LENGTH)} and test4's search repeat the figure's own run or mass); "
             "wall_s_per_sim_s: the program's own run-loop wall_seconds / sim_seconds; cpu_s_per_sim_s: the "
             "process's user + system time (start-up included) / sim_seconds",
@@ -373,7 +373,8 @@ included; peers.csv has the program's own wall times too):
         cell's first, then every cell's second...: a busy spell of the machine
         falls on many cells, not on the repeats of one); their costs into the rows."""
         ran = [(point, row, r) for point, (row, r) in zip(plan, measured) if r is not None and r.rc == 0]
-        lengths = ctx.runner.parallel([lambda p=p, r=r: timed_args(ctx.runner, p[0], r) for p, _, r in ran])
+        minimum = timing.min_run_cpu(ctx.quick)
+        lengths = ctx.runner.parallel([lambda p=p, r=r: timed_args(ctx.runner, p[0], r, minimum) for p, _, r in ran])
         cells = [(point, row, args) for (point, row, _), args in zip(ran, lengths)]
         done = {id(row): [] for _, row, _ in cells}
         for repeat in range(timing.repeats(ctx.quick)):

@@ -30,8 +30,9 @@ class RemedyTest4(Experiment):
         limits = ctx.runner.parallel([lambda s=s: limit(s) for s in SETTINGS])
         # Each setting's cost: runs stretched to last timing.MIN_RUN_CPU_SECONDS,
         # timed `repeats` times, interleaved across the settings.
+        minimum = timing.min_run_cpu(ctx.quick)
         commands = ctx.runner.parallel([lambda s=s: ("test4", timing.stretched(
-            ctx.runner, "test4", ["--big-mass", COST_MASS, "--step", s[1], *s[2], "--seconds", seconds]))
+            ctx.runner, "test4", ["--big-mass", COST_MASS, "--step", s[1], *s[2], "--seconds", seconds], minimum))
             for s in SETTINGS])
         ctx.advance(len(SETTINGS))
         costs = timing.interleaved(ctx.runner, commands, repeats)
@@ -63,7 +64,7 @@ class RemedyTest4(Experiment):
             "heaviest_held_kg: the search and failure rule of limit-test4",
             f"cost: CPU seconds per simulated second at {COST_MASS:g} kg, median, min and max of {repeats} "
             f"interleaved timed runs of timed_sim_seconds (stretched from {seconds:g} s to last "
-            f"{timing.MIN_RUN_CPU_SECONDS:g} CPU s); wall_per_sim_second*: the program's own wall_seconds",
+            f"{timing.min_run_cpu(ctx.quick):g} CPU s); wall_per_sim_second*: the program's own wall_seconds",
             "cost_relative_to_plain: the ratio of the medians; cost_relative_min/max: its range over the runs "
             "(least: this setting's fastest over the plain's slowest); cost_within_scatter: 1 where the two "
             "settings' ranges overlap (neither is cheaper)"])
@@ -87,7 +88,7 @@ The remedy swaps the solver for dWorldStep at the same step; the alternative
 is the thesis's lever, a ten times smaller step. Limits by limit-test4's rule
 and search (held {seconds:g} s); cost: CPU seconds per simulated second at
 {COST_MASS:g} kg, the median and range of {repeats} interleaved runs, each
-stretched to last {timing.MIN_RUN_CPU_SECONDS:g} s of CPU or more; a cost range that overlaps the
+stretched to last {timing.min_run_cpu(ctx.quick):g} s of CPU or more; a cost range that overlaps the
 plain setting's is no cheaper or dearer (within the timing's scatter).
 
 {table}

@@ -180,7 +180,8 @@ def _text(value):
 
 def search_columns():
     return ["coordinate", "value", "setting", "plates", "margin", "binding_limit", "passed", "chosen",
-            "tied_with_kept", "timing_scatter", "ms_per_step_last_second", "ms_per_step_whole_run", "max_axis_offset_m", "max_twist_degrees",
+            "tied_with_kept", "timing_scatter", "ms_per_step_last_second", "ms_per_step_whole_run",
+            "max_axis_offset_m", "max_twist_degrees",
             "stack_height_m", "cpu_share", "exit_status"]
 
 
