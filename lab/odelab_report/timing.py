@@ -14,14 +14,14 @@ from .runner import median
 MIN_RUN_CPU_SECONDS = 0.5
 # --quick is a smoke run of the lab, not a measurement: shorter runs.
 QUICK_MIN_RUN_CPU_SECONDS = 0.1
-# The first run's cost per simulated second includes its start-up, so the
-# stretched run is made this much longer than the bare estimate.
-LENGTH_MARGIN = 1.5
-# A run within this factor above the minimum is stretched too: its repeats
-# scatter, and each of them must last the minimum.
-SURE = 1.6
+# A run's CPU time on this shared machine scatters by up to half between
+# runs of one command (measured: 0.16 s untimed, 0.10 s timed), so the
+# untimed run that fixes a length must last SURE times the minimum, and a
+# stretch aims LENGTH_MARGIN times above it.
+LENGTH_MARGIN = 2.5
+SURE = 2.0
 # Untimed runs made at most to find a stretch that lasts long enough.
-CALIBRATIONS = 3
+CALIBRATIONS = 6
 MAX_TIMED_SIM_SECONDS = 1e6  # an engine costing nothing measurable is not run for ever
 REPEATS = 5  # timed runs per figure (full report)
 QUICK_REPEATS = 2  # --quick: enough to see a spread and to catch a replayed timing
@@ -35,17 +35,18 @@ def min_run_cpu(quick):
     return QUICK_MIN_RUN_CPU_SECONDS if quick else MIN_RUN_CPU_SECONDS
 
 
-def timed_seconds(sim_seconds, cpu_seconds, minimum=MIN_RUN_CPU_SECONDS):
-    """The simulated length of a timed run of the scene that a first run of
-    `sim_seconds` made in `cpu_seconds`: the scene's own length, or longer
-    so that the run lasts at least `minimum` CPU seconds (rounded up to two
-    significant digits)."""
+def timed_seconds(sim_seconds, cpu_seconds, minimum=MIN_RUN_CPU_SECONDS, startup=0.0):
+    """The simulated length of a timed run of the scene that a run of
+    `sim_seconds` made in `cpu_seconds` (of which `startup` was the process's
+    start-up, when known): the scene's own length, or longer so that the run
+    lasts at least `minimum` CPU seconds (rounded up to two significant
+    digits)."""
     if not sim_seconds or sim_seconds <= 0:
         raise ValueError(f"a run of {sim_seconds!r} simulated seconds cannot be stretched")
     if cpu_seconds is not None and cpu_seconds >= SURE * minimum:
         return sim_seconds
-    per_second = max(cpu_seconds or 0.0, 1e-9) / sim_seconds
-    wanted = min(MAX_TIMED_SIM_SECONDS, LENGTH_MARGIN * minimum / per_second)
+    per_second = max((cpu_seconds or 0.0) - startup, 1e-9) / sim_seconds
+    wanted = min(MAX_TIMED_SIM_SECONDS, LENGTH_MARGIN * max(minimum - startup, 0.0) / per_second)
     if wanted <= sim_seconds:
         return sim_seconds
     digits = 10 ** (math.floor(math.log10(wanted)) - 1)
@@ -89,12 +90,21 @@ def stretched(runner, program, args, minimum=MIN_RUN_CPU_SECONDS):
 
     args = list(args)
     r = runner.run(RunSpec(program, args, measures_blow_ups=True))
+    before = None  # the previous run's (sim, cpu): two runs give the start-up apart
     for _ in range(CALIBRATIONS):
         if r.rc != 0 or not r.m("sim_seconds"):
             break
-        seconds = timed_seconds(r.m("sim_seconds"), r.cpu_seconds, minimum)
-        if seconds == r.m("sim_seconds"):
+        sim, cpu = r.m("sim_seconds"), r.cpu_seconds
+        startup = 0.0
+        if before and sim > before[0] and cpu > before[1]:
+            slope = (cpu - before[1]) / (sim - before[0])
+            startup = min(max(cpu - slope * sim, 0.0), 0.9 * cpu)
+        seconds = timed_seconds(sim, cpu, minimum, startup)
+        if seconds == sim:
             break
+        # a noisy start-up can make the estimate too short: at least double
+        seconds = max(seconds, 2 * sim)
+        before = (sim, cpu)
         args = with_seconds(args, seconds)
         r = runner.run(RunSpec(program, args, measures_blow_ups=True))
     return args
