@@ -13,7 +13,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from odelab_report import first_screen, peer_compare, timing  # noqa: E402
+from odelab_report import first_screen, peer_compare, timing, timing_check  # noqa: E402
 from odelab_report.claims import Data, Sentences  # noqa: E402
 from odelab_report import remedy_test4_claims as remedy_test4  # noqa: E402
 
@@ -159,6 +159,35 @@ class TuningTies(unittest.TestCase):
         text = Sentences(Data(folder)).say(*remedy_test4.HEADLINE)
         self.assertIn("at the same CPU cost within the timing's scatter (0.90-1.02x over 5 runs each)", text)
         self.assertNotIn("0.96x", text)
+
+
+class TimingCheck(unittest.TestCase):
+    """check_report.py's rule on a report folder (timing_check.py)."""
+
+    def folder(self, files):
+        folder = Path(tempfile.mkdtemp())
+        self.addCleanup(shutil.rmtree, folder)
+        for name, text in files.items():
+            (folder / name).write_text("# options: --jobs 2\n" + text)
+        return folder
+
+    def test_a_tie_list_from_one_25_ms_run_is_refused(self):
+        # the committed speed-test9.csv: points timed once, on runs of 25 ms
+        folder = self.folder({"speed-test9.csv": "solver,step_s,wall_per_sim_second,repeats\n"
+                                                 "QuickStep 20,0.01,0.0012,1\n"})
+        found = timing_check.problems(folder)
+        self.assertIn("speed-test9.csv row 1: a cost from 1 timed runs (at least 5: a median and a range)", found)
+        self.assertIn("speed-test9.csv row 1: a timed run of unknown CPU s (at least 0.5: long enough to time)",
+                      found)
+
+    def test_five_runs_long_enough_pass_and_a_scan_is_timed_as_it_runs(self):
+        folder = self.folder({
+            "speed-test9.csv": "solver,step_s,wall_per_sim_second,repeats,shortest_run_cpu_seconds\n"
+                               "QuickStep 20,0.01,0.0012,5,0.61\n",
+            "peers.csv": "scene,engine,cpu_s_per_sim_s,repeats,shortest_run_cpu_seconds\n"
+                         "test10,ode,0.001,5,0.03\ntest2,ode,,0,\ntest9,bullet,0.002,5,0.2\n"})
+        self.assertEqual(timing_check.problems(folder),
+                         ["peers.csv row 3: a timed run of 0.2 CPU s (at least 0.5: long enough to time)"])
 
 
 if __name__ == "__main__":
