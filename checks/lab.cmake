@@ -1,6 +1,7 @@
 # ---- lab report (quick) ----
 # The speed-accuracy lab (lab/, doc/lab.md): `odelab-report --quick` runs every
-# experiment on these programs (about a minute on 2 cores), then
+# experiment on these programs (a few minutes on 2 cores: its timings are
+# repeated and stretched, doc/lab.md), then
 # lab/check_report.py checks that every CSV has its run header and rows, and that
 # every plot exists and is a valid image (PNG signature and size, SVG parses as XML).
 # The report's peers section runs bullet_lab and mujoco_lab: where either was
