@@ -1,7 +1,6 @@
 # ---- lab report (quick) ----
 # The speed-accuracy lab (lab/, doc/lab.md): `odelab-report --quick` runs every
-# experiment on these programs (a few minutes on 2 cores: its timings are
-# repeated and stretched, doc/lab.md), then
+# experiment on these programs (about a minute on 2 cores), then
 # lab/check_report.py checks that every CSV has its run header and rows, and that
 # every plot exists and is a valid image (PNG signature and size, SVG parses as XML).
 # The report's peers section runs bullet_lab and mujoco_lab: where either was
@@ -70,12 +69,3 @@ set_tests_properties(lab_first_screen_rules PROPERTIES LABELS lab TIMEOUT 60)
 add_test(NAME lab_physics_scores
          COMMAND /usr/bin/python3 -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_physics_scores.py)
 set_tests_properties(lab_physics_scores PROPERTIES LABELS lab TIMEOUT 60)
-
-# Like with like across engines and timing with spread on their own (also
-# part of lab_executor_units): another surface or a figure zero by
-# construction takes no part, defaults beside defaults, an equal figure
-# inside the cheapest's timing range is a tie, timed runs last 0.5 s of CPU,
-# the tuning's and the remedies' choices inside the scatter are ties.
-add_test(NAME lab_like_with_like
-         COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_like_with_like.py)
-set_tests_properties(lab_like_with_like PROPERTIES LABELS lab TIMEOUT 60)

@@ -41,7 +41,6 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from odelab_report import readings  # noqa: E402 (standard library only)
 from odelab_report.claims import Data, _matches, read_rows, recheck  # noqa: E402
-from odelab_report import timing_check  # noqa: E402 (standard library only)
 
 HEADER_KEYS = ("ODE", "compiler", "CPU", "date", "commit")
 FIRST_COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE within 1%",
@@ -305,7 +304,6 @@ def main(argv):
             problems.append(f"{path.name}: {problem}")
     if (folder / "thesis.csv").exists():
         problems += [f"thesis.csv: {problem}" for problem in check_thesis(folder / "thesis.csv")]
-    problems += timing_check.problems(folder)
     for path in pngs:
         problem = check_png(path)
         if problem:

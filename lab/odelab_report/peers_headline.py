@@ -1,20 +1,35 @@
-"""The engines experiment's headline finding for one scene, as Claims on
-peers.csv: at the scene's comparison step, defaults beside defaults (ODE's
-one setting counts as its default), like with like as peer_compare.py
-decides it (a run on another surface than ODE's where friction acts, or a
-figure zero by construction, takes no part; an error below an engine's
-rounding counts as that rounding), the best figure, and its CPU cost as the
-median [range] of the timed runs. An equal figure whose cost range
-overlaps the cheapest's is a tie within the timing's scatter. The text and
-rule are recomputed from peers.csv alone (check_report.py), so a headline
-cannot say more than the rows hold."""
+"""The engines experiment's headline finding for one scene, as a Claim on
+peers.csv: at the comparison step, which engines and settings reach the best
+figure (errors below an engine's rounding tie), the cheapest of them by wall
+time, and ODE's figure at its default. Its text and rule are recomputed
+from peers.csv alone (check_report.py), so a headline cannot say more than
+the rows hold."""
 
 from .claims import Claim, q
 
 
 def headline(scene, label, lower_is_better, step, float32_engines, rounding, float32_rounding):
-    """The headline's claims (`headline.peers.<scene>[.tie|.none]`): one of
-    them holds for any peers.csv."""
+    """The headline finding (`headline.peers.<scene>`): see _claim."""
+    return _claim(f"headline.peers.{scene}", f"peers {scene} ({label}): at step {step:g}: ", scene, lower_is_better,
+                  step, float32_engines, rounding, float32_rounding)
+
+
+def verdict(scene, lower_is_better, step, float32_engines, rounding, float32_rounding):
+    """The same finding as the scene's section says it (`peers.<scene>.verdict`),
+    or, when no engine reached a figure at `step`, that none did."""
+    found = _claim(f"peers.{scene}.verdict", f"At step {step:g}: ", scene, lower_is_better, step, float32_engines,
+                   rounding, float32_rounding)
+    none = Claim(f"peers.{scene}.verdict.none", f"No engine reached a figure at step {step:g}.",
+                 {"v": q("peers.csv", "value", "list", scene=scene, step=step)}, "all(x is None for x in v)")
+    return [found, none]
+
+
+def _claim(key, opening, scene, lower_is_better, step, float32_engines, rounding, float32_rounding):
+    """The Claim `headline.peers.<scene>`: shown when some engine reached a
+    figure at `step`, and its rule holds only when no engine's row at that
+    step is better than the one the sentence names. An error below
+    `rounding` (`float32_rounding` for `float32_engines`) is the engine's
+    rounding, not physics: such errors tie."""
     f = "peers.csv"
     where = dict(scene=scene, step=step)
     better = "min" if lower_is_better else "max"
@@ -22,36 +37,30 @@ def headline(scene, label, lower_is_better, step, float32_engines, rounding, flo
         "engines": q(f, "engine", "texts", **where),
         "settings": q(f, "setting", "texts", **where),
         "v": q(f, "value", "list", **where),
-        "cost": q(f, "cpu_s_per_sim_s", "list", **where),
-        "lo": q(f, "cpu_s_per_sim_s_min", "list", **where),
-        "hi": q(f, "cpu_s_per_sim_s_max", "list", **where),
-        "like": q(f, "like_ode_surface", "list", **where),
-        "made": q(f, "by_construction", "texts", **where),
-        "odes": "[i for i in range(len(engines)) if engines[i] == 'ode']",
-        # defaults beside defaults; ODE's one setting is its default
-        "kind": "[i for i in range(len(engines)) if settings[i] == 'default' or (len(odes) == 1 and i in odes)]",
-        "fair": "[i for i in kind if v[i] is not None and like[i] == 1 and not made[i] and cost[i] is not None]",
+        "wall": q(f, "wall_s_per_sim_s", "list", **where),
+        "capped": q(f, "capped", "texts", **where),
         "floor": f"[{float32_rounding!r} if e in {tuple(float32_engines)!r} else {rounding!r} for e in engines]",
-        "score": ("[max(v[i], floor[i]) if v[i] is not None else None for i in range(len(v))]" if lower_is_better
-                  else "[v[i] for i in range(len(v))]"),
-        "best": f"{better}(score[i] for i in fair) if fair else None",
-        "equal": "[i for i in fair if score[i] == best]",
-        "w": "min(equal, key=lambda i: cost[i]) if equal else 0",
-        "tied": "[i for i in equal if i != w and lo[i] <= hi[w] and lo[w] <= hi[i]]",
-        "how": f"'exact to rounding' if {lower_is_better!r} and fair and v[w] < floor[w] else 'best'",
-        "name": "engines[w]",
-        "figure": "num(v[w], 3)",
-        "c": "cost[w]", "a": "lo[w]", "b": "hi[w]",
-        "names": "', '.join(engines[i] for i in [w] + tied)",
+        "at": "[i for i in range(len(v)) if v[i] is not None]",
+        # the figure as judged: an error below rounding counts as the rounding
+        "score": ("[max(v[i], floor[i]) if i in at else None for i in range(len(v))]" if lower_is_better
+                  else "[v[i] if i in at else None for i in range(len(v))]"),
+        "best": f"{better}(score[i] for i in at)",
+        "ties": "[i for i in at if score[i] == best]",
+        "w": "min(ties, key=lambda i: wall[i] or 0)",
+        "names": "', '.join(engines[i] + ' (' + settings[i] + ')' for i in ties)",
+        "verb": "'is' if len(ties) == 1 else 'are'",
+        "how": f"'exact to rounding' if {lower_is_better!r} and v[w] < floor[w] else 'best'",
+        "figure": "num(v[w], 3) + (' (scan limit)' if capped[w] == '1' else '')",
+        "cost": "wall[w]",
+        "cheapest": "'' if len(ties) == 1 else ', the cheapest ' + engines[w] + ' (' + settings[w] + ')'",
+        "ode": "[i for i in range(len(v)) if engines[i] == 'ode' and settings[i] == 'default']",
+        "ode_text": "'' if not ode else '; ODE at its default ' + (num(v[ode[0]], 3) if v[ode[0]] is not None "
+                    "else 'no figure')",
     }
-    opening = f"peers {scene} ({label}): at step {step:g}, defaults beside defaults"
-    # Every rule names the winner's standing: no fair row beats it, it is the
-    # cheapest of the equal figures, and the tie list is exactly the overlaps.
-    holds = "len(fair) > 0 and all(score[i] >= best if %r else score[i] <= best for i in fair) and " \
-            "all(cost[w] <= cost[i] for i in equal)" % lower_is_better
-    return [Claim(f"headline.peers.{scene}", opening + ": {name} is {how} with {figure} at {c:k2} [{a:k2}-{b:k2}] "
-                  "CPU s per simulated s.", values, holds + " and len(tied) == 0"),
-            Claim(f"headline.peers.{scene}.tie", opening + ": a tie within the timing's scatter at {figure}: "
-                  "{names}.", values, holds + " and len(tied) > 0"),
-            Claim(f"headline.peers.{scene}.none", opening + ": no engine that compares reached a figure.", values,
-                  "len(fair) == 0")]
+    outdone = ("all(score[i] >= best for i in at)" if lower_is_better else "all(score[i] <= best for i in at)")
+    template = (opening + "{names} {verb} {how} with {figure}{cheapest} "
+                "at {cost:n} wall s per simulated s{ode_text}.")
+    # The rule: an engine reached a figure; none at this step beats the one
+    # named; the one named is the cheapest of its ties.
+    rule = f"len(at) > 0 and {outdone} and all((wall[w] or 0) <= (wall[i] or 0) for i in ties)"
+    return Claim(key, template, values, rule)
