@@ -105,9 +105,8 @@ def first_screen_lines(sentences):
 
 def _headline(sentences, outcome):
     """An experiment's headline findings: a Claim (or alternatives) is shown
-    when its rule holds. A plain string is still written (a long run is not
-    lost at its end), but check_report.py fails it: no headline finding may
-    be anything but a claim."""
+    when its rule holds; a plain string only from an experiment whose
+    sentences are not claims yet (check_report.py names which may)."""
     for finding in outcome.headline:
         if isinstance(finding, str):
             yield finding

@@ -15,8 +15,6 @@ import re
 from pathlib import Path
 
 from .. import markdown as md
-from .. import peers_headline
-from ..claims import slot
 from .. import swing_energy
 from ..plots import peers as plots
 from ..header import first_line
@@ -243,8 +241,7 @@ class Peers(Experiment):
                         exit_status=r.rc if r else None)
 
         rows = ctx.runner.parallel([lambda p=p: one(p) for p in plan])
-        columns = ["scene", "engine", "setting", "step", "quantity", "value", "wall_s_per_sim_s", "cpu_s_per_sim_s",
-                   "capped"]
+        columns = ["scene", "engine", "setting", "step", "quantity", "value", "wall_s_per_sim_s", "cpu_s_per_sim_s"]
         csv = ctx.write_csv("peers", columns, rows, notes=[
             "engines at the same step; settings: doc/peers.md; value: the quantity named (empty: not reached, "
             "e.g. no 20th bounce)",
@@ -252,16 +249,14 @@ class Peers(Experiment):
             "process's user + system time (start-up included) / sim_seconds",
             "max_velocity_stopped: the ODE program's and the peers' max_velocity metric (test10's scan, stopped at "
             "the first failure); heaviest_held_kg: the search of limit-test4 on each engine",
-            "capped: 1 when test10's scan reached its limit with no launch through (the figure is the scan's limit)",
             "energy_swing_error (test2): each engine's energy_max_deviation, |E - E0| / E0, times E0 / (m g d); "
             + swing_energy.header()])
-        parts, headline, claims = [], [], {}
+        parts, headline = [], []
         for scene in scenes:
             mine = [r for r in rows if r["scene"] == scene.name]
-            text, line, said = self.scene_part(ctx, scene, mine)
+            text, line = self.scene_part(ctx, scene, mine)
             parts.append(text)
             headline += line
-            claims.update(said)
         versions = web_versions()
         web = [f"{e.capitalize()} ({versions.get(e, WEB_PEERS[e])})" for e in WEB_PEERS if e not in skipped]
         web_text = (f"""Havok, Jolt and Rapier run through their WebAssembly builds in Node.js
@@ -285,7 +280,7 @@ The column "Havok 6.5 (thesis)" is quoted from the thesis, not measured. ODE's s
 {md.files_line([csv])}
 
 {self.matrix(scenes, engines, rows)}{not_built}"""
-        return Outcome(intro + "\n\n" + "\n\n".join(parts), headline, claims=claims)
+        return Outcome(intro + "\n\n" + "\n\n".join(parts), headline)
 
     # ---- the matrix: scene by engine, at COMPARE_STEP ----------------------------------
     def matrix(self, scenes, engines, rows):
@@ -366,16 +361,21 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
                                                       scene.lower_is_better, havok_number, ROUNDING))
         table = [[r["engine"], r["setting"], md.num(r["step"]), self.value_text(scene, r),
                   md.num(r["wall_s_per_sim_s"], 3), md.num(r["cpu_s_per_sim_s"], 3)] for r in rows]
-        if scene.unranked:
-            # No engine is "best" on a figure that is not better physics (Scene.unranked says why).
-            headline, claims, verdict = [], {}, f"Not ranked: {scene.unranked}."
-        else:
-            # The verdict and the headline are claims on peers.csv (peers_headline.py).
-            rounding = (tuple(WEB_PEERS), ROUNDING, FLOAT32_ROUNDING)
-            headline = [peers_headline.headline(scene.name, scene.label, scene.lower_is_better, COMPARE_STEP, *rounding)]
-            claims = {f"verdict.{scene.name}": peers_headline.verdict(scene.name, scene.lower_is_better, COMPARE_STEP,
-                                                                       *rounding)}
-            verdict = slot(f"verdict.{scene.name}")
+        ties = [] if scene.unranked else self.best_at_compare_step(scene, rows)
+        verdict = (f"Not ranked: {scene.unranked}." if scene.unranked
+                   else f"No engine reached a figure at step {COMPARE_STEP}.")
+        headline = []
+        if ties:
+            winner = min(ties, key=lambda r: r["wall_s_per_sim_s"] or 0)
+            ode = [r for r in rows if r["engine"] == "ode" and r["setting"] == "default" and r["step"] == COMPARE_STEP]
+            ode_text = f"; ODE at its default {self.value_text(scene, ode[0])}" if ode else ""
+            names = ", ".join(f"{r['engine']} ({r['setting']})" for r in ties)
+            how = "exact to rounding" if self.exact(scene, winner) else "best"
+            verdict = (f"At step {COMPARE_STEP}: {names} {'is' if len(ties) == 1 else 'are'} {how} with "
+                       f"{self.value_text(scene, winner)}" +
+                       (f", the cheapest {winner['engine']} ({winner['setting']})" if len(ties) > 1 else "") +
+                       f" at {md.num(winner['wall_s_per_sim_s'], 3)} wall s per simulated s{ode_text}.")
+            headline.append(f"peers {scene.name} ({scene.label}): {verdict[0].lower() + verdict[1:]}")
         havok = (f"Havok 6.5, quoted by the thesis ({havok_conditions}): **{havok_text}**."
                  if havok_text else "The thesis quotes no Havok figure for this scene.")
         missing = "".join(f" Not run on {e}: {why}." for e, why in scene.missing.items())
@@ -388,7 +388,11 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
 {md.figure(f"peers-{scene.name}", f"{scene.name}: {scene.label} against wall seconds per simulated second, "
            "one curve per engine and setting (steps large to small)" +
            (", Havok's quoted figure as a line" if havok_number is not None else ""))}"""
-        return text, headline, claims
+        return text, headline
+
+    @staticmethod
+    def exact(scene, r):
+        return scene.lower_is_better and r["value"] is not None and r["value"] < rounding_of(r["engine"])
 
     def value_text(self, scene, r):
         if r.get("voided"):
@@ -397,3 +401,15 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
             return scene.not_reached if r["exit_status"] in (0, None) else f"blew up (exit {r['exit_status']})"
         text = md.num(r["value"], 3)
         return text + " (scan limit)" if r.get("capped") else text
+
+    @staticmethod
+    def best_at_compare_step(scene, rows):
+        """The most accurate settings at COMPARE_STEP (errors below ROUNDING tie); [] if none has a figure."""
+        at = [r for r in rows if r["step"] == COMPARE_STEP and r["value"] is not None]
+        if not at:
+            return []
+        if scene.lower_is_better:
+            best = min(max(r["value"], rounding_of(r["engine"])) for r in at)
+            return [r for r in at if max(r["value"], rounding_of(r["engine"])) == best]
+        best = max(r["value"] for r in at)
+        return [r for r in at if r["value"] == best]
