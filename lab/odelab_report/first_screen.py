@@ -54,15 +54,6 @@ def speed_lookups(scene):
             "lo": "[a / t for a, t in zip(wmin, timed)]", "hi": "[a / t for a, t in zip(wmax, timed)]"}
 
 
-def speed_lookups(scene):
-    f = f"speed-{scene}.csv"
-    return {"solvers": q(f, "solver", "texts"), "steps": q(f, "step_s", "list"), "errors": q(f, "error", "list"),
-            "cost": q(f, "wall_per_sim_second", "list"), "wmin": q(f, "wall_seconds_min", "list"),
-            "wmax": q(f, "wall_seconds_max", "list"), "timed": q(f, "timed_sim_seconds", "list"),
-            "names": "[s + ' @ ' + num(h) for s, h in zip(solvers, steps)]",
-            "lo": "[a / t for a, t in zip(wmin, timed)]", "hi": "[a / t for a, t in zip(wmax, timed)]"}
-
-
 def cheapest_cells(scene):
     """The cheapest setting within 1%, judged by wall time as
     speed_accuracy.py judges it: a tie within the timing's scatter links to
