@@ -1,6 +1,7 @@
 # ---- lab report (quick) ----
 # The speed-accuracy lab (lab/, doc/lab.md): `odelab-report --quick` runs every
-# experiment on these programs (about a minute on 2 cores), then
+# experiment on these programs (a few minutes on 2 cores: its timings are
+# repeated and stretched, doc/lab.md), then
 # lab/check_report.py checks that every CSV has its run header and rows, and that
 # every plot exists and is a valid image (PNG signature and size, SVG parses as XML).
 # The report's peers section runs bullet_lab and mujoco_lab: where either was
@@ -20,9 +21,11 @@ if(TARGET bullet_lab AND TARGET mujoco_lab)
 endif()
 
 # ---- the committed report and the docs ----
-# Every sentence of the committed doc/results/RESULTS.md's first table,
-# recomputed from the committed CSVs by its rule (claims.csv); every measured
-# figure in README.md and doc/ held by a committed CSV (lab/check_docs.py
+# Every sentence of the committed doc/results/RESULTS.md (first table,
+# headline findings, the engines' included, sections' conclusions),
+# recomputed from the committed CSVs by its rule (claims.csv), each rule
+# reading its data; every measured figure in README.md and doc/ held by a
+# committed CSV, and a cited figure by the row it cites (lab/check_docs.py
 # says which numbers count).
 add_test(NAME lab_committed_report_claims
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_report.py ${CMAKE_SOURCE_DIR}/doc/results)
@@ -41,6 +44,17 @@ add_test(NAME lab_file_rules
          COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_file_rules.py)
 set_tests_properties(lab_file_rules PROPERTIES LABELS lab TIMEOUT 60)
 
+# Every sentence a rule on its own data: the engines' headline findings are
+# claims on peers.csv, a typed one or a rule that reads none of its values is
+# refused. The docs cite the row they quote: a figure not in the row its
+# citation selects is refused. (Both also part of lab_executor_units.)
+add_test(NAME lab_sentence_rules
+         COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_sentence_rules.py)
+set_tests_properties(lab_sentence_rules PROPERTIES LABELS lab TIMEOUT 60)
+add_test(NAME lab_doc_citations
+         COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_doc_citations.py)
+set_tests_properties(lab_doc_citations PROPERTIES LABELS lab TIMEOUT 60)
+
 # The first screen's rules on their own (also part of lab_executor_units):
 # a row whose cell reads another quantity or setting than its definition is
 # refused, n/a says why, costs are CPU time over the timed runs, the screen fits.
@@ -56,3 +70,12 @@ set_tests_properties(lab_first_screen_rules PROPERTIES LABELS lab TIMEOUT 60)
 add_test(NAME lab_physics_scores
          COMMAND /usr/bin/python3 -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_physics_scores.py)
 set_tests_properties(lab_physics_scores PROPERTIES LABELS lab TIMEOUT 60)
+
+# Like with like across engines and timing with spread on their own (also
+# part of lab_executor_units): another surface or a figure zero by
+# construction takes no part, defaults beside defaults, an equal figure
+# inside the cheapest's timing range is a tie, timed runs last 0.5 s of CPU,
+# the tuning's and the remedies' choices inside the scatter are ties.
+add_test(NAME lab_like_with_like
+         COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_like_with_like.py)
+set_tests_properties(lab_like_with_like PROPERTIES LABELS lab TIMEOUT 60)

@@ -40,10 +40,21 @@ the same way. Rounding: 0.064 is held by 0.06403 (|v - d| is at
 most half a unit of the last digit shown), and a percentage also by the
 fraction (17% by 0.1704). Signs are ignored.
 
+A quoted figure cites the CSV row it comes from: a link whose text holds
+the figure and whose target is the committed CSV with the row's key after
+the `#`, as column=value pairs joined by `&` (URL-encoded: %20 for a space):
+[11900 kg](results/limit-test4.csv#solver=QuickStep%2020&step_s=0.001).
+Every figure in such a link's text must be in the rows the key selects (at
+the precision written, as above), not merely in some CSV; a key that selects
+no row, or names a CSV that is not committed, fails. On a page not marked
+`uncited` (below), every measured figure but the C++ literals must be so
+cited.
+
 Documents named in lab/reference/docs-pending.txt (one path a line, each
 with its reason after a #) are still checked and their figures listed, but
 do not fail the check: a page whose owner has not yet moved its figures into
-a CSV. A line `PATH short` holds back only the page's short figures from the
+a CSV. A line `PATH uncited` lets the page quote figures without citing
+their rows (they must still be held as above). A line `PATH short` holds back only the page's short figures from the
 page's own data (they must still be held by some CSV); a line `PATH "FIGURE"`
 (as written, with its unit: "366 s") exempts that one figure, a measurement
 too long to redo. The list is meant to shrink to nothing.
@@ -58,6 +69,7 @@ import re
 import subprocess
 import sys
 from pathlib import Path
+from urllib.parse import parse_qsl
 
 UNITS = r"(?:m/s|ms|us|µs|min|kg|cm|mm|s|t|m|J|N|x|plates|fps|degrees|deg|Hz)"
 NAMES_BEFORE_VERSION = ("ode", "version", "v", "havok", "bullet", "mujoco", "python", "cmake", "c++", "gcc", "g++",
@@ -65,6 +77,74 @@ NAMES_BEFORE_VERSION = ("ode", "version", "v", "havok", "bullet", "mujoco", "pyt
 SECTION_WORDS = ("chapter", "section", "thesis", "thesis's", "figure", "table", "issue", "§", "chapters", "sections")
 NUMBER = re.compile(r"(?<![\w./])(-?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:[eE][-+]?\d+)?)(?![\w.]*\d)"
                     r"(\s?%|\s?" + UNITS + r"(?![\w]))?")
+
+
+CITATION = re.compile(r"\[([^\]\n]+)\]\(([^)\s#]+\.csv)#([^)\s]+)\)")
+
+
+def uncoded(text):
+    """The text with code blocks, HTML comments and `code spans` blanked (line
+    breaks kept): a citation written as an example is none."""
+    text = re.sub(r"```.*?```", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    text = re.sub(r"<!--.*?-->", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    return re.sub(r"`[^`\n]*`", " ", text)
+
+
+def citations(text):
+    """(line number, link text, CSV path as written, row key) of every
+    citation link in a document's text."""
+    text = uncoded(text)
+    return [(text[:m.start()].count("\n") + 1, m.group(1), m.group(2), m.group(3)) for m in CITATION.finditer(text)]
+
+
+def without_citations(text):
+    """The text with each citation's link blanked (its figures are checked
+    against their rows instead)."""
+    return CITATION.sub(" ", uncoded(text))
+
+
+def cited_rows(rows, key):
+    """The rows (lists of cells, the first the column names) that `key`
+    (column=value&...) selects: None when it names a column the CSV lacks."""
+    if not rows:
+        return None
+    header, wanted = rows[0], parse_qsl(key, keep_blank_values=True)
+    if not wanted or any(column not in header for column, _ in wanted):
+        return None
+    return [row for row in rows[1:] if all(len(row) > header.index(column) and same(row[header.index(column)], value)
+                                           for column, value in wanted)]
+
+
+def same(cell, wanted):
+    """A cell equals a key's value: as numbers when both are, else as text."""
+    try:
+        return math.isclose(float(cell), float(wanted), rel_tol=1e-9, abs_tol=1e-15)
+    except ValueError:
+        return cell.strip() == wanted.strip()
+
+
+def check_citations(root, doc, text, tables):
+    """Problems with the page's citations: a CSV not committed, a key that
+    selects no row, a figure of the link's text not in the rows selected."""
+    problems = []
+    committed_paths = {path.resolve(): rows for path, rows in tables.items()}
+    name = str(doc.relative_to(root))
+    for line, link_text, target, key in citations(text):
+        path = (doc.parent / target).resolve()
+        if path not in committed_paths:
+            problems.append(f"{name}:{line}: cites {target}, which is no committed CSV")
+            continue
+        rows = cited_rows(committed_paths[path], key)
+        if not rows:
+            problems.append(f"{name}:{line}: cites row '{key}' of {target}, which selects no row"
+                            + (" (a column it names is not in the CSV)" if rows is None else ""))
+            continue
+        values = sorted(row_numbers(rows, set()))
+        for _, written, value, unit in figures(link_text):
+            if not is_held(values, value, written, unit):
+                problems.append(f"{name}:{line}: {written}{'' if unit in ('', '%') else ' ' + unit} is not in the "
+                                f"row '{key}' of {target} it cites")
+    return problems
 
 
 def prose(text):
@@ -216,8 +296,8 @@ def pending(root):
         rest = rest.strip()
         if not rest:
             waiting[name] = "page"
-        elif rest == "short":
-            waiting.setdefault(name, set()).add("short")
+        elif rest in ("short", "uncited"):
+            waiting.setdefault(name, set()).add(rest)
         else:
             waiting.setdefault(name, set()).add(rest.strip('"'))
     return waiting
@@ -232,6 +312,7 @@ def check(root):
     tables, code = csv_rows(root), code_numbers(root)
     values = held_numbers(root, tables, code)
     waiting = pending(root)
+    code_values = sorted(code)
     docs = [root / "README.md"] + sorted(p for p in (root / "doc").rglob("*.md") if "results" not in p.parts)
     problems, counted = [], 0
     for doc in docs:
@@ -241,9 +322,17 @@ def check(root):
         name = str(doc.relative_to(root))
         exempt = waiting.get(name, set())
         own = None
-        for line, written, value, unit in figures(text):
+        for problem in check_citations(root, doc, text, tables):
+            problems.append((exempt == "page", problem))
+        counted += sum(len(figures(link_text)) for _, link_text, _, _ in citations(text))
+        cited = exempt == "page" or "uncited" not in exempt
+        for line, written, value, unit in figures(without_citations(text)):
             counted += 1
             shown = f"{written}{'' if unit in ('', '%') else ' ' + unit}"
+            if cited and not is_held(code_values, value, written, unit):
+                problems.append((exempt == "page" or shown in exempt,
+                                 f"{name}:{line}: {shown} cites no CSV row (a link [{shown}](path.csv#column=value))"))
+                continue
             if not is_held(values, value, written, unit):
                 problems.append((exempt == "page" or shown in exempt, f"{name}:{line}: {shown} is held by no committed CSV"))
                 continue
@@ -269,8 +358,8 @@ def main(argv):
     for waiting, problem in problems:
         print("check_docs: " + ("(pending, lab/reference/docs-pending.txt) " if waiting else "") + problem)
     failing = sum(not waiting for waiting, _ in problems)
-    print(f"check_docs: {counted} measured figures in {files} documents, {len(problems)} held by no committed CSV "
-          f"({len(problems) - failing} in pending documents)")
+    print(f"check_docs: {counted} measured figures in {files} documents, {len(problems)} not cited or not held by "
+          f"a committed CSV ({len(problems) - failing} in pending documents)")
     return 1 if failing else 0
 
 

@@ -21,10 +21,11 @@
   claim (readings.py says what a file reads where its columns do not);
 - every other sentence in claims.csv (headline findings, sections'
   conclusions) stands in RESULTS.md where claims.csv says, and every headline
-  finding is such a sentence (but those of the experiments in UNCLAIMED,
-  whose sentences are not claims yet). A claims.csv without the `place`
-  column comes from a report made before sentences outside the first table
-  were claims: its claims are all the first table's.
+  finding is such a sentence, the engines' (peers) included. A claims.csv
+  without the `place` column comes from a report made before sentences
+  outside the first table were claims: its claims are all the first table's;
+- every claim that reads the CSVs has a rule on what it read: a rule that
+  names none of the claim's values (`True`) holds whatever the data say.
 
 Usage: check_report.py REPORT_DIR   (exit 0: all good; 1: problems, listed)"""
 
@@ -40,6 +41,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from odelab_report import readings  # noqa: E402 (standard library only)
 from odelab_report.claims import Data, _matches, read_rows, recheck  # noqa: E402
+from odelab_report import timing_check  # noqa: E402 (standard library only)
 
 HEADER_KEYS = ("ODE", "compiler", "CPU", "date", "commit")
 FIRST_COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE within 1%",
@@ -51,9 +53,6 @@ VERDICTS = ("reproduced", "partly", "differs", "untested")
 # LONGEST_ROW characters of text (a link counts by its text).
 FIRST_SCREEN_LINES, LONGEST_LINE, LONGEST_ROW = 40, 160, 120
 FIRST_TABLE, HEADLINE, DECIDES = "first table", "headline", "what decides"
-# Headline findings still made as plain text, by their first word: the
-# engines experiment (peers.py) writes its own verdicts.
-UNCLAIMED = ("peers ",)
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
@@ -238,7 +237,7 @@ def check_sentences(folder, text):
     headline = {row["text"] for row in claims if row["place"] == HEADLINE}
     for line in headline_lines(lines):
         finding = line[2:] if line.startswith("- ") else None
-        if finding and finding not in headline and not finding.startswith(UNCLAIMED):
+        if finding and finding not in headline:
             problems.append(f"headline finding '{finding[:80]}...' is no claim recomputed from the CSVs")
     for row in claims:
         place = row["place"]
@@ -252,6 +251,26 @@ def check_sentences(folder, text):
             where = experiment_lines(lines, place)
         if row["text"] not in "\n".join(where):
             problems.append(f"claim {row['key']} ('{row['text'][:80]}') is not in RESULTS.md's {place}")
+    return problems
+
+
+def check_rules(folder):
+    """Each claim that reads the CSVs has a rule that reads its values: a
+    rule naming none of them (`True`) would let any figure through."""
+    path = folder / "claims.csv"
+    problems = []
+    for row in read_rows(path) if path.exists() else []:
+        values = json.loads(row["values"])
+        if not any(isinstance(spec, dict) for spec in values.values()):
+            continue  # a definition: constants only, checked by check_one_reading
+        try:
+            named = {node.id for node in ast.walk(ast.parse(row["rule"], mode="eval")) if isinstance(node, ast.Name)}
+        except SyntaxError:
+            problems.append(f"claim {row['key']}: its rule `{row['rule']}` does not parse")
+            continue
+        if not named & set(values):
+            problems.append(f"claim {row['key']}: its rule `{row['rule']}` reads none of its values "
+                            f"({', '.join(values)}): it holds whatever the CSVs say")
     return problems
 
 
@@ -272,6 +291,7 @@ def main(argv):
     if text:
         problems += [f"first table: {problem}" for problem in check_first_screen(folder, text)]
         problems += check_sentences(folder, text)
+        problems += check_rules(folder)
     named = set(re.findall(r"\]\(([^)#]+\.(?:png|svg|csv))\)", text))
     for name in sorted(named):
         if not (folder / name).exists():
@@ -285,6 +305,7 @@ def main(argv):
             problems.append(f"{path.name}: {problem}")
     if (folder / "thesis.csv").exists():
         problems += [f"thesis.csv: {problem}" for problem in check_thesis(folder / "thesis.csv")]
+    problems += timing_check.problems(folder)
     for path in pngs:
         problem = check_png(path)
         if problem:

@@ -16,6 +16,7 @@ experiments)."""
 from . import markdown as md
 from . import readings
 from .claims import Claim, _matches, q
+from .peer_compare import FRICTION_ACTS
 
 COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE within 1%",
            "best other engine, step 0.001"]
@@ -41,8 +42,10 @@ def value(key, name, agg="one"):
     return q("thesis-values.csv", "value", agg, key=key, name=name)
 
 
-def figure_from_thesis(scene, key, name, template="{v:n}"):
-    return Claim(f"first.{scene}.figure", template, {"v": value(key, name)})
+def figure_from_thesis(scene, key, name, template, rule):
+    """ODE's figure from thesis-values.csv, shown when `rule` (on v) says it
+    is a figure of its kind (a count, a share, an error)."""
+    return Claim(f"first.{scene}.figure", template, {"v": value(key, name)}, rule)
 
 
 def speed_lookups(scene):
@@ -107,20 +110,43 @@ def solver_decides(scene):
                  values, "solver_span > 10 * step_span")
 
 
-def peer_cell(scene, higher_better, figure="{v:k2}"):
-    """The best engine other than ODE at step 0.001 in peers.csv, its figure
-    and CPU cost (one run per point: no range); no cell when no other engine ran the scene."""
+PEERS_SECTION = "5"  # RESULTS.md's section of experiments/peers.py
+
+
+def peer_cell(scene, higher_better, figure="{v:k2}", step=0.001):
+    """The best engine other than ODE in peers.csv at the row's step, at
+    its defaults (as ODE's figure is at the thesis's settings: defaults
+    beside defaults), like with like (peer_compare.py): a run on another
+    surface than ODE's or with a figure zero by construction takes no part;
+    the cell shows the step where it is not the column's 0.001 (and the
+    friction where it acts) and the CPU
+    cost, median [range] of the timed runs; an equal figure whose cost
+    range overlaps the cheapest's is a tie."""
     f = "peers.csv"
-    values = {"engines": q(f, "engine", "texts", scene=scene, step=0.001),
-              "settings": q(f, "setting", "texts", scene=scene, step=0.001),
-              "vals": q(f, "value", "list", scene=scene, step=0.001),
-              "costs": q(f, "cpu_s_per_sim_s", "list", scene=scene, step=0.001),
+    where = dict(scene=scene, step=step, setting="default")
+    values = {"engines": q(f, "engine", "texts", **where), "vals": q(f, "value", "list", **where),
+              "costs": q(f, "cpu_s_per_sim_s", "list", **where), "lo": q(f, "cpu_s_per_sim_s_min", "list", **where),
+              "hi": q(f, "cpu_s_per_sim_s_max", "list", **where), "like": q(f, "like_ode_surface", "list", **where),
+              "made": q(f, "by_construction", "texts", **where), "frictions": q(f, "friction", "texts", **where),
               "others": "[i for i, e in enumerate(engines) if e != 'ode' and vals[i] is not None]",
-              "i": f"others[best_of([engines[j] for j in others], [vals[j] for j in others], "
-                   f"[costs[j] for j in others], {higher_better})]",
-              "name": "engines[i]",
-              "v": "vals[i]", "c": "costs[i]"}
-    return Claim(f"first.{scene}.peer", "{name}: " + figure + ", {c:k2}", values, "len(others) > 0")
+              "fair": "[i for i in others if like[i] == 1 and not made[i] and costs[i] is not None]",
+              "i": "fair[best_of([engines[j] for j in fair], [vals[j] for j in fair], [costs[j] for j in fair], "
+                   f"{higher_better})] if fair else 0",
+              "tied": "[j for j in fair if j != i and vals[j] == vals[i] and lo[j] <= hi[i]]",
+              "name": "engines[i]", "v": "vals[i]", "c": "costs[i]", "a": "lo[i]", "b": "hi[i]",
+              # the friction, where it acts (peer_compare.FRICTION_ACTS)
+              "surface": "' mu ' + frictions[i]" if scene in FRICTION_ACTS else "''"}
+    at = "" if step == 0.001 else f" @{md.num(step)}"  # the column's step: said in its header
+    return [Claim(f"first.{scene}.peer.tie", f"[tie (see §{PEERS_SECTION})](#exp-peers)", values,
+                  "len(fair) > 0 and len(tied) > 0"),
+            Claim(f"first.{scene}.peer", "{name} " + figure + at + "{surface}, {c:k2} [{a:k2}-{b:k2}]", values,
+                  "len(fair) > 0 and len(tied) == 0"),
+            Claim(f"first.{scene}.peer.friction", "n/a: friction differs", values,
+                  "len(others) > 0 and len(fair) == 0 and any(like[j] == 0 for j in others)"),
+            Claim(f"first.{scene}.peer.construction", "n/a: zero by construction", values,
+                  "len(others) > 0 and len(fair) == 0 and all(made[j] for j in others)"),
+            Claim(f"first.{scene}.peer.none", "n/a: no other engine reached a figure", values,
+                  "len(others) == 0 and any(e != 'ode' for e in engines)")]
 
 
 STACKS = {"ten": q("limit-test5.csv", "tallest_plates", "list", setting="simple, 10 iterations"),
@@ -152,33 +178,38 @@ def rows():
     tilted6 = "remedy-test6-tilted.csv"  # each run scored against the analytic fall (experiments/remedy_test6.py)
     return [
         ("test0", definition("test0", "bodies at rest after 20 s", "bodies at rest"),
-         [figure_from_thesis("test0", "test0_hang", "resting", "{v:n} bodies")], [thesis_cell("test0_hang")],
+         [figure_from_thesis("test0", "test0_hang", "resting", "{v:n} bodies", "v >= 0 and v == round(v)")],
+         [thesis_cell("test0_hang")],
          [], None, None),
         ("test1", definition("test1", "max |apex2/apex1 - e^2|, e >= 0.1", "rebound error"),
-         [figure_from_thesis("test1", "test1", "rebound_error", "{v:k2}")], [thesis_cell("test1")],
-         [Claim("first.test1.decides", "CFM: at CFM 1e-3 {b:n} balls rebound", {"b": value("test1", "bounced_cfm")})],
-         None, [peer_cell("test1", False)]),
+         [figure_from_thesis("test1", "test1", "rebound_error", "{v:k2}", "v >= 0")], [thesis_cell("test1")],
+         [Claim("first.test1.decides", "CFM: at CFM 1e-3 {b:n} balls rebound",
+                {"b": value("test1", "bounced_cfm"), "n": value("test1", "balls")}, "b < n")],
+         None, peer_cell("test1", False)),
         ("test2", definition("test2", "energy (max-min)/max, 60 s, CFM 0", "energy (max-min)/max",
                              cfm=0, seconds=60),
-         [figure_from_thesis("test2", "test2", "variation", "{v:p2}")], [thesis_cell("test2")],
-         [step_decides("test2"), solver_decides("test2")], cheapest_cells("test2"), [peer_cell("test2", False)]),
+         [figure_from_thesis("test2", "test2", "variation", "{v:p2}", "0 <= v < 1")], [thesis_cell("test2")],
+         [step_decides("test2"), solver_decides("test2")], cheapest_cells("test2"), peer_cell("test2", False)),
         ("test3", definition("test3", "simulated s per wall s", "real-time factor"),
          [Claim("first.test3.figure", "{v:n}x ({lo:n}-{hi:n}, {n:n} runs)", test3_runs, "n > 1"),
-          figure_from_thesis("test3", "test3", "real_time_factor", "{v:n}x (1 run)")],
+          figure_from_thesis("test3", "test3", "real_time_factor", "{v:n}x (1 run)", "v > 0")],
          [thesis_cell("test3")],
          [Claim("first.test3.decides", "auto-disable and iterations: without auto-disable {a:n} x at 8 "
                 "iterations, {b:n} x at 20", {"a": value("test3", "real_time_factor_8"),
-                                              "b": value("test3", "real_time_factor_20")})],
-         None, [peer_cell("test3", True, "{v:p2}")]),
+                                              "b": value("test3", "real_time_factor_20"),
+                                              "on": value("test3", "real_time_factor")}, "on > a > b > 0")],
+         None, peer_cell("test3", True, "{v:p2}", step=0.005)),
         ("test4", definition("test4", "heaviest cube held 20 s, QuickStep 20, 0.001", "heaviest cube held"),
          [Claim("first.test4.figure", "{v:n} kg", {
-             "v": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.001)})],
+             "v": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.001)}, "v > 0")],
          [thesis_cell("test4_fast")],
          [Claim("first.test4.decides", "the solver: dWorldStep holds {dw:n} kg at step 0.001; the step: "
                 "QuickStep 20 holds {fine:n} kg at 0.0001",
                 {"dw": q("limit-test4.csv", "heaviest_held_kg", solver="dWorldStep", step_s=0.001),
-                 "fine": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.0001)})],
-         None, [peer_cell("test4", True, "{v:k2} kg")]),
+                 "fine": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.0001),
+                 "qs": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.001)},
+                "dw > qs and fine > qs")],
+         None, peer_cell("test4", True, "{v:k2} kg")),
         ("test5", definition("test5", "tallest stack in real time, 20 iterations", "tallest stack"),
          [Claim("first.test5.figure", "{v:n} plates (median, {n:n})", {
              "v": q("limit-test5.csv", "tallest_plates", "median", setting="simple, 20 iterations"),
@@ -190,7 +221,7 @@ def rows():
                 "(simple space, every search)", STACKS, "min(ten) > max(twenty) or min(twenty) > max(ten)"),
           Claim("first.test5.decides.overlap", "no choice measured stands out: 10 iterations {ten:r} plates, "
                 "20 iterations {twenty:r}, the ranges overlap (simple space); the spaces at 20 iterations "
-                "{spaces:r}", STACKS, "not (min(ten) > max(twenty) or min(twenty) > max(ten))")], None, [peer_cell("test5", True, "{v:n} plates")]),
+                "{spaces:r}", STACKS, "not (min(ten) > max(twenty) or min(twenty) > max(ten))")], None, peer_cell("test5", True, "{v:n} plates")),
         ("test6", definition("test6", "fall-time error, 0.01° tilt, QuickStep 20", "fall-time error"),
          [Claim("first.test6.figure", "{v:p2} (median, {n:n})",
                 {"v": q(tilted6, "fall_time_error", "median", setting=plain6, tilt_degrees=0.01),
@@ -204,27 +235,27 @@ def rows():
                  "qs": q(tilted6, "fall_time_error", "median", setting=plain6, tilt_degrees=0.01),
                  "small": q(tilted6, "fall_time_error", "median", setting="QuickStep 20, step 0.0001 (smaller step)",
                             tilt_degrees=0.01)},
-                "abs(dw) < abs(qs)")], None, [peer_cell("test6", True, "{v:n} s")]),
+                "abs(dw) < abs(qs)")], None, peer_cell("test6", True, "{v:n} s")),
         ("test7", definition("test7", "joint error (m), 3 throws, speed cap on", "joint error",
                              angular_speed_cap="on"),
-         [figure_from_thesis("test7", "test7", "joint_error", "{v:k2} m")], [thesis_cell("test7")], [],
-         None, [peer_cell("test7", False, "{v:k2} m")]),
+         [figure_from_thesis("test7", "test7", "joint_error", "{v:k2} m", "v >= 0")], [thesis_cell("test7")], [],
+         None, peer_cell("test7", False, "{v:k2} m")),
         ("test8", definition("test8", "max |l-l0|/l0, 60 s, ERP 0.4, CFM 1e-4", "relative elongation",
                              erp=0.4, cfm=0.0001, seconds=60, bob_mass_kg=5000),
-         [figure_from_thesis("test8", "test8_a", "elongation", "{v:k2}")], [thesis_cell("test8_a")],
+         [figure_from_thesis("test8", "test8_a", "elongation", "{v:k2}", "v >= 0")], [thesis_cell("test8_a")],
          [Claim("first.test8.decides", "CFM: {c0:n2} at CFM 0, {c4:n2} at 1e-4 (ERP 0.4)",
                 {"c0": q("limit-test8.csv", "max_relative_elongation", sweep="cfm", erp=0.4, cfm=0),
                  "c4": q("limit-test8.csv", "max_relative_elongation", sweep="cfm", erp=0.4, cfm=0.0001)},
                 "c4 > 10 * c0"),
           solver_decides("test8"), step_decides("test8")],
-         cheapest_cells("test8"), [peer_cell("test8", False)]),
+         cheapest_cells("test8"), peer_cell("test8", False)),
         ("test9", definition("test9", "20th apex error, ERP 0.2, CFM 0", "apex error after 20 bounces",
                              erp=0.2, cfm=0),
-         [figure_from_thesis("test9", "test9_a", "apex_error_20", "{v:k2}")], [thesis_cell("test9_a")],
-         [solver_decides("test9"), step_decides("test9")], cheapest_cells("test9"), [peer_cell("test9", False)]),
+         [figure_from_thesis("test9", "test9_a", "apex_error_20", "{v:k2}", "v >= 0")], [thesis_cell("test9_a")],
+         [solver_decides("test9"), step_decides("test9")], cheapest_cells("test9"), peer_cell("test9", False)),
         ("test10", definition("test10", "fastest cube stopped, step 0.001", "velocity stopped"),
-         [Claim("first.test10.figure", "{v:n} m/s", {"v": q("limit-test10.csv", "max_velocity", step_s=0.001)}),
-          figure_from_thesis("test10", "test10_a", "max_velocity", "{v:n} m/s")],
+         [Claim("first.test10.figure", "{v:n} m/s", {"v": q("limit-test10.csv", "max_velocity", step_s=0.001)}, "v > 0"),
+          figure_from_thesis("test10", "test10_a", "max_velocity", "{v:n} m/s", "v > 0")],
          [thesis_cell("test10_a")],
          [Claim("first.test10.decides", "the step ({a:n} / {b:n} / {c:n} m/s at step 0.01 / 0.001 / 0.0001) "
                 "unless `--ccd`: {d:n4} m/s at 0.001 (the scan's limit), its wall time per launch {e:p2} against plain "
@@ -240,7 +271,7 @@ def rows():
                 {"a": q("limit-test10.csv", "max_velocity", step_s=0.01),
                  "b": q("limit-test10.csv", "max_velocity", step_s=0.001),
                  "c": q("limit-test10.csv", "max_velocity", step_s=0.0001)}, "a < b < c")],
-         None, [peer_cell("test10", True, "{v:k2} m/s")]),
+         None, peer_cell("test10", True, "{v:k2} m/s")),
     ]
 
 

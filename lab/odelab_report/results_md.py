@@ -88,7 +88,8 @@ def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partia
 
 FIRST_SCREEN_INTRO = """Each row: one quantity at one setting (its second cell); every cell read from this report's
 CSVs by the rule in claims.csv (lab/check_report.py recomputes them). Cost: CPU s per simulated s,
-median [min-max] over the repeats (other engines: one run), this machine. "n/a": why no figure."""
+median [min-max] over the timed repeats, this machine; other engines at their defaults, like with like
+(same step and surface; a tie within the timing's scatter says so). "n/a": why no figure."""
 
 FIRST_SCREEN_BELOW = """Below: [what decides each figure](#what-decides-each-figure),
 [the machine](#run), [the thesis's table](#exp-thesis), [ties and costs](#exp-speed-test9) (§3),
@@ -105,8 +106,9 @@ def first_screen_lines(sentences):
 
 def _headline(sentences, outcome):
     """An experiment's headline findings: a Claim (or alternatives) is shown
-    when its rule holds; a plain string only from an experiment whose
-    sentences are not claims yet (check_report.py names which may)."""
+    when its rule holds. A plain string is still written (a long run is not
+    lost at its end), but check_report.py fails it: no headline finding may
+    be anything but a claim."""
     for finding in outcome.headline:
         if isinstance(finding, str):
             yield finding

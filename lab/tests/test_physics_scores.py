@@ -113,9 +113,12 @@ class EnginesTest6Unranked(unittest.TestCase):
         self.addCleanup(shutil.rmtree, out)
         ctx = types.SimpleNamespace(out_dir=out, register_files=lambda *files: None)
         scene = next(s for s in peers.SCENES if s.name == "test6")
-        rows = [dict(engine=e, setting="best", step=0.001, value=v, wall_s_per_sim_s=0.01, cpu_s_per_sim_s=0.01,
-                     exit_status=0, voided=False, capped=False) for e, v in (("ode", 10.98), ("havok", 60.0))]
-        text, headline = peers.Peers().scene_part(ctx, scene, rows)
+        rows = [dict(scene="test6", engine=e, setting="best", step=0.001, value=v, wall_s_per_sim_s=0.01,
+                     cpu_s_per_sim_s=0.01, cpu_s_per_sim_s_min=0.009, cpu_s_per_sim_s_max=0.011, repeats=5,
+                     friction="100", like_ode_surface=1, by_construction="", exit_status=0, voided=False,
+                     capped=False) for e, v in (("ode", 10.98), ("havok", 60.0))]
+        text, headline, claims = peers.Peers().scene_part(ctx, scene, rows)
+        self.assertEqual(claims, {})
         self.assertEqual(headline, [])
         self.assertIn("Not ranked: standing longer is not better physics", text)
         self.assertNotIn("is best with", text)

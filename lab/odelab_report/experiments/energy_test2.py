@@ -38,7 +38,7 @@ RULE_FAILS = Claim("energy-test2.rule.fails",
                    {"w": figure("max_swing_error")}, "w > 0.01")
 THESIS = Claim("energy-test2.thesis",
                "Like for like, (max - min) / max, this build's {v:p2} is {r:n2}x the thesis's {t:p}.",
-               {"v": figure("variation"), "t": figure("thesis_variation"), "r": "v / t"})
+               {"v": figure("variation"), "t": figure("thesis_variation"), "r": "v / t"}, "0 <= v < 1 and t > 0")
 _PERIOD = {"p": figure("period_s"), "e": figure("period_exact_s"), "d": "abs(p - e) / e"}
 PERIOD = [Claim("energy-test2.period.close", "The measured period, {p:n7} s, is within 1% of the exact {e:n7} s "
                 "({d:p2} off).", _PERIOD, "d < 0.01"),

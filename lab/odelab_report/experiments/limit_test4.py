@@ -21,11 +21,12 @@ def _held(column="heaviest_held_kg", agg="one", **where):
 
 _AT_0001 = {"qs": _held(solver="QuickStep 20", step_s=0.001), "dw": _held(solver="dWorldStep", step_s=0.001),
             "s": _held("hold_seconds", solver="QuickStep 20", step_s=0.001)}
+_HELD = "qs > 0 and dw > 0 and s > 0"  # each solver held some mass, for a stated time
 _HEADLINE = "test4: at step 0.001 QuickStep holds up to {qs:n} kg on the 5 kg cube for {s:n} s, dWorldStep {dw:n} kg"
 HEADLINE = [Claim("headline.test4", _HEADLINE + " (thesis: {thesis}; Havok {havok}).",
                   dict(_AT_0001, thesis=q("thesis.csv", "thesis_ode_0_11_1", "text", key="test4_fast"),
-                       havok=q("thesis.csv", "havok_6_5_quoted", "text", key="test4_fast"))),
-            Claim("headline.test4.alone", _HEADLINE + ".", _AT_0001)]
+                       havok=q("thesis.csv", "havok_6_5_quoted", "text", key="test4_fast")), _HELD),
+            Claim("headline.test4.alone", _HEADLINE + ".", _AT_0001, _HELD)]
 _BY_STEP = {"qs": _held(agg="list", solver="QuickStep 20"), "qh": _held("step_s", "list", solver="QuickStep 20"),
             "dw": _held(agg="list", solver="dWorldStep"), "dh": _held("step_s", "list", solver="dWorldStep"),
             "coarse": "qs[qh.index(max(qh))]", "fine": "qs[qh.index(min(qh))]", "hmin": "min(qh)",

@@ -28,7 +28,8 @@ HEADLINE = Claim("headline.test8", "test8: at ERP 0.4 the 5000 kg pendulum stret
                  "ERP 1.0.", {"s4": _sweep("max_relative_elongation", erp=0.4, cfm=1e-4),
                               "e4": _sweep("estimate_F_h_CFM_over_ERP", erp=0.4, cfm=1e-4),
                               "s0": _sweep("max_relative_elongation", erp=0.4, cfm=0),
-                              "l4": _limit(CFM_LIMITS[0]), "l1": _limit(CFM_LIMITS[1])})
+                              "l4": _limit(CFM_LIMITS[0]), "l1": _limit(CFM_LIMITS[1])},
+                 "s0 < s4 and e4 > 0 and l4 > 0 and l1 > 0")
 
 
 def pendulum(r):

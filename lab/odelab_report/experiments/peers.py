@@ -15,9 +15,12 @@ import re
 from pathlib import Path
 
 from .. import markdown as md
+from .. import peers_headline
 from .. import swing_energy
+from .. import timing
 from ..plots import peers as plots
 from ..header import first_line
+from ..peer_compare import BY_CONSTRUCTION, like_surface, ode_friction, peer_friction, standings, surface_text
 from ..runner import LabError, RunSpec
 from ..search import highest_passing
 from .base import Experiment, Outcome
@@ -36,7 +39,15 @@ LOCKFILE = Path(__file__).resolve().parents[3] / "peers" / "wasm" / "package-loc
 # below 1e-7 is rounding.
 ROUNDING = 1e-12
 FLOAT32_ROUNDING = 1e-7
-COMPARE_STEP = 0.001  # the step of the thesis's figures and of the headline
+COMPARE_STEP = 0.001  # the step of the thesis's figures and of the matrix
+# The steps each scene's verdicts compare at: the thesis's step for the
+# scene (test3's program runs at 0.005) and the matrix's.
+VERDICT_STEPS = {"test3": [0.005, 0.001]}
+# Scenes whose figure is an event of the scene as built (a chain that falls
+# and sleeps, a stack searched at its run length, a velocity scan): their
+# timed runs repeat the figure's run; every other scene's timed runs are
+# stretched to last timing.MIN_RUN_CPU_SECONDS.
+FIXED_LENGTH = ("test3", "test5", "test10")  # (test10: the scan; the peers have no repeated launches)
 
 # Each engine's settings per scene: (name, program arguments). A peer's
 # "default" and "best" are defined in its program (peers/*_lab.cpp, printed
@@ -181,6 +192,45 @@ def base_args(engine, scene, quick):
     return [*own, *scene.args(quick)]
 
 
+def first_line_of(r):
+    """The settings line a peer program prints first ("" for no run)."""
+    return (r.stdout.splitlines() or [""])[0] if r is not None else ""
+
+
+def timed_args(runner, scene, r, minimum):
+    """The arguments of a cell's timed runs: its figure run's, stretched to
+    last `minimum` CPU seconds (timing.stretched) unless the scene's
+    length is its figure (FIXED_LENGTH)."""
+    if scene.name in FIXED_LENGTH:
+        return list(r.spec.args)
+    return timing.stretched(runner, r.spec.program, r.spec.args, minimum)
+
+
+def costs(results):
+    """A cell's cost columns from its timed runs (those that ended with status 0)."""
+    ok = [r for r in results if r.rc == 0 and r.m("sim_seconds")]
+    cpu = timing.spread([per_sim_second(r, r.cpu_seconds) for r in ok])
+    wall = timing.spread([per_sim_second(r, r.m("wall_seconds")) for r in ok])
+    return dict(timed_sim_seconds=ok[0].m("sim_seconds") if ok else None, repeats=len(ok),
+                shortest_run_cpu_seconds=min((r.cpu_seconds for r in ok), default=None),
+                cpu_s_per_sim_s=cpu[0], cpu_s_per_sim_s_min=cpu[1], cpu_s_per_sim_s_max=cpu[2],
+                wall_s_per_sim_s=wall[0], wall_s_per_sim_s_min=wall[1], wall_s_per_sim_s_max=wall[2])
+
+
+def cost_text(row):
+    """"0.031 [0.030-0.033]": a cell's CPU seconds per simulated second, median [range]."""
+    if row.get("cpu_s_per_sim_s") is None:
+        return "not timed"
+    return (f"{md.num(row['cpu_s_per_sim_s'], 2)} [{md.num(row['cpu_s_per_sim_s_min'], 2)}-"
+            f"{md.num(row['cpu_s_per_sim_s_max'], 2)}]")
+
+
+def as_standing(row):
+    """A peers row as peer_compare.standings reads it."""
+    return dict(row, cpu_median=row["cpu_s_per_sim_s"], cpu_min=row["cpu_s_per_sim_s_min"],
+                cpu_max=row["cpu_s_per_sim_s_max"])
+
+
 def per_sim_second(r, seconds):
     sim = r.m("sim_seconds")
     return seconds / sim if seconds is not None and sim else None
@@ -224,7 +274,7 @@ class Peers(Experiment):
         plan = [(scene, engine, setting, args, step) for scene in scenes for engine in engines
                 if engine not in scene.missing
                 for setting, args in settings_of(engine, scene) for step in scene.steps(ctx.quick, engine)]
-        ctx.expect(len(plan))
+        ctx.expect(len(plan) * (1 + timing.repeats(ctx.quick)))
 
         def one(point):
             scene, engine, setting, args, step = point
@@ -234,29 +284,45 @@ class Peers(Experiment):
             voided = bool(r) and scene.voided_by is not None and scene.voided_by[0](r)
             if voided:
                 value = None
-            return dict(voided=voided, scene=scene.name, engine=engine, setting=setting, step=step, quantity=scene.quantity,
-                        value=value, wall_s_per_sim_s=per_sim_second(r, r.m("wall_seconds")) if r else None,
-                        cpu_s_per_sim_s=per_sim_second(r, r.cpu_seconds) if r else None,
+            friction = ode_friction(scene.name) if engine == "ode" else peer_friction(first_line_of(r))
+            return dict(voided=voided, scene=scene.name, engine=engine, setting=setting, step=step,
+                        quantity=scene.quantity, value=value, friction=friction,
+                        like_ode_surface=int(like_surface(scene.name, friction)),
+                        by_construction=BY_CONSTRUCTION.get((engine, scene.name), ""),
                         capped=bool(r) and scene.name == "test10" and r.m("first_failure_velocity") == 0,
-                        exit_status=r.rc if r else None)
+                        exit_status=r.rc if r else None), r
 
-        rows = ctx.runner.parallel([lambda p=p: one(p) for p in plan])
-        columns = ["scene", "engine", "setting", "step", "quantity", "value", "wall_s_per_sim_s", "cpu_s_per_sim_s"]
+        measured = ctx.runner.parallel([lambda p=p: one(p) for p in plan])
+        rows = [row for row, _ in measured]
+        self.time_cells(ctx, plan, measured)
+        columns = ["scene", "engine", "setting", "step", "quantity", "value", "friction", "like_ode_surface",
+                   "by_construction", "timed_sim_seconds", "repeats", "shortest_run_cpu_seconds",
+                   "cpu_s_per_sim_s", "cpu_s_per_sim_s_min", "cpu_s_per_sim_s_max",
+                   "wall_s_per_sim_s", "wall_s_per_sim_s_min", "wall_s_per_sim_s_max", "capped"]
         csv = ctx.write_csv("peers", columns, rows, notes=[
             "engines at the same step; settings: doc/peers.md; value: the quantity named (empty: not reached, "
-            "e.g. no 20th bounce)",
+            "e.g. no 20th bounce), from one run of the scene's length",
+            "friction: the coefficient the run used (ODE's from its scene, a peer's from the settings line it "
+            "prints; 'engine default' where it sets none); like_ode_surface: 1 where it stands on ODE's surface "
+            "(friction 100 is the peers' never-sliding contact, ODE's infinite) or friction does not act; "
+            "by_construction: why the figure cannot be wrong on that engine (it takes no part in a comparison)",
+            f"costs: the median, min and max over `repeats` interleaved timed runs of timed_sim_seconds each (at "
+            f"least {timing.min_run_cpu(ctx.quick):g} CPU s where the scene can be lengthened; "
+            f"{', '.join(FIXED_LENGTH)} and test4's search repeat the figure's own run or mass); "
             "wall_s_per_sim_s: the program's own run-loop wall_seconds / sim_seconds; cpu_s_per_sim_s: the "
             "process's user + system time (start-up included) / sim_seconds",
             "max_velocity_stopped: the ODE program's and the peers' max_velocity metric (test10's scan, stopped at "
             "the first failure); heaviest_held_kg: the search of limit-test4 on each engine",
+            "capped: 1 when test10's scan reached its limit with no launch through (the figure is the scan's limit)",
             "energy_swing_error (test2): each engine's energy_max_deviation, |E - E0| / E0, times E0 / (m g d); "
             + swing_energy.header()])
-        parts, headline = [], []
+        parts, headline, claims = [], [], {}
         for scene in scenes:
             mine = [r for r in rows if r["scene"] == scene.name]
-            text, line = self.scene_part(ctx, scene, mine)
+            text, line, said = self.scene_part(ctx, scene, mine)
             parts.append(text)
             headline += line
+            claims.update(said)
         versions = web_versions()
         web = [f"{e.capitalize()} ({versions.get(e, WEB_PEERS[e])})" for e in WEB_PEERS if e not in skipped]
         web_text = (f"""Havok, Jolt and Rapier run through their WebAssembly builds in Node.js
@@ -280,7 +346,7 @@ The column "Havok 6.5 (thesis)" is quoted from the thesis, not measured. ODE's s
 {md.files_line([csv])}
 
 {self.matrix(scenes, engines, rows)}{not_built}"""
-        return Outcome(intro + "\n\n" + "\n\n".join(parts), headline)
+        return Outcome(intro + "\n\n" + "\n\n".join(parts), headline, claims=claims)
 
     # ---- the matrix: scene by engine, at COMPARE_STEP ----------------------------------
     def matrix(self, scenes, engines, rows):
@@ -300,8 +366,7 @@ The column "Havok 6.5 (thesis)" is quoted from the thesis, not measured. ODE's s
                          and r["step"] == COMPARE_STEP]
                 figure_row.append(self.value_text(scene, found[0]) if found
                                   else "cannot run it (below)" if e in scene.missing else "(one setting)")
-                cost_row.append(f"{md.num(found[0]['wall_s_per_sim_s'], 2)} / {md.num(found[0]['cpu_s_per_sim_s'], 2)}"
-                                if found else "-")
+                cost_row.append(cost_text(found[0]) if found else "-")
                 if (e, s) == ("havok", "best") or (e, s) == columns[-1] and "havok" not in engines:
                     figure_row.append(havok_quote(scene.name)[0] or "-")
                     cost_row.append("-")
@@ -314,14 +379,35 @@ The figure each engine reaches ({quantities}):
 
 {md.table(header, figures)}
 
-Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start-up included):
+Its cost, CPU seconds per simulated second, the median [min-max] of the timed runs (the whole process, start-up
+included; peers.csv has the program's own wall times too):
 
 {md.table(header, costs)}"""
+
+    # ---- the cells' timings ------------------------------------------------------------
+    def time_cells(self, ctx, plan, measured):
+        """timing.repeats timed runs of every cell that ran, interleaved (every
+        cell's first, then every cell's second...: a busy spell of the machine
+        falls on many cells, not on the repeats of one); their costs into the rows."""
+        ran = [(point, row, r) for point, (row, r) in zip(plan, measured) if r is not None and r.rc == 0]
+        minimum = timing.min_run_cpu(ctx.quick)
+        lengths = ctx.runner.parallel([lambda p=p, r=r: timed_args(ctx.runner, p[0], r, minimum) for p, _, r in ran])
+        cells = [(point, row, args) for (point, row, _), args in zip(ran, lengths)]
+        done = {id(row): [] for _, row, _ in cells}
+        for repeat in range(timing.repeats(ctx.quick)):
+            specs = [RunSpec(program_of(point[1], point[0]), args, timed=True, repeat=repeat,
+                             measures_blow_ups=True) for point, _, args in cells]
+            for (_, row, _), result in zip(cells, ctx.runner.map(specs)):
+                done[id(row)].append(result)
+            ctx.advance(len(cells))
+        ctx.advance((len(plan) - len(cells)) * timing.repeats(ctx.quick))
+        for row, _ in measured:
+            row.update(costs(done.get(id(row), [])))
 
     # ---- one point ---------------------------------------------------------------
     def measure(self, ctx, scene, engine, args, step):
         r = ctx.runner.run(RunSpec(program_of(engine, scene),
-                                   [*base_args(engine, scene, ctx.quick), *args, "--step", step], timed=True,
+                                   [*base_args(engine, scene, ctx.quick), *args, "--step", step],
                                    measures_blow_ups=True))
         value = r.m(scene.metric) if r.rc == 0 else None
         return (scene.convert(value) if scene.convert and value is not None else value), r
@@ -360,35 +446,58 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
         ctx.register_files(plots.peers_speed_accuracy(ctx.out_dir, f"peers-{scene.name}", rows, scene.label,
                                                       scene.lower_is_better, havok_number, ROUNDING))
         table = [[r["engine"], r["setting"], md.num(r["step"]), self.value_text(scene, r),
-                  md.num(r["wall_s_per_sim_s"], 3), md.num(r["cpu_s_per_sim_s"], 3)] for r in rows]
-        ties = [] if scene.unranked else self.best_at_compare_step(scene, rows)
-        verdict = (f"Not ranked: {scene.unranked}." if scene.unranked
-                   else f"No engine reached a figure at step {COMPARE_STEP}.")
-        headline = []
-        if ties:
-            winner = min(ties, key=lambda r: r["wall_s_per_sim_s"] or 0)
-            ode = [r for r in rows if r["engine"] == "ode" and r["setting"] == "default" and r["step"] == COMPARE_STEP]
-            ode_text = f"; ODE at its default {self.value_text(scene, ode[0])}" if ode else ""
-            names = ", ".join(f"{r['engine']} ({r['setting']})" for r in ties)
-            how = "exact to rounding" if self.exact(scene, winner) else "best"
-            verdict = (f"At step {COMPARE_STEP}: {names} {'is' if len(ties) == 1 else 'are'} {how} with "
-                       f"{self.value_text(scene, winner)}" +
-                       (f", the cheapest {winner['engine']} ({winner['setting']})" if len(ties) > 1 else "") +
-                       f" at {md.num(winner['wall_s_per_sim_s'], 3)} wall s per simulated s{ode_text}.")
-            headline.append(f"peers {scene.name} ({scene.label}): {verdict[0].lower() + verdict[1:]}")
+                  surface_text(scene.name, r["friction"]) + ("" if r["like_ode_surface"] else " (not ODE's)"),
+                  cost_text(r), md.num(r["repeats"])] for r in rows]
+        verdicts, headline = [], []
+        if scene.unranked:
+            # No engine is "best" on a figure that is not better physics (Scene.unranked says why).
+            verdicts.append(f"Not ranked: {scene.unranked}.")
+        else:
+            for step in VERDICT_STEPS.get(scene.name, [COMPARE_STEP]):
+                for kind in ("default", "best"):
+                    verdicts.append(self.verdict(scene, rows, step, kind))
+            # The headline is a claim on peers.csv (peers_headline.py), the
+            # sections' first sentence recomputed by check_report.py.
+            rounding = (tuple(WEB_PEERS), ROUNDING, FLOAT32_ROUNDING)
+            headline = [peers_headline.headline(scene.name, scene.label, scene.lower_is_better,
+                                                VERDICT_STEPS.get(scene.name, [COMPARE_STEP])[0], *rounding)]
         havok = (f"Havok 6.5, quoted by the thesis ({havok_conditions}): **{havok_text}**."
                  if havok_text else "The thesis quotes no Havok figure for this scene.")
         missing = "".join(f" Not run on {e}: {why}." for e, why in scene.missing.items())
         text = f"""#### {scene.name}: {scene.label}
 
-{verdict} {havok}{missing} The thesis's ODE 0.11.1: {thesis_ode(scene.name) or "-"}.
+{" ".join(verdicts)} {havok}{missing} The thesis's ODE 0.11.1: {thesis_ode(scene.name) or "-"}.
 
-{md.table(["engine", "setting", "step (s)", scene.quantity, "wall s / sim s", "CPU s / sim s"], table)}
+{md.table(["engine", "setting", "step (s)", scene.quantity, "surface", "CPU s / sim s, median [range]", "timed runs"],
+          table)}
 
-{md.figure(f"peers-{scene.name}", f"{scene.name}: {scene.label} against wall seconds per simulated second, "
-           "one curve per engine and setting (steps large to small)" +
+{md.figure(f"peers-{scene.name}", f"{scene.name}: {scene.label} against CPU seconds per simulated second, "
+           "one curve per engine and setting (steps large to small), bars the range of the timed runs" +
            (", Havok's quoted figure as a line" if havok_number is not None else ""))}"""
-        return text, headline
+        return text, headline, {}
+
+    def verdict(self, scene, rows, step, kind):
+        """One sentence: who is best at `step` among the engines' `kind`
+        settings (defaults with defaults, best with best; ODE's one setting
+        counts as both), like with like (peer_compare.standings)."""
+        mine = [r for r in rows if r["step"] == step and (
+            r["setting"] == kind or r["engine"] == "ode" and len(ODE_SETTINGS[scene.name]) == 1)]
+        winners, excluded = standings([as_standing(r) for r in mine], scene.lower_is_better,
+                                      lambda r: rounding_of(r["engine"]))
+        where = f"At step {md.num(step)}, {'defaults' if kind == 'default' else 'each engine at its best'}"
+        left = "".join(f" Not compared: {r['engine']} ({why})." for r, why in excluded)
+        if not winners:
+            return f"{where}: no engine that compares reached a figure.{left}"
+        first = winners[0]
+        how = "exact to rounding" if self.exact(scene, first) else "best"
+        figure = self.value_text(scene, first)
+        if len(winners) == 1:
+            text = (f"{where}: {first['engine']} ({first['setting']}) is {how} with {figure} at "
+                    f"{cost_text(first)} CPU s per simulated s")
+        else:
+            names = ", ".join(f"{r['engine']} ({r['setting']}, {cost_text(r)})" for r in winners)
+            text = (f"{where}: a tie within the timing's scatter at {figure}: {names} CPU s per simulated s")
+        return text + "." + left
 
     @staticmethod
     def exact(scene, r):
@@ -400,16 +509,6 @@ Its cost, wall / CPU seconds per simulated second (CPU: the whole process, start
         if r["value"] is None:
             return scene.not_reached if r["exit_status"] in (0, None) else f"blew up (exit {r['exit_status']})"
         text = md.num(r["value"], 3)
+        if r.get("by_construction"):
+            return f"{text}: {r['by_construction']}"
         return text + " (scan limit)" if r.get("capped") else text
-
-    @staticmethod
-    def best_at_compare_step(scene, rows):
-        """The most accurate settings at COMPARE_STEP (errors below ROUNDING tie); [] if none has a figure."""
-        at = [r for r in rows if r["step"] == COMPARE_STEP and r["value"] is not None]
-        if not at:
-            return []
-        if scene.lower_is_better:
-            best = min(max(r["value"], rounding_of(r["engine"])) for r in at)
-            return [r for r in at if max(r["value"], rounding_of(r["engine"])) == best]
-        best = max(r["value"] for r in at)
-        return [r for r in at if r["value"] == best]

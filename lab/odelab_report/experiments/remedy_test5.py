@@ -7,6 +7,7 @@ and 0.05 for both thresholds) and ODE's threaded island stepping (2 threads)."""
 from .. import markdown as md
 from ..claims import Claim, q, slot
 from ..plots import remedies as plots
+from .. import timing
 from .base import Experiment, Outcome
 from . import stack_tuning
 from .limit_test5 import EXPECTED_PROBES, RULE, SPACES, search_tallest, summary_row
@@ -182,7 +183,11 @@ iterations): each coordinate in turn (iterations, contacts per colliding pair
 `--max-contacts`, SOR w, space, ERP 0.1-0.4, CFM 0 or 1e-5 (the thesis tried 1e-4), the contact
 surface layer, the contacts' max correcting velocity, auto-disable
 thresholds) is tried at every value with the others at the best so far, in
-that order, and the value with the smallest *margin* is kept. The margin is
+that order, and the value with the smallest *margin* is kept, unless it and
+the value already chosen are both bound by real time and their margins differ
+by no more than the timing's scatter (measured first: {timing.repeats(quick)} timed runs of the start
+setting at the target, (max - min) / median of their cost): then they tie and
+the value already chosen stays. The margin is
 how far the run is from failing, as a ratio to its limit (at most 1 passes):
 the largest of cost per step / step, axis offset / 0.1 m, twist / 2 degrees
 and the height missing from N x plate thickness / 5%; infinite for a blow-up or a

@@ -9,6 +9,7 @@ from .. import swing_energy
 from ..claims import Claim, q, slot
 from ..first_screen import speed_lookups
 from ..plots import speed as plots
+from .. import timing
 from ..runner import RunSpec, median
 from .base import Experiment, Outcome, log_space
 
@@ -16,21 +17,10 @@ SOLVERS = [("dWorldStep", ["--solver", "step"])] + [
     (f"QuickStep {n}", ["--solver", "quick", "--iterations", n]) for n in (5, 10, 20, 50, 100)]
 THRESHOLDS = [1e-2, 1e-3, 1e-4]
 ZERO_FLOOR = 1e-16  # an error of exactly 0 is drawn here (below double precision's reach)
-# Timed runs last at least this many steps (full report): a run of a few
-# milliseconds is timed mostly by the scheduler, not by ODE.
-MIN_TIMED_STEPS = 30000
-
-
-# Timings per point where a run is cheap: the cheapest setting is picked by
-# its median and its ties by the range, so a handful is needed.
-REPEATS = 5
-
-
-def repeats_for(step, sim_seconds, quick):
-    """REPEATS timings (median and range) where a run is cheap, one where it is not."""
-    if quick:
-        return 1
-    return REPEATS if sim_seconds / step <= 100000 else 1
+# Timings: timing.repeats interleaved runs per point, each stretched from the
+# point's accuracy run to last timing.MIN_RUN_CPU_SECONDS of CPU (a run of a
+# few milliseconds is timed mostly by the scheduler and the start-up, not by
+# ODE); the cheapest setting is picked by its median and its ties by the range.
 
 
 class SpeedAccuracy(Experiment):
@@ -50,30 +40,18 @@ class SpeedAccuracy(Experiment):
         steps = log_space(1e-2, 1e-4, 3 if ctx.quick else 9)
         args, sim_seconds = self.scene_args(ctx.quick)
         plan = [(solver, solver_args, step) for solver, solver_args in SOLVERS for step in steps]
-        timing = []  # (timed seconds, repeats, timed arguments) per point
-        for _, solver_args, step in plan:
-            timed_seconds = sim_seconds if ctx.quick else max(sim_seconds, round(MIN_TIMED_STEPS * step, 6))
-            timing.append((timed_seconds, repeats_for(step, timed_seconds, ctx.quick),
-                           [*self.with_seconds(args, timed_seconds), *solver_args, "--step", step]))
-        separate = [i for i, (seconds, _, _) in enumerate(timing) if seconds != sim_seconds]
-        ctx.expect(sum(repeats for _, repeats, _ in timing) + len(separate))
-        # Interleaved: every point's first timing, then every point's second...,
-        # so that a busy spell of the machine falls on many settings, not on
-        # all the repeats of one.
-        timed = [[] for _ in plan]
-        for round_ in range(max(repeats for _, repeats, _ in timing)):
-            points = [i for i, (_, repeats, _) in enumerate(timing) if repeats > round_]
-            results = ctx.runner.map([RunSpec(self.program, timing[i][2], timed=True, repeat=round_,
-                                              measures_blow_ups=True) for i in points])
-            for i, result in zip(points, results):
-                timed[i].append(result)
-            ctx.advance(len(points))
-        accuracy = [t[0] for t in timed]
-        for i, result in zip(separate, ctx.runner.map(
-                [RunSpec(self.program, [*args, *plan[i][1], "--step", plan[i][2]], measures_blow_ups=True)
-                 for i in separate])):
-            accuracy[i] = result
-        ctx.advance(len(separate))
+        repeats = timing.repeats(ctx.quick)
+        ctx.expect(len(plan) * (1 + repeats))
+        # The error from one run of the scene's length per point; its timings
+        # from runs stretched from it (timing.stretched), interleaved.
+        accuracy_args = [[*args, *solver_args, "--step", step] for _, solver_args, step in plan]
+        accuracy = ctx.runner.map([RunSpec(self.program, a, measures_blow_ups=True) for a in accuracy_args])
+        minimum = timing.min_run_cpu(ctx.quick)
+        lengths = ctx.runner.parallel([lambda a=a: timing.stretched(ctx.runner, self.program, a, minimum)
+                                       for a in accuracy_args])
+        ctx.advance(len(plan))
+        timed = timing.interleaved(ctx.runner, [(self.program, a) for a in lengths], repeats)
+        ctx.advance(len(plan) * repeats)
         measured = list(zip(accuracy, timed))
         rows = []
         for (solver, _, step), (first, results) in zip(plan, measured):
@@ -82,6 +60,7 @@ class SpeedAccuracy(Experiment):
             error = self.error_of(first) if first.rc == 0 else None
             rows.append(dict(solver=solver, step_s=step, accuracy_sim_seconds=first.m("sim_seconds"),
                              timed_sim_seconds=sim, repeats=len(results),
+                             shortest_run_cpu_seconds=min(r.cpu_seconds for r in results),
                              wall_seconds_median=median(walls), wall_seconds_min=min(w for w in walls if w is not None),
                              wall_seconds_max=max(w for w in walls if w is not None),
                              wall_per_sim_second=median([r.wall_per_sim_second() for r in results]),
@@ -99,8 +78,9 @@ class SpeedAccuracy(Experiment):
         csv = ctx.write_csv(stem, list(rows[0].keys()), rows, notes=[
             f"error: {self.error_name}; exact answer: {self.exact}",
             f"error from a run of accuracy_sim_seconds; x: wall_per_sim_second = median of the program's "
-            f"wall_seconds over `repeats` runs of timed_sim_seconds (at least {MIN_TIMED_STEPS} steps) / "
-            "timed_sim_seconds",
+            f"wall_seconds over `repeats` interleaved runs of timed_sim_seconds (stretched from the accuracy "
+            f"run to last {timing.min_run_cpu(ctx.quick):g} CPU s or more) / timed_sim_seconds; "
+            "min and max: their range",
             "cheapest_for: the error levels for which this is the cheapest setting measured"])
         ctx.register_files(plots.speed_accuracy(ctx.out_dir, stem, rows, cheapest, self.error_label,
                                                 self.plot_title, ZERO_FLOOR))
@@ -114,7 +94,9 @@ class SpeedAccuracy(Experiment):
         text = f"""Error: {self.error_name}; the exact answer is {self.exact}. {self.settings_text(ctx.quick)}
 One point per solver setting and step. The error comes from one run of the
 length above; x is the program's own `wall_seconds` per simulated second, from
-{"the same run" if ctx.quick else f"runs of at least {MIN_TIMED_STEPS} steps (longer than the accuracy run at large steps; the median of {REPEATS} interleaved runs where a run is under 100 000 steps, else 1)"}.
+the median of {repeats} interleaved runs, each stretched from the accuracy run to last
+{timing.min_run_cpu(ctx.quick):g} s of CPU or more; a setting whose fastest run is not slower than the
+cheapest's slowest ties with it.
 {slot("blown")}
 
 {md.table(["error at most", "cheapest setting", "step (s)", "its error", "wall s per simulated s"], table_rows)}

@@ -22,6 +22,7 @@ at rest that cost more than real time to build."""
 import math
 
 from .. import markdown as md
+from .. import timing
 from ..claims import Claim, q, slot
 
 from ..search import highest_passing
@@ -107,13 +108,28 @@ def run_setting(runner, setting, plates):
                                  measures_blow_ups=True))
 
 
+def measured_scatter(ctx, setting):
+    """The timing's relative scatter at the target: timing.repeats timed runs
+    of the descent's start setting, made before the descent."""
+    target = TARGET[ctx.quick]
+    specs = [stack_spec(setting["space"], setting["iterations"], STEP, target, extra_options(setting),
+                        repeat=100 + r, measures_blow_ups=True) for r in range(timing.repeats(ctx.quick))]
+    ctx.expect(len(specs))
+    results = ctx.runner.map(specs)
+    ctx.advance(len(specs))
+    return timing.scatter_of([cost_ms(r) for r in results if r.rc == 0])
+
+
 def descend(ctx, start):
-    """One pass of coordinate descent from `start`; (best setting, probe rows)."""
+    """One pass of coordinate descent from `start`; (best setting, its
+    margin, probe rows). A choice inside the timing's scatter (measured
+    first, measured_scatter) keeps the value already chosen (timing.keep)."""
     quick = ctx.quick
     target = TARGET[quick]
     best = dict(DEFAULTS, **start)
     rows = []
     best_margin = None
+    scatter = measured_scatter(ctx, best)
     for name, values in COORDINATES[quick]:
         ctx.expect(len(values))
         trials = [dict(best, **{name: v}) for v in values]
@@ -125,11 +141,12 @@ def descend(ctx, start):
 
         results = ctx.runner.parallel([lambda s=s: one(s) for s in trials])
         scored = [(margin(r, target), s, r) for s, r in zip(trials, results)]
-        # the smallest margin wins; a tie keeps the value already chosen
-        (m, limit), chosen, _ = min(scored, key=lambda x: (x[0][0], x[1] != best))
+        # the smallest margin wins; a tie (equal, or inside the timing's scatter) keeps the value already chosen
+        ((m, limit), chosen, _), tied = timing.keep(scored, best, scatter)
         for (mv, lim), s, r in scored:
             rows.append(dict(coordinate=name, value=_text(s[name]), setting=describe(s), plates=target,
                              margin=mv, binding_limit=lim, passed=mv <= 1, chosen=s is chosen,
+                             tied_with_kept=int(any(s is t for t in tied)), timing_scatter=scatter,
                              ms_per_step_last_second=step_cost(r), ms_per_step_whole_run=whole_run_cost(r, STEP),
                              max_axis_offset_m=r.m("max_axis_offset"), max_twist_degrees=r.m("max_twist_degrees"),
                              stack_height_m=r.m("stack_height"), cpu_share=r.cpu_share, exit_status=r.rc))
@@ -163,7 +180,8 @@ def _text(value):
 
 def search_columns():
     return ["coordinate", "value", "setting", "plates", "margin", "binding_limit", "passed", "chosen",
-            "ms_per_step_last_second", "ms_per_step_whole_run", "max_axis_offset_m", "max_twist_degrees",
+            "tied_with_kept", "timing_scatter", "ms_per_step_last_second", "ms_per_step_whole_run",
+            "max_axis_offset_m", "max_twist_degrees",
             "stack_height_m", "cpu_share", "exit_status"]
 
 
@@ -178,12 +196,22 @@ def why_it_wins(rows, csv_name):
                   "margins": q(csv_name, "margin", "list", coordinate=name),
                   "limits": q(csv_name, "binding_limit", "texts", coordinate=name),
                   "chosen": q(csv_name, "chosen", "list", coordinate=name),
+                  "tied": q(csv_name, "tied_with_kept", "list", coordinate=name),
+                  "scatter": q(csv_name, "timing_scatter", "list", coordinate=name),
                   "i": "chosen.index(1)", "kept": "values[i]", "m": "margins[i]", "bound": "limits[i]",
+                  "s": "scatter[0]",
                   "others": "', '.join(values[j] + ': ' + num(margins[j]) + ' (' + limits[j] + ')' "
-                            "for j in range(len(values)) if j != i)"}
-        claims[f"why.{name}"] = Claim(f"remedy-test5.why.{name}",
-                                      "- " + name + " = {kept}: margin {m:n}, bound by {bound}; the others: {others}",
-                                      values, "m == min(x for x in margins if x is not None)")
+                            "+ (', a tie' if tied[j] else '') for j in range(len(values)) if j != i)"}
+        smallest = "m == min(x for x in margins if x is not None)"
+        claims[f"why.{name}"] = [
+            Claim(f"remedy-test5.why.{name}",
+                  "- " + name + " = {kept}: margin {m:n}, bound by {bound}; the others: {others}",
+                  values, smallest + " and not any(tied)"),
+            Claim(f"remedy-test5.why.{name}.tie",
+                  "- " + name + " = {kept} (a tie: the margins marked are within the timing's scatter, {s:p}, of "
+                  "its {m:n}, bound by {bound}; the value already chosen stays); the others: {others}",
+                  values, "any(tied) and all(margins[j] >= m * (1 - s) for j in range(len(margins)) "
+                          "if margins[j] is not None)")]
         lines.append(slot(f"why.{name}"))
     return "\n".join(lines), claims
 
@@ -197,7 +225,7 @@ def descent_table(rows):
                       "**yes**" if r["chosen"] else ""] for r in rows])
 
 
-REPEATS = 3  # the descent's final setting timed again at the target, to show the timing's scatter
+REPEATS = timing.REPEATS  # the descent's final setting timed again at the target, to show the timing's scatter
 
 
 def repeated(ctx, setting):
@@ -205,7 +233,7 @@ def repeated(ctx, setting):
     anew (each a new run): [(cost ms per step, passed)]."""
     target = TARGET[ctx.quick]
     specs = [stack_spec(setting["space"], setting["iterations"], STEP, target, extra_options(setting), repeat=r,
-                        measures_blow_ups=True) for r in range(REPEATS)]
+                        measures_blow_ups=True) for r in range(timing.repeats(ctx.quick))]
     ctx.expect(len(specs))
     out = []
     for r in ctx.runner.map(specs):
