@@ -14,7 +14,7 @@
 #include <cstdlib>
 #include <functional>
 
-#include "SweptCollision.h"
+#include "shared/SweptCollision.h"
 
 namespace {
 

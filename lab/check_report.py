@@ -41,12 +41,12 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from odelab_report import readings  # noqa: E402 (standard library only)
 from odelab_report.claims import Data, _matches, read_rows, recheck  # noqa: E402
-from odelab_report import timing_check  # noqa: E402 (standard library only)
+from odelab_report import scenes, timing_check  # noqa: E402 (standard library only)
 
 HEADER_KEYS = ("ODE", "compiler", "CPU", "date", "commit")
 FIRST_COLUMNS = ["scene", "quantity, setting", "ODE there", "thesis", "cheapest ODE within 1%",
                  "best other engine, step 0.001"]
-SCENES = [f"test{n}" for n in range(11)]
+SCENES = scenes.names()  # tests/scenes/scenes.txt: a row for each
 VERDICTS = ("reproduced", "partly", "differs", "untested")
 # The first screen: its eleven rows within the first FIRST_SCREEN_LINES lines,
 # no line of it longer than LONGEST_LINE, no row's cells longer than

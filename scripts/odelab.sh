@@ -124,8 +124,8 @@ case "$command" in
   run)
     program=test0
     if [ $# -gt 0 ] && [[ "$1" != -* ]]; then program=$1; shift; fi
-    # CMake's one list of programs, read before anything is built.
-    programs=$(sed -n 's/^odelab_add_program(\([A-Za-z0-9_]*\) .*/\1/p' "$root/CMakeLists.txt" | tr '\n' ' ')
+    # The scenes' list (tests/scenes/scenes.txt), read before anything is built.
+    programs=$(sed -n 's/^\([a-z][a-z0-9_]*\)[[:space:]].*/\1/p' "$root/tests/scenes/scenes.txt" | tr '\n' ' ')
     if ! [[ " $programs" == *" $program "* ]]; then
       say "error: no program '$program'; the programs are ${programs% } (see README.md)"
       exit 2

@@ -36,8 +36,7 @@ bool runLengthReached(double seconds, double simulatedTime, double step) {
 
 }  // namespace
 
-AbstractWindow::AbstractWindow(std::string title, WorldSettings defaults)
-    : SceneSettings(defaults), title_(std::move(title)) {
+AbstractWindow::AbstractWindow(WorldSettings defaults) : SceneSettings(defaults) {
   bindSharedKeys();
   bindTimeAndViewKeys();
 }
@@ -450,7 +449,10 @@ void AbstractWindow::applySettings(const std::string& change) {
 
 void AbstractWindow::initialCamera(Camera& camera) const { camera.lookAt({0, 6, 16}, {0, 1, 0}); }
 
-std::string AbstractWindow::programName() const { return title_.substr(0, title_.find(' ')); }
+void AbstractWindow::identify(std::string programName, const std::string& title) {
+  programName_ = std::move(programName);
+  title_ = programName_ + " - " + title;
+}
 
 void AbstractWindow::mark(const std::string& label) {
   marks_.set("mark_" + label + "_steps", static_cast<double>(steps_));

@@ -28,8 +28,12 @@ namespace odelab {
 // not members, so the step loop and the scenes name their fields directly.
 class AbstractWindow : protected WorldRun, protected SceneSettings, protected SessionTools {
  public:
-  AbstractWindow(std::string title, WorldSettings defaults);
+  explicit AbstractWindow(WorldSettings defaults);
   virtual ~AbstractWindow();
+  // The scene's program name ("test4") and title ("Different Weights"),
+  // given by its registration (ODELAB_SCENE, tests/scenes/scenes.txt) as it
+  // is made, before anything runs.
+  void identify(std::string programName, const std::string& title);
 
   // ---- driven by the runner ----------------------------------------------
   virtual void addOptions(CLI::App& app);  // the scene's own options, before parsing
@@ -50,6 +54,8 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   bool stepOnce();
   // Headless: runFor(--seconds or defaultHeadlessSeconds()), then reportHeadless().
   virtual int runHeadless();
+  // `seconds` of steps with no input, rewind or plot between them (headless); false if the state blew up.
+  bool runFor(double seconds);
   // Ends the output files: "complete: t=..., N steps" or "incomplete: ...; <reason>".
   void endOutputs(const std::string& cutShortBecause);
   int stoppedBySignal();  // after SIGINT/SIGTERM: outputs marked incomplete; 128 + the signal
@@ -70,8 +76,8 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   const KeyTable& keys() const { return keys_; }
 
   // ---- display and input: keys, panel and drag are recorded for rewind -----
-  const std::string& title() const { return title_; }
-  std::string programName() const;  // "test0" from "test0 - Box & Sphere"
+  const std::string& title() const { return title_; }  // "test4 - Different Weights"
+  const std::string& programName() const { return programName_; }  // "test4"
   std::vector<std::string> hudLines() const;
   // The last lines of hudLines() that come and go: a failure, the notice,
   // ODE's messages. At least one (empty when there is none), so the HUD
@@ -140,7 +146,6 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   }
   void remove(const AbstractObject* object);
   void removeIf(const std::function<bool(const AbstractObject&)>& predicate);
-  bool runFor(double seconds);  // false if the state blew up
   int reportHeadless();         // prints the metrics, writes --metrics-json; OK or BLEW_UP
 
  private:
@@ -156,6 +161,7 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   void reportSetting(const SettingChange& change);
   void recoverFrom(const std::string& failure);
 
+  std::string programName_;
   std::string title_;
   RunOptions options_;
   Camera camera_;

@@ -61,8 +61,7 @@ class RegistrySwitching : public odelab::SceneSwitching {
   }
 
   // The panel's list shows each scene as "test2  Pendulum", its description
-  // as the tooltip. The titles are the scenes' own, read once from a scene
-  // made for the purpose (a scene's constructor builds no world).
+  // as the tooltip: the name and title of its registration.
   std::vector<odelab::SceneChoice> scenes() const override {
     if (choices_.empty()) {
       size_t longest = 0;
@@ -71,7 +70,7 @@ class RegistrySwitching : public odelab::SceneSwitching {
       for (const odelab::SceneEntry& entry : odelab::sceneRegistry()) {
         std::string name = entry.name;
         name.resize(longest + 2, ' ');
-        choices_.push_back({name + shortTitle(entry.make()->title()), entry.description});
+        choices_.push_back({name + entry.title, entry.description});
       }
     }
     return choices_;
@@ -81,12 +80,6 @@ class RegistrySwitching : public odelab::SceneSwitching {
   std::vector<std::string> outputFileNames() const override { return odelab::outputFileNamesOfEveryScene(); }
 
  private:
-  // "Pendulum" from "test2 - Pendulum".
-  static std::string shortTitle(const std::string& title) {
-    const size_t dash = title.find(" - ");
-    return dash == std::string::npos ? title : title.substr(dash + 3);
-  }
-
   size_t index_ = 0;
   mutable std::vector<odelab::SceneChoice> choices_;
 };

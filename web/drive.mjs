@@ -14,7 +14,7 @@
 //
 // Exits 0 when the run ended (whatever its status: the caller judges), 1
 // when it did not end in time or the browser failed, 2 for bad usage.
-import { mkdirSync, writeFileSync, existsSync, rmSync } from "node:fs";
+import { mkdirSync, readFileSync, writeFileSync, existsSync, rmSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { serveSite, launchChromium, watchProblems } from "./site.mjs";
 
@@ -38,12 +38,19 @@ const programArgs = [];
   }
 }
 if (!options.site || !options.scene || !options.out) usage("--site, --scene and --out are needed");
-if (!/^test[0-9]+$/.test(options.scene)) usage(`no such scene '${options.scene}'`);
 const timeoutSeconds = Number(options.timeout);
 if (!(timeoutSeconds > 0)) usage(`--timeout must be a positive number of seconds, not '${options.timeout}'`);
 const clockStep = Number(options["clock-step"]);
 if (!(clockStep >= 0)) usage(`--clock-step must be a number of milliseconds, not '${options["clock-step"]}'`);
 const site = resolve(options.site);
+// The site's list of scenes (scenes.json, from tests/scenes/scenes.txt).
+let listed = [];
+try {
+  listed = JSON.parse(readFileSync(join(site, "scenes.json"), "utf8")).map((scene) => scene.name);
+} catch (error) {
+  usage(`${site} has no readable scenes.json (build it with scripts/odelab.sh web): ${error.message}`);
+}
+if (!listed.includes(options.scene)) usage(`no such scene '${options.scene}'; the site's scenes are ${listed.join(" ")}`);
 if (!existsSync(join(site, options.scene + ".js"))) usage(`${site} holds no ${options.scene}.js (build it with scripts/odelab.sh web)`);
 const out = resolve(options.out);
 rmSync(out, { recursive: true, force: true });

@@ -1,5 +1,5 @@
-// The list of scenes, from scenes.json (written by the build from the
-// scenes' own titles).
+// The list of scenes, from scenes.json (written by the build from
+// tests/scenes/scenes.txt: each scene's name and title).
 fetch("scenes.json")
   .then((response) => response.json())
   .then((scenes) => {
@@ -8,7 +8,7 @@ fetch("scenes.json")
       const item = document.createElement("li");
       const link = document.createElement("a");
       link.href = "scene.html?scene=" + encodeURIComponent(scene.name);
-      link.textContent = scene.title;
+      link.textContent = scene.name + " - " + scene.title;
       item.appendChild(link);
       list.appendChild(item);
     }

@@ -139,12 +139,18 @@ function start(factory) {
   });
 }
 
-if (!/^test[0-9]+$/.test(sceneName)) {
-  statusLine.textContent = "no such scene: '" + sceneName + "' (see the list of scenes)";
-} else {
-  const script = document.createElement("script");
-  script.src = sceneName + ".js";
-  script.onload = () => start(window["create_" + sceneName]);
-  script.onerror = () => (statusLine.textContent = "no scene '" + sceneName + "' in this site (" + script.src + " did not load)");
-  document.body.appendChild(script);
-}
+// A scene of the site's list (scenes.json, from tests/scenes/scenes.txt), or a message.
+fetch("scenes.json")
+  .then((response) => response.json())
+  .then((scenes) => {
+    if (!scenes.some((scene) => scene.name === sceneName)) {
+      statusLine.textContent = "no such scene: '" + sceneName + "' (see the list of scenes)";
+      return;
+    }
+    const script = document.createElement("script");
+    script.src = sceneName + ".js";
+    script.onload = () => start(window["create_" + sceneName]);
+    script.onerror = () => (statusLine.textContent = "no scene '" + sceneName + "' in this site (" + script.src + " did not load)");
+    document.body.appendChild(script);
+  })
+  .catch(() => (statusLine.textContent = "this site's list of scenes (scenes.json) did not load"));

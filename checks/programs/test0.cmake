@@ -50,3 +50,8 @@ odelab_window_refusals(test0)
 
 # --mu and --max-contacts (the contact choices every scene with contacts takes).
 odelab_contact_choice_refusals(test0)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): a count, compared exactly.
+odelab_web_check(test0 bodies_resting_on_platform 0 SECONDS 10
+  ARGS --spawn-interval 0.5 --spawn-count 6 --spawn-shapes box)

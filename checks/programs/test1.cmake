@@ -40,3 +40,7 @@ odelab_check(test1_bounce_velocity_2_measures_fewer_balls test1
   ARGS --headless --erp 0 --cfm 0 --seconds 15 --bounce-velocity 2)
 odelab_refusals(test1 refuses_bad_bounce_velocity headless 2
   --bounce-velocity=-1 --bounce-velocity=nan --bounce-velocity=inf --bounce-velocity=fast --bounce-velocity=<empty>)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): a count, compared exactly.
+odelab_web_check(test1 balls_bounced 0 SECONDS 15 ARGS --erp 0 --cfm 0)

@@ -81,3 +81,7 @@ odelab_contact_choice_refusals(test10)
 # --surface-layer (issue 12; the thesis: 0): refused when not a finite number in [0, 1] m.
 odelab_refusals(test10 refuses_bad_surface_layer headless 2
   --surface-layer=-0.1 --surface-layer=nan --surface-layer=2 --surface-layer=thick)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): a count, compared exactly.
+odelab_web_check(test10 stopped 0 ARGS --velocity 200 --launches 5)

@@ -64,3 +64,8 @@ odelab_check(test2_light_rod_without_rotation_dips_like_the_thesis test2
 odelab_refusals(test2 refuses_bad_shape headless 2
   --rod-length=0 --rod-length=-1 --rod-length=nan --rod-length=7 --rod-thickness=0 --rod-thickness=inf
   --rod-mass=0 --rod-mass=abc --bob-radius=0 --bob-radius=-0.3 "--bob-radius=0.9 --rod-length=6")
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): 1e-6 against the scene's 1% bound; the window run's output file comes
+# through the page's download link whole.
+odelab_web_check(test2 energy_rel_variation 1e-6 SECONDS 10 DOWNLOAD Test2_output.txt ARGS --erp 0.4 --cfm 0)

@@ -43,3 +43,7 @@ odelab_determinism(test3 --seconds 4)
 
 # --mu and --max-contacts (the contact choices every scene with contacts takes).
 odelab_contact_choice_refusals(test3)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): a count, compared exactly.
+odelab_web_check(test3 fallen_fraction 0 SECONDS 20)

@@ -52,3 +52,7 @@ odelab_determinism(test4 --seconds 2)
 
 # --mu and --max-contacts (the contact choices every scene with contacts takes).
 odelab_contact_choice_refusals(test4)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): 1e-4 degree against the scene's 2 degrees.
+odelab_web_check(test4 max_tilt_degrees 1e-4 SECONDS 5 ARGS --big-mass 5000)

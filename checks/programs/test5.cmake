@@ -67,3 +67,7 @@ odelab_determinism(test5 --seconds 3 --spawn-interval 0.1)
 
 # --mu and --max-contacts (the contact choices every scene with contacts takes).
 odelab_contact_choice_refusals(test5)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): 1 micrometre against the scene's 5 cm window on the stack's height.
+odelab_web_check(test5 stack_height 1e-6 SECONDS 5 ARGS --plates 10 --spawn-interval 0.3 --cfm 0)

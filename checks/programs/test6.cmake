@@ -48,3 +48,7 @@ add_test(NAME test6_blows_up_from_the_command_line_with_status_3
                  -- $<TARGET_FILE:test6> --headless --erp 1 --cfm 0 --sor 1.95
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/runs/test6_blows_up_from_the_command_line_with_status_3)
 set_tests_properties(test6_blows_up_from_the_command_line_with_status_3 PROPERTIES LABELS hardening TIMEOUT 60)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): the time the stick fell: one step (0.001 s) either way.
+odelab_web_check(test6 seconds_upright 0.001 SECONDS 10)

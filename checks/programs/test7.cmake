@@ -34,3 +34,7 @@ odelab_determinism(test7 --throws 2 --throw-interval 1)
 
 # --mu and --max-contacts (the contact choices every scene with contacts takes).
 odelab_contact_choice_refusals(test7)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): 1 micrometre against the scene's 2 cm.
+odelab_web_check(test7 max_joint_error 1e-6 ARGS --max-angular-speed 10 --throws 1 --throw-interval 5)

@@ -55,3 +55,7 @@ odelab_interrupted_output(test8 kill Test8_output.txt time_s,relative_elongation
 odelab_interrupted_output(test8 file-limit Test8_output.txt time_s,relative_elongation,deflection_rad)
 # A window that cannot start leaves no Test8_output.txt.
 odelab_window_refusals(test8)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): 1e-9 against the scene's 1e-4.
+odelab_web_check(test8 max_relative_elongation 1e-9 SECONDS 10 ARGS --erp 0.4 --cfm 0)

@@ -32,3 +32,7 @@ odelab_contact_choice_refusals(test9)
 # --bounce-velocity (issue 12, proposed 0.01 m/s): refused when not a finite number >= 0.
 odelab_refusals(test9 refuses_bad_bounce_velocity headless 2
   --bounce-velocity=-1 --bounce-velocity=nan --bounce-velocity=inf --bounce-velocity=fast)
+
+# In headless Chromium, against this build's headless run (checks/web.cmake,
+# label web): 1e-10 against the scene's 1e-4.
+odelab_web_check(test9 apex_error_20 1e-10 ARGS --erp 0.2 --cfm 0)

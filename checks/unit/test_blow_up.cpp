@@ -16,7 +16,7 @@ namespace {
 // One free ball, launched at a chosen velocity in a world without gravity.
 class OneBall : public AbstractWindow {
  public:
-  OneBall(double speed, double spin) : AbstractWindow("blowup - one ball", settingsWithoutGravity()), speed_(speed), spin_(spin) {}
+  OneBall(double speed, double spin) : AbstractWindow(settingsWithoutGravity()), speed_(speed), spin_(spin) { identify("unit", "one ball"); }
 
  protected:
   void buildScene() override {

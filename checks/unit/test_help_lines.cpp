@@ -10,7 +10,8 @@ using namespace odelab;
 
 class KeyScene : public AbstractWindow {
  public:
-  KeyScene() : AbstractWindow("unit - keys", WorldSettings{}) {
+  KeyScene() : AbstractWindow(WorldSettings{}) {
+    identify("unit", "keys");
     bindKey(SDLK_b, "B", "spawn something", [](int) {});
     bindKey(SDLK_q, "Q", "next collision space", [](int) {});
     bindViewKey(SDLK_k, "K", "a view-only key", [](int) {});

@@ -13,7 +13,7 @@ namespace {
 // A 1 m cube resting on the ground plane.
 class CubeOnGround : public AbstractWindow {
  public:
-  CubeOnGround() : AbstractWindow("space kind - cube on ground", WorldSettings{}) {}
+  CubeOnGround() : AbstractWindow(WorldSettings{}) { identify("unit", "cube on ground"); }
 
  protected:
   void buildScene() override {

@@ -13,7 +13,7 @@ using namespace odelab;
 // A ground and nothing else: no body at all.
 class EmptyScene : public AbstractWindow {
  public:
-  explicit EmptyScene(WorldSettings settings = {}) : AbstractWindow("unit - empty", settings) {}
+  explicit EmptyScene(WorldSettings settings = {}) : AbstractWindow(settings) { identify("unit", "empty"); }
 
  protected:
   void buildScene() override { add<Plane>(space()); }

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "SweptCollision.h"
+#include "shared/SweptCollision.h"
 
 namespace {
 

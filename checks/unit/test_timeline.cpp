@@ -13,7 +13,8 @@ using namespace odelab;
 
 class DropScene : public AbstractWindow {
  public:
-  DropScene() : AbstractWindow("unit - drop", WorldSettings{}) {
+  DropScene() : AbstractWindow(WorldSettings{}) {
+    identify("unit", "drop");
     bindKey(SDLK_b, "B", "spawn a box at a random place", [this](int) {
       const double x = std::uniform_real_distribution<double>(-1, 1)(random());
       add<Box>(world(), space(), 0.5, 0.5, 0.5, 1.0).setPosition(x, 3, 0);

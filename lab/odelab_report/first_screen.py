@@ -1,4 +1,4 @@
-"""The first screen of RESULTS.md: a row per scene, test0 to test10, that
+"""The first screen of RESULTS.md: a row per scene of the scenes' list, that
 answers which ODE setting, at what cost, and whether another engine does
 better: the quantity and the setting the row is about (its definition),
 ODE's figure there, the thesis's verdict in one word, the cheapest ODE
@@ -14,7 +14,7 @@ first screen links to (decides_table here, the rest in results_md.py and the
 experiments)."""
 
 from . import markdown as md
-from . import readings
+from . import readings, scenes
 from .claims import Claim, _matches, q
 from .peer_compare import FRICTION_ACTS
 
@@ -167,9 +167,22 @@ def definition(scene, text, quantity, **setting):
 
 
 def rows():
-    """(scene, definition, figure, thesis, decides, cheapest, peer) for test0
-    to test10: each a list of alternative claims (the first that holds
-    shown); cheapest and peer None where no such experiment exists."""
+    """(scene, definition, figure, thesis, decides, cheapest, peer) for each
+    scene of the list (tests/scenes/scenes.txt), in its order: each a list
+    of alternative claims (the first that holds shown); None where no
+    experiment measures it (a scene the lab has no experiment for has a row
+    of them)."""
+    measured = {row[0]: row for row in measured_rows()}
+    return [measured.get(scene) or unmeasured_row(scene) for scene in scenes.names()]
+
+
+def unmeasured_row(scene):
+    return (scene, definition(scene, "no quantity: the lab has no experiment for this scene", "none"),
+            None, None, None, None, None)
+
+
+def measured_rows():
+    """The rows of the scenes the lab's experiments measure."""
     test3_runs = {"v": value("test3", "real_time_factor"),
                   "lo": q("thesis-values.csv", "value_min", key="test3", name="real_time_factor"),
                   "hi": q("thesis-values.csv", "value_max", key="test3", name="real_time_factor"),

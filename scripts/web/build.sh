@@ -37,18 +37,4 @@ nice cmake --build "$build" -j "${ODELAB_JOBS:-2}" ||
 
 site=$build/site
 cp "$root"/web/*.html "$root"/web/*.js "$root"/web/*.css "$root"/web/*.svg "$site/"
-# The scenes' titles, as each program names itself.
-{
-  printf '['
-  first=1
-  for source in "$root"/tests/scenes/test*.cpp; do
-    name=$(basename "$source" | grep -o '^test[0-9]*')
-    title=$(grep -o '"test[0-9]* - [^"]*"' "$source" | head -n 1)
-    [ -n "$title" ] || title="\"$name\""
-    [ $first -eq 1 ] || printf ','
-    first=0
-    printf '\n  {"name": "%s", "title": %s}' "$name" "$title"
-  done
-  printf '\n]\n'
-} | python3 -c 'import json, sys; scenes = json.load(sys.stdin); scenes.sort(key=lambda s: int(s["name"][4:])); print(json.dumps(scenes, indent=1))' >"$site/scenes.json"
 say "site ready: $site"

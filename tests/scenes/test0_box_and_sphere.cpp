@@ -35,7 +35,7 @@ constexpr double FIRST_SPHERE_AT = 1.0;    // s
 
 class BoxAndSphere : public AbstractWindow {
  public:
-  BoxAndSphere() : AbstractWindow("test0 - Box & Sphere", WorldSettings{}) {
+  BoxAndSphere() : AbstractWindow(WorldSettings{}) {
     bindKey(SDLK_b, "B", "spawn a box of random size at [0, 10, 0]", [this](int) { spawn(true); });
     bindKey(SDLK_n, "N", "spawn a sphere of random size at [0, 10, 0]", [this](int) { spawn(false); });
     // Every object appears at one point: faster than 0.01 s they pile into
@@ -240,5 +240,5 @@ class BoxAndSphere : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test0, BoxAndSphere,
+ODELAB_SCENE(BoxAndSphere,
              "Boxes and spheres of random size fall onto a platform; auto-disable on.")

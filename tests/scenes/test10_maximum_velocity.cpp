@@ -20,7 +20,7 @@
 //
 // The remedy (--ccd, key T; off by default, the thesis's behaviour): before
 // each step every fast body is swept along its motion in the step, turning
-// included, against the static geometry (utils/SweptCollision.h): moved to
+// included, against the static geometry (tests/shared/SweptCollision.h): moved to
 // its first touching pose, with speculative contacts for the corners on
 // their way in, so that the wall stops it through contacts, never by a
 // velocity edit. Also measured: how often the sweep intervened and the
@@ -36,7 +36,7 @@
 #include "CommandLine.h"
 #include "FormatValue.h"
 #include "Plane.h"
-#include "SweptCollision.h"
+#include "shared/SweptCollision.h"
 #include "SceneRegistry.h"
 #include "shared/LaunchOutcome.h"
 #include "shared/LaunchTally.h"
@@ -60,7 +60,7 @@ constexpr double KEEP_RADIUS = 100.0;
 
 class MaximumVelocity : public AbstractWindow {
  public:
-  MaximumVelocity() : AbstractWindow("test10 - Maximum velocity", settingsForThisScene()) {
+  MaximumVelocity() : AbstractWindow(settingsForThisScene()) {
     bindKey(SDLK_b, "B", "launch a cube from [-4, 3, 0] toward the wall at the launch velocity",
             [this](int) { launch(velocity_); });
     declare(Knob::real("velocity", "launch velocity", "m/s", velocity_, 0.01, 1e7)
@@ -311,5 +311,5 @@ class MaximumVelocity : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test10, MaximumVelocity,
+ODELAB_SCENE(MaximumVelocity,
              "Cubes launched at a thin wall: the highest velocity at which the wall still stops every one.")

@@ -60,7 +60,7 @@ struct BallRecord {
 
 class JumpingBalls : public AbstractWindow {
  public:
-  JumpingBalls() : AbstractWindow("test1 - Jumping Balls", settingsForThisScene()) {
+  JumpingBalls() : AbstractWindow(settingsForThisScene()) {
     declare(bounceVelocityKnob(bounceVelocity_, "the thesis"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
@@ -192,6 +192,6 @@ class JumpingBalls : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test1, JumpingBalls,
+ODELAB_SCENE(JumpingBalls,
              "Fifty balls with restitution 0 to 1 bounce on the ground; each rebound "
              "apex ratio is compared with e^2.")

@@ -81,7 +81,7 @@ class SwingTimer {
 
 class Pendulum : public PendulumScene {
  public:
-  Pendulum() : PendulumScene("test2 - Pendulum", settingsForThisScene()) {
+  Pendulum() : PendulumScene(settingsForThisScene()) {
     // R as everywhere, and it says what happens to the output file.
     rebindKey(SDLK_r, "R", "reset the pendulum to horizontal and rewrite Test2_output.txt", [this](int) {
       reset();
@@ -256,6 +256,6 @@ class Pendulum : public PendulumScene {
 
 }  // namespace
 
-ODELAB_SCENE(test2, Pendulum,
+ODELAB_SCENE(Pendulum,
              "A rod and a sphere merged into one body swing on a hinge; energies go to "
              "Test2_output.txt.")

@@ -70,7 +70,7 @@ WorldSettings settingsForThisScene() {
 
 class Domino : public AbstractWindow {
  public:
-  Domino() : AbstractWindow("test3 - Domino", settingsForThisScene()) {
+  Domino() : AbstractWindow(settingsForThisScene()) {
     declare(Knob::integer("dominoes", "dominoes", dominoCount_, 2, 1000)
                 .withOption("--dominoes", "number of dominoes along the spiral")
                 .rebuildsScene());  // the spiral is laid when the scene is built
@@ -213,5 +213,5 @@ class Domino : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test3, Domino,
+ODELAB_SCENE(Domino,
              "A spiral of dominoes knocked over in a chain; auto-disable on.")

@@ -59,7 +59,7 @@ WorldSettings settingsForThisScene() {
 
 class DifferentWeights : public AbstractWindow {
  public:
-  DifferentWeights() : AbstractWindow("test4 - Different Weights", settingsForThisScene()) {
+  DifferentWeights() : AbstractWindow(settingsForThisScene()) {
     // A new mass is a new experiment: the scene is built again from the balanced pose.
     declare(Knob::real("big_mass", "big cube mass", "kg", bigMass_, 1.0, 1e9)
                 .withOption("--big-mass", "mass of the big cube in kg")
@@ -171,5 +171,5 @@ class DifferentWeights : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test4, DifferentWeights,
+ODELAB_SCENE(DifferentWeights,
              "A 5000 kg cube balanced on a 5 kg cube on a static platform; how long does it hold?")

@@ -52,7 +52,7 @@ WorldSettings settingsForThisScene() {
 
 class ManyCollisions : public AbstractWindow {
  public:
-  ManyCollisions() : AbstractWindow("test5 - Lots of same collisions", settingsForThisScene()) {
+  ManyCollisions() : AbstractWindow(settingsForThisScene()) {
     bindKey(SDLK_n, "N", "drop a plate [5, 0.05, 5] at height 6 (or 1 m above the stack once it nears 6 m)",
             [this](int) { spawnPlate(); });
     bindKey(SDLK_q, "Q", "next collision space: simple -> hash -> sap -> quadtree (Shift: back)",
@@ -297,5 +297,5 @@ class ManyCollisions : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test5, ManyCollisions,
+ODELAB_SCENE(ManyCollisions,
              "Plates [5, 0.05, 5] dropped onto a stack; how fast and how straight does it grow?")

@@ -44,7 +44,7 @@ double depthBelowGround(dBodyID body, double side) {
 
 class AxisSystem : public AbstractWindow {
  public:
-  AxisSystem() : AbstractWindow("test6 - Axis system", WorldSettings{}) {
+  AxisSystem() : AbstractWindow(WorldSettings{}) {
     // Both act when the scene is built (the tilt) or its bodies made (the
     // limit): a change builds the scene again.
     declare(Knob::real("tilt_degrees", "start tilt", "deg", startTiltDegrees_, 0.0, MAX_START_TILT_DEGREES)
@@ -176,5 +176,5 @@ class AxisSystem : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test6, AxisSystem,
+ODELAB_SCENE(AxisSystem,
              "A 5000 kg cube on a ball joint above a 1 kg cube: how long does the axis stay upright?")

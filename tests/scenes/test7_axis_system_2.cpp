@@ -70,7 +70,7 @@ double ballJointError(dJointID joint) {
 
 class AxisSystem2 : public AbstractWindow {
  public:
-  AxisSystem2() : AbstractWindow("test7 - Axis system 2", WorldSettings{}) {
+  AxisSystem2() : AbstractWindow(WorldSettings{}) {
     rebindKey(SDLK_r, "R", "throw the test cube again at the pivot (Shift+R: reset the whole scene to its initial state)",
             [this](int direction) {
               if (direction > 0) {
@@ -274,5 +274,5 @@ class AxisSystem2 : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test7, AxisSystem2,
+ODELAB_SCENE(AxisSystem2,
              "Two cubes hang on ball joints; a 100 kg cube is thrown into the upper one at 30 m/s.")

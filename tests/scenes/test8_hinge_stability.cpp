@@ -46,7 +46,7 @@ WorldSettings settingsForThisScene() {
 
 class HingeStability : public PendulumScene {
  public:
-  HingeStability() : PendulumScene("test8 - Hinge stability", settingsForThisScene()) {
+  HingeStability() : PendulumScene(settingsForThisScene()) {
     // R as everywhere, and it says what happens to the output file.
     rebindKey(SDLK_r, "R", "reset the pendulum to horizontal and truncate Test8_output.txt", [this](int) {
       reset();
@@ -196,6 +196,6 @@ class HingeStability : public PendulumScene {
 
 }  // namespace
 
-ODELAB_SCENE(test8, HingeStability,
+ODELAB_SCENE(HingeStability,
              "test2's pendulum with a 5000 kg bob; its relative elongation goes to "
              "Test8_output.txt.")

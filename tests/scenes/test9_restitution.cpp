@@ -43,7 +43,7 @@ WorldSettings settingsForThisScene() {
 
 class RestitutionAccuracy : public AbstractWindow {
  public:
-  RestitutionAccuracy() : AbstractWindow("test9 - Restitution accuracy", settingsForThisScene()) {
+  RestitutionAccuracy() : AbstractWindow(settingsForThisScene()) {
     declare(bounceVelocityKnob(bounceVelocity_, "proposed"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
@@ -169,6 +169,6 @@ class RestitutionAccuracy : public AbstractWindow {
 
 }  // namespace
 
-ODELAB_SCENE(test9, RestitutionAccuracy,
+ODELAB_SCENE(RestitutionAccuracy,
              "A ball with bounce 1.0 bounces under 4 g; every apex's deviation "
              "from the start is printed.")

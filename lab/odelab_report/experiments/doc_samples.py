@@ -9,6 +9,7 @@ import shlex
 from pathlib import Path
 
 from .. import markdown as md
+from .. import scenes
 from ..runner import RunSpec
 from .base import Experiment, Outcome
 from .thesis_choices import read_csv
@@ -30,7 +31,7 @@ class DocSamples(Experiment):
     name = "doc-samples"
     title = "The sample runs the docs quote"
     section = 6
-    programs = tuple(f"test{n}" for n in range(11))
+    programs = tuple(scenes.names())
     cost = (30.0, 30.0)
 
     def run(self, ctx):
