@@ -6,8 +6,8 @@
 #   - CTest has a test11 counterpart of every check test9 has (its program's
 #     claims, the browser check where test9 has one, the per-program checks
 #     of every other file: knobs, fuzz, hardening, copy line, launcher ...);
-#   - the launcher lists it, and its program runs as test11 (its run log is
-#     test11_run_log.txt, its --help names it);
+#   - the launcher lists it, and its program runs as test11 (its --help and
+#     its copied command line name it);
 #   - scripts/odelab.sh run, Makefile.win, the web build's list and the lab
 #     (its scenes, its first screen's rows) have it.
 # Usage: twelfth_scene.sh SOURCE_ROOT WORK_DIR   (builds two targets in WORK_DIR)
@@ -65,9 +65,9 @@ cmake --build "$work/build" --target odelab test11 -j "${ODELAB_JOBS:-2}" >"$wor
   fail "test11 --help does not name it 'test11 - Restitution copy'"
 out=$work/run
 mkdir -p "$out"
-"$work/build/tests/test11" --headless --seconds 0.5 --out-dir "$out" >/dev/null ||
+"$work/build/tests/test11" --headless --seconds 0.5 --out-dir "$out" --print-command-line >"$out/stdout.txt" ||
   fail "test11 --headless --seconds 0.5 failed"
-[ -f "$out/test11_run_log.txt" ] || fail "test11 wrote no test11_run_log.txt (its files take another name)"
+grep -q '^command line: test11 ' "$out/stdout.txt" || fail "test11's copied command line does not start with test11"
 echo "twelfth_scene: odelab --list has test11; test11 runs as itself"
 
 # The others that list scenes.
@@ -76,6 +76,7 @@ bash "$tree/scripts/odelab.sh" run no-such-scene 2>&1 | grep -q ' test10 test11 
 make -C "$tree" -n -f Makefile.win 2>/dev/null | grep -q 'build-win/test11\.exe' ||
   fail "Makefile.win builds no test11.exe"
 cat >"$work/scene_list.cmake" <<EOF
+cmake_minimum_required(VERSION 3.19)
 include("$tree/cmake/Scenes.cmake")
 odelab_read_scenes("$tree")
 odelab_write_scene_list("$work/scenes.json")
