@@ -11,7 +11,7 @@ if(TARGET bullet_lab AND TARGET mujoco_lab)
   add_test(NAME lab_report_quick
            COMMAND ${CMAKE_SOURCE_DIR}/lab/odelab-report --quick --out ${ODELAB_LAB_QUICK_DIR}
                    --build-dir $<TARGET_FILE_DIR:test2>)
-  # (odelab-report picks its own Python, Debian's, for python3-matplotlib;
+  # (odelab-report picks its own Python, Debian's, for python3-matplotlib and python3-tqdm;
   # check_report.py needs only the standard library: the Python CMake found.)
   set_tests_properties(lab_report_quick PROPERTIES
                        FIXTURES_SETUP lab_report PROCESSORS 2 TIMEOUT 600 LABELS lab)

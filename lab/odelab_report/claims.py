@@ -16,6 +16,7 @@ import csv
 import json
 import math
 import re
+import statistics
 import string
 from pathlib import Path
 
@@ -24,14 +25,6 @@ from . import markdown as md
 _SAFE = {"abs": abs, "min": min, "max": max, "all": all, "any": any, "len": len, "sorted": sorted,
          "sum": sum, "round": round, "zip": zip, "range": range, "enumerate": enumerate, "math": math, "str": str,
          "float": float}
-
-
-def median(values):
-    values = sorted(values)
-    n = len(values)
-    if not n:
-        raise ValueError("median of nothing")
-    return values[n // 2] if n % 2 else (values[n // 2 - 1] + values[n // 2]) / 2
 
 
 def cheapest(names, errors, cost, lo, hi, level, default=None):
@@ -93,10 +86,10 @@ def runs_cost(runs, wanted, sim_seconds):
     costs = [cost for cost, _ in kept.values()]
     if not costs:
         raise ValueError(f"no run with {wanted} of {sim_seconds} s")
-    return [median(costs), min(costs), max(costs), len(costs)]
+    return [statistics.median(costs), min(costs), max(costs), len(costs)]
 
 
-_SAFE.update(median=median, cheapest=cheapest, cheapest_set=cheapest_set, best_of=best_of, num=md.num,
+_SAFE.update(median=statistics.median, cheapest=cheapest, cheapest_set=cheapest_set, best_of=best_of, num=md.num,
              pct=md.pct, speed_options=speed_options, runs_cost=runs_cost, dict=dict)
 
 
@@ -156,7 +149,7 @@ class Data:
         values = [_float(c, spec) for c in cells]
         if not values:
             raise LookupError(f"{spec['file']}: no row matches {spec.get('where', {})} for {spec['column']}")
-        return {"median": median(values), "min": min(values), "max": max(values)}[agg]
+        return {"median": statistics.median(values), "min": min(values), "max": max(values)}[agg]
 
     def available(self, specs):
         """Whether every lookup among `specs` finds its data."""

@@ -35,7 +35,7 @@ def parse_args(argv):
         epilog=f"Experiments: {names}. Groups: {', '.join(GROUPS)}, all. "
                "How to read the report: doc/lab.md; clusters: doc/cluster.md.")
     parser.add_argument("--quick", action="store_true",
-                        help="fewer points and shorter runs (about 2 minutes on 2 cores; what CTest runs)")
+                        help="fewer points and shorter runs (about 5 minutes on 2 cores; what CTest runs)")
     parser.add_argument("--jobs", type=int, default=None, metavar="N",
                         help="programs run at once (default: what the executor offers: all cores here, "
                              "the workers' threads with dask, the allocation's CPUs with srun)")
@@ -100,7 +100,7 @@ def check_build(build_dir, experiments):
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
-    from .progress import TolerantStream
+    from .tolerant_stream import TolerantStream
     sys.stderr = TolerantStream(sys.stderr)  # a closed standard error loses the messages, not the report
     stop = interrupt.install()  # Ctrl-C, SIGTERM, SIGHUP: see interrupt.py
     try:
@@ -131,16 +131,16 @@ def _main(argv, stop):
     # only set the flag until they are done.
     with interrupt.deferred():
         args = parse_args(argv)
-        try:
-            import matplotlib
-            del matplotlib
-            missing_matplotlib = False
-        except ImportError:
-            missing_matplotlib = True
+        missing = []
+        for module, package in (("matplotlib", "python3-matplotlib"), ("tqdm", "python3-tqdm")):
+            try:
+                __import__(module)
+            except ImportError:
+                missing.append((module, package))
     interrupt.check()
-    if missing_matplotlib:
-        sys.stderr.write("odelab-report: error: matplotlib is missing; install Debian's python3-matplotlib "
-                         "(scripts/odelab.sh installs it)\n")
+    if missing:
+        sys.stderr.write(f"odelab-report: error: {', '.join(m for m, _ in missing)} missing; install Debian's "
+                         f"{' '.join(p for _, p in missing)} (scripts/odelab.sh installs them)\n")
         return 3
     build_dir = args.build_dir.resolve()
     programs = check_build(build_dir, args.experiments)

@@ -15,6 +15,7 @@ import json
 import math
 import re
 import shlex
+import statistics
 import subprocess
 import tempfile
 import threading
@@ -392,11 +393,9 @@ def check_run_folder(folder):
 
 
 def median(values):
-    values = sorted(v for v in values if v is not None)
-    if not values:
-        return None
-    middle = len(values) // 2
-    return values[middle] if len(values) % 2 else 0.5 * (values[middle - 1] + values[middle])
+    """The median of the figures a run produced (None: the run had none), or None if none had one."""
+    known = [v for v in values if v is not None]
+    return statistics.median(known) if known else None
 
 
 def _is_number(value):
