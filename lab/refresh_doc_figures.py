@@ -1,28 +1,31 @@
 #!/usr/bin/python3
 """After a report is regenerated, brings the docs' quoted figures to the new
-measurements, and cites the row each comes from.
+measurements, citing the row each comes from.
 
 A cited figure ([figure](path.csv#column=value&...), lab/check_docs.py)
 whose row now holds another value in the column it was read from is
 rewritten with that value, at the precision it was written.
 
-An uncited figure (lab/check_docs.py's figures, less the literals of the
-C++ sources: settings, not measurements) is looked up in the page's own
-CSVs as they were at REV, the commit whose report the docs quote: those
-it names and, on doc/tests/testN.md, its scene's CSVs and the rows of any
-CSV that name the scene. A figure with a unit is looked up only in a
-column, or a row, whose name fits it (seconds in a time, kilograms in a
-mass). A figure held there by exactly one cell is found again in today's
-CSV (the row by the columns that name it: those whose values are found
-again, the swept settings and the names) and written as a citation of
-that row with today's value. A short figure (one or two significant
-digits) that today's CSVs still hold is left as it is: which cell it
-came from cannot be told.
+An uncited figure that today's CSVs no longer hold (lab/check_docs.py's
+figures, less the literals of the C++ sources: settings, not
+measurements) is looked up in the page's own CSVs as they were at REV, the
+commit whose report the docs quote: those it names and, on
+doc/tests/testN.md, its scene's CSVs and the rows of any CSV that name the
+scene. A figure with a unit is looked up only in a column, or a row, whose
+name fits it (seconds in a time, kilograms in a mass), and not where the
+column holds other values within ten roundings of it (a time series: a
+match there may be chance). A figure held there by exactly one cell is
+found again in today's CSV (the row by the columns that name it: those
+whose values are found again, the swept settings and the names) and
+written as a citation of that row with today's value. With --cite, the
+figures today's CSVs still hold are cited the same way (not the short
+ones, of one or two significant digits: their cell cannot be told); read
+each before committing it.
 
 A figure that cannot be placed is listed for a person; nothing is written
 unless --write is given (without it the changes are printed).
 
-Usage: refresh_doc_figures.py --from REV [--write] [--only PAGE ...] [--root DIR]
+Usage: refresh_doc_figures.py --from REV [--write] [--cite] [--only PAGE ...] [--root DIR]
 (exit 0: every failing figure placed; 1: some left for a person; 2: bad usage)"""
 
 import argparse
@@ -54,26 +57,29 @@ def old_tables(root, rev, paths):
 
 
 def identity_columns(old, new):
-    """The columns that name a row rather than measure it: those whose
-    values at REV are (nearly all) found again today (the swept settings,
-    the names), where a measured column's values change."""
-    if not old or not new or old[0] != new[0]:
+    """The columns (by name) that name a row rather than measure it: those
+    in both tables whose values at REV are (nearly all) found again today
+    (the swept settings, the names), where a measured column's values change."""
+    if not old or not new:
         return []
     identity = []
-    for c in range(len(old[0])):
+    for c, name in enumerate(old[0]):
+        if name not in new[0]:
+            continue
+        n = new[0].index(name)
         before = {r[c] for r in old[1:] if len(r) > c}
-        after = {r[c] for r in new[1:] if len(r) > c}
+        after = {r[n] for r in new[1:] if len(r) > n}
         if before and len(before & after) >= 0.8 * len(before):
-            identity.append(c)
+            identity.append(name)
     return identity
 
 
-def row_key(header, rows, row, columns):
-    """The shortest run of identity columns, in the CSV's order, that
-    selects `row` alone among `rows`: [(column name, value)], or None."""
+def row_key(header, rows, row, names):
+    """The shortest run of identity columns (`names`, in the CSV's order)
+    that selects `row` alone among `rows`: [(column name, value)], or None."""
     chosen = []
-    for c in columns:
-        chosen.append(c)
+    for name in names:
+        chosen.append(header.index(name))
         matching = [r for r in rows[1:] if all(len(r) > k and r[k] == row[k] for k in chosen)]
         if len(matching) == 1:
             return [(header[k], row[k]) for k in chosen]
@@ -150,12 +156,31 @@ def fits_unit(table, i, c, unit):
     return any(word in name for name in names for word in words)
 
 
+def crowded(table, i, c, value, written):
+    """Whether the figure's column holds other values within ten times the
+    figure's rounding of its cell (a time series, a sweep's fine steps):
+    there a match to the digits written may be chance, not its source."""
+    cell = abs(float(table[i][c]))
+    reach = 10 * check_docs.half_unit(written.rstrip("%").strip()) * (cell / abs(value) if value else 1.0)
+    near = 0
+    for row in table[1:]:
+        try:
+            near += len(row) > c and abs(abs(float(row[c])) - cell) <= reach
+        except ValueError:
+            continue
+    return near > 1
+
+
 def locate(value, written, unit, rows, old):
     """The one (path, row index, column) among `rows` ({path: row indexes})
-    holding the figure at REV in a column fit for its unit, or None."""
+    holding the figure at REV in a column fit for its unit and not crowded
+    about it, or None."""
     found = [(path, i, c) for path, indexes in rows.items() for i, c in cells_holding(old[path], value, written, unit)
              if i in indexes and fits_unit(old[path], i, c, unit)]
-    return found[0] if len(found) == 1 else None
+    if len(found) != 1:
+        return None
+    path, i, c = found[0]
+    return None if crowded(old[path], i, c, value, written) else found[0]
 
 
 def link(text, path, doc, key):
@@ -197,7 +222,7 @@ def refresh_citations(doc, text, lines, tables, old, rel):
     return changes, left
 
 
-def refresh_page(root, doc, tables, old, held_now, code, rel):
+def refresh_page(root, doc, tables, old, held_now, code, rel, cite=False):
     """(new text, changes, left): the page with its cited figures brought
     to today's rows, its uncited figures cited and brought to today's
     values where their cell is known; `left` lists what a person must
@@ -210,8 +235,8 @@ def refresh_page(root, doc, tables, old, held_now, code, rel):
         if check_docs.is_held(code, value, written, unit):
             continue  # a setting the code states
         still_held = check_docs.is_held(held_now, value, written, unit)
-        if still_held and check_docs.significant_digits(written) <= check_docs.SHORT:
-            continue  # a short figure still held: which cell it came from cannot be told
+        if still_held and (not cite or check_docs.significant_digits(written) <= check_docs.SHORT):
+            continue  # still held: left as it is (a short one's cell cannot be told)
         place = locate(value, written, unit, own, old)
         if place is None:
             if not still_held:
@@ -220,14 +245,18 @@ def refresh_page(root, doc, tables, old, held_now, code, rel):
             continue
         path, i, c = place
         header, old_row, new_rows = old[path][0], old[path][i], tables[path]
-        key = row_key(header, old[path], old_row, [k for k in identity_columns(old[path], new_rows) if k != c])
-        matching = [r for r in new_rows[1:] if all(r[header.index(k)] == v for k, v in key)] if key else []
-        if len(matching) != 1 or len(matching[0]) <= c:
-            left.append(f"{rel(doc)}:{line}: {shown(written, unit)} came from {path.name} row {i}, which today's "
-                        "CSV has not")
+        column = header[c]
+        key = row_key(header, old[path], old_row, [k for k in identity_columns(old[path], new_rows) if k != column])
+        new_header = new_rows[0] if new_rows else []
+        matching = ([r for r in new_rows[1:] if all(len(r) > new_header.index(k) and r[new_header.index(k)] == v
+                                                    for k, v in key)] if key and column in new_header else [])
+        if len(matching) != 1 or len(matching[0]) <= new_header.index(column):
+            if not still_held:
+                left.append(f"{rel(doc)}:{line}: {shown(written, unit)} came from {path.name} row {i}, which "
+                            "today's CSV has not")
             continue
         try:
-            new_value = float(matching[0][c])
+            new_value = float(matching[0][new_header.index(column)])
         except ValueError:
             left.append(f"{rel(doc)}:{line}: {shown(written, unit)} came from {path.name}'s {header[c]}, empty today")
             continue
@@ -251,6 +280,9 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--from", dest="rev", required=True, help="the commit whose report the docs quote")
     parser.add_argument("--write", action="store_true", help="rewrite the pages (default: print the changes)")
+    parser.add_argument("--cite", action="store_true",
+                        help="also cite the figures today's CSVs still hold, where their cell is known "
+                             "(read each before committing it)")
     parser.add_argument("--only", action="append", default=[], help="only this page (repeatable)")
     parser.add_argument("--root", type=Path, default=Path(__file__).resolve().parents[1],
                         help="the checkout (default: this one)")
@@ -270,7 +302,7 @@ def main(argv):
         return str(path.relative_to(root))
     all_left = []
     for doc in docs:
-        text, changes, left = refresh_page(root, doc, tables, old, held_now, code, rel)
+        text, changes, left = refresh_page(root, doc, tables, old, held_now, code, rel, args.cite)
         for change in changes:
             print(change)
         all_left += left

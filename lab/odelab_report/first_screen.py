@@ -223,7 +223,7 @@ def measured_rows():
                  "qs": q("limit-test4.csv", "heaviest_held_kg", solver="QuickStep 20", step_s=0.001)},
                 "dw > qs and fine > qs")],
          None, peer_cell("test4", True, "{v:k2} kg")),
-        ("test5", definition("test5", "tallest stack in real time, 20 iterations", "tallest stack"),
+        ("test5", definition("test5", "real-time stack, 20 iterations", "tallest stack"),
          [Claim("first.test5.figure", "{v:n} plates (median, {n:n})", {
              "v": q("limit-test5.csv", "tallest_plates", "median", setting="simple, 20 iterations"),
              "n": q("limit-test5.csv", "tallest_plates", "count", setting="simple, 20 iterations")}, "n > 1"),

@@ -44,11 +44,11 @@ class OneReadingPerRow(unittest.TestCase):
                             for p in problems), problems)
 
     def test_a_cell_reading_another_quantity_is_refused_on_test2s_row(self):
-        # test2's row is (max - min) / max over 60 s; peers.csv has |E - E0| / E0 over 20 s.
+        # test2's row is (max - min) / max over 60 s; peers.csv has |E - E0| / (m g d) over 20 s.
         peer = Claim("first.test2.peer", "{v:n2}", {"v": q("peers.csv", "value", scene="test2", engine="bullet",
                                                             setting="best", step=0.001)})
         problems = check_report.check_one_reading(COMMITTED, claim_rows(definition("test2"), peer))
-        self.assertTrue(any("energy |E-E0|/E0, not energy (max-min)/max" in p for p in problems), problems)
+        self.assertTrue(any("energy |ΔE|/mgd, not energy (max-min)/max" in p for p in problems), problems)
         self.assertTrue(any("20 s, not 60 s" in p for p in problems), problems)
 
     def test_the_rows_own_quantity_and_setting_pass(self):
