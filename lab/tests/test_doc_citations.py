@@ -61,11 +61,6 @@ class DocCitations(unittest.TestCase):
     def test_a_citation_in_a_code_span_is_an_example(self):
         self.assertEqual(self.problems("the form: `[figure](path.csv#column=value)`.\n"), [])
 
-    def test_the_committed_docs_pass(self):
-        root = Path(__file__).resolve().parents[2]
-        failing = [p for waiting, p in check_docs.check(root)[0] if not waiting]
-        self.assertEqual(failing, [])
-
 
 if __name__ == "__main__":
     unittest.main()
