@@ -144,3 +144,12 @@ function(odelab_contact_choice_refusals program)
     --mu=<empty> --mu=-1 --mu=-inf --mu=nan --mu=abc
     --max-contacts=<empty> --max-contacts=0 --max-contacts=65 --max-contacts=2.5 --max-contacts=many)
 endfunction()
+
+# odelab_web_check(SCENE METRIC TOLERANCE [SECONDS S] [DOWNLOAD FILE] [ARGS ...]):
+# the scene's run in headless Chromium against this build's headless run,
+# asked in its checks file; checks/web.cmake registers it where the browser
+# checks are not left out.
+function(odelab_web_check scene)
+  set_property(GLOBAL APPEND PROPERTY ODELAB_WEB_CHECK_SCENES ${scene})
+  set_property(GLOBAL PROPERTY ODELAB_WEB_CHECK_${scene} ${ARGN})
+endfunction()

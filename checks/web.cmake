@@ -39,13 +39,14 @@ if(NOT ODELAB_NODE)
   list(APPEND _web_missing node)
 endif()
 
-# odelab_web_check(SCENE METRIC TOLERANCE [SECONDS S] [DOWNLOAD FILE] [ARGS ...]):
-# each scene's own, in its checks/programs/<scene>.cmake (included after this
-# file); nothing where the browser checks are left out.
-function(odelab_web_check scene metric tolerance)
-  if(_web_missing)
-    return()
-  endif()
+if(_web_missing)
+  return()
+endif()
+
+# Each scene's run in the browser, as its checks file
+# (checks/programs/<scene>.cmake) asked with odelab_web_check
+# (check_functions.cmake): the metric, its tolerance, the length, options.
+function(odelab_register_web_check scene metric tolerance)
   cmake_parse_arguments(W "" "SECONDS;DOWNLOAD" "ARGS" ${ARGN})
   set(extra)
   if(W_SECONDS)
@@ -70,13 +71,16 @@ endfunction()
 # another machine and stay far inside each scene's own bound. Counts are
 # compared exactly.
 
+get_property(_web_scenes GLOBAL PROPERTY ODELAB_WEB_CHECK_SCENES)
+foreach(_scene IN LISTS _web_scenes)
+  get_property(_arguments GLOBAL PROPERTY ODELAB_WEB_CHECK_${_scene})
+  odelab_register_web_check(${_scene} ${_arguments})
+endforeach()
+
 # The page itself: a coarse clock (two frames at one time) does not stop a
 # run, a refused address parameter is named without command-line advice,
 # and the pages load no missing file and have their icon
 # (scripts/web/check-page.sh says what each asks).
-if(_web_missing)
-  return()
-endif()
 foreach(what clock bad-option files)
   string(REPLACE "-" "_" name web_page_${what})
   add_test(NAME ${name}
