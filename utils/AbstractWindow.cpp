@@ -15,6 +15,7 @@
 #include "MeasurementLog.h"
 #include "OdeMessages.h"
 #include "StopSignal.h"
+#include "WorldKnobs.h"
 
 namespace odelab {
 
@@ -38,6 +39,7 @@ bool runLengthReached(double seconds, double simulatedTime, double step) {
 
 AbstractWindow::AbstractWindow(WorldSettings defaults) : SceneSettings(defaults) {
   bindSharedKeys();
+  for (Knob& knob : worldKnobs(settings_, increment_)) declare(std::move(knob));
   bindTimeAndViewKeys();
 }
 
@@ -64,14 +66,14 @@ void AbstractWindow::reset() {
 }
 
 // A new run begins: what the timeline replays starts from here.
-void AbstractWindow::beginRun() { rewind_.begin({settings_, spaceKind_, stepper_}); }
+void AbstractWindow::beginRun() { rewind_.begin({settings_, spaceKind_, increment_}); }
 
 void AbstractWindow::replayTo(long long step) {
   rewind_.setReplaying(true);
   const RunStart& start = rewind_.restore();
   settings_ = start.settings;
   spaceKind_ = start.space;
-  stepper_ = start.stepper;
+  increment_ = start.increment;
   destroyWorld();
   createWorld();
   rewind_.timeline().rewindCursor();
@@ -191,34 +193,8 @@ void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& sur
 
 void AbstractWindow::useContactChoices(double defaultMu) {
   contactChoicesUsed_ = true;
-  contact_.mu = defaultMu;  // the panel parameters below keep both values across rewind
-  const auto step = [this](int direction) {
-    const double before = contact_.mu;
-    contact_.mu = ParameterStepper::nextOnLadder(ContactChoices::muLadder(), contact_.mu, direction);
-    // At either end of the ladder the key changes nothing, and says so.
-    const std::string change = contact_.mu == before
-                                   ? "mu stays " + ContactChoices::muWords(before) +
-                                         (direction > 0 ? " (the ladder's top)" : " (the ladder's bottom)")
-                                   : "mu " + ContactChoices::muWords(before) + " -> " +
-                                         ContactChoices::muWords(contact_.mu);
-    notify(timeStamp(simulatedTime_) + ": " + change);
-  };
-  bindKey(SDLK_f, "F", "lower the contact friction mu (ladder 0 ... 5, infinite)", [step](int) { step(-1); });
-  bindKey(SDLK_g, "G", "raise the contact friction mu (ladder 0 ... 5, infinite)", [step](int) { step(+1); });
-  // --mu and --max-contacts are ContactChoices' own options (mu takes inf);
-  // the knobs name them and their true ranges, for --list-settings and the panel.
-  declare(Knob::real(ContactChoices::MU_KNOB, "contact friction mu (G: infinite)", "", contact_.mu, 0.0, 0.0)
-              .upToInfinity(ContactChoices::PANEL_MU_MAX)
-              .withOption("--mu", ContactChoices::MU_HELP)
-              .optionParsedByOwner());
-  declare(Knob::integer(ContactChoices::MAX_CONTACTS_KNOB, "contacts per pair", contact_.maxContacts, 1,
-                        ContactChoices::MOST_CONTACTS)
-              .withOption("--max-contacts", ContactChoices::MAX_CONTACTS_HELP)
-              .optionParsedByOwner());
-}
-
-void AbstractWindow::addContactOptions(CLI::App& app) {
-  if (contactChoicesUsed_) contact_.addOptions(app);
+  contact_.mu = defaultMu;
+  for (Knob& knob : contact_.knobs()) declare(std::move(knob));
 }
 
 bool AbstractWindow::stepOnce() {
@@ -404,10 +380,12 @@ Metrics AbstractWindow::metrics() const {
   if (contactChoicesUsed_) {
     m.set("mu", ContactChoices::muMetric(contact_.mu));  // -1: dInfinity (JSON has no infinity)
     m.set("mu_infinite", std::isinf(contact_.mu) ? 1 : 0);
-    m.set("max_contacts", contact_.contactLimit());
+    m.set("max_contacts", contact_.maxContacts);
   }
   m.set("non_finite", blowUpReason_.empty() ? 0 : 1);
   m.set("state_hash", static_cast<double>(stateHash()));
+  // Every knob in force at the end, under one prefix (infinity as -1).
+  for (const Knob& knob : knobs_) m.set("knob_" + knob.name, knob.metricValue());
   addMetrics(m);
   for (const auto& [name, value] : marks_.entries()) m.set(name, value);
   return m;
@@ -419,23 +397,17 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
       {"ode_version", dODE_VERSION},
       {"ode_precision", dCheckConfiguration("ODE_double_precision") ? "double" : "single"},
   };
-  // Every setting of the table (SettingsTable.h), then what the table does not tune.
-  for (auto& setting : settingsHeader(settings_)) description.push_back(std::move(setting));
-  const std::vector<std::pair<std::string, std::string>> rest{
-      {"gravity", formatValue(settings_.gravity)},
-      {"space", spaceKindName(spaceKind_)},
-      {"seed", std::to_string(options_.seed)},
-      // The run length asked for; the file's last line says whether it was reached.
-      {"run_seconds_asked",
-       options_.seconds > 0 ? formatValue(options_.seconds)
-       : options_.headless  ? formatValue(defaultHeadlessSeconds())
-                            : std::string("until the window is closed")},
-  };
-  description.insert(description.end(), rest.begin(), rest.end());
-  if (contactChoicesUsed_) {
-    description.push_back({"contact_mu", ContactChoices::muText(contact_.mu)});
-    description.push_back({"max_contacts_per_pair", std::to_string(contact_.contactLimit())});
-  }
+  // The world settings (step first), what no knob tunes, then every other knob.
+  const std::vector<const Knob*> knobs = inReportOrder();
+  auto next = knobs.begin();
+  for (; next != knobs.end() && (*next)->appliesToWorld; ++next) description.push_back({(*next)->headerKey(), (*next)->headerText()});
+  description.push_back({"space", spaceKindName(spaceKind_)});
+  description.push_back({"seed", std::to_string(options_.seed)});
+  // The run length asked for; the file's last line says whether it was reached.
+  description.push_back({"run_seconds_asked", options_.seconds > 0 ? formatValue(options_.seconds)
+                                              : options_.headless  ? formatValue(defaultHeadlessSeconds())
+                                                                   : std::string("until the window is closed")});
+  for (; next != knobs.end(); ++next) description.push_back({(*next)->headerKey(), (*next)->headerText()});
   return description;
 }
 

@@ -10,7 +10,6 @@
 #include "KeyTable.h"
 #include "SceneSettings.h"
 #include "SessionTools.h"
-#include "SettingsTable.h"
 #include "WorldRun.h"
 
 namespace CLI {
@@ -37,7 +36,6 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
 
   // ---- driven by the runner ----------------------------------------------
   virtual void addOptions(CLI::App& app);  // the scene's own options, before parsing
-  void addContactOptions(CLI::App& app);   // --mu, --max-contacts, after useContactChoices()
   void setRunOptions(const RunOptions& options) { options_ = options; }
   const RunOptions& options() const { return options_; }
   // Its files in --out-dir (run log included): --metrics-json and --screenshot may not name them.
@@ -87,8 +85,8 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   std::vector<std::string> helpLines() const;
   virtual SceneBounds bounds() const { return {{0, 0, 0}, 12.0}; }
   bool handleKey(SDL_Keycode key, bool shift);  // false if unbound
-  void changeSetting(SettingId id, double value);
-  void changeParameter(int index, double value);
+  // The panel's change of knob `index` (in tuning().knobs()), recorded for rewind.
+  void changeKnob(int index, double value);
   void beginDrag(const PickHit& hit, const double target[3]);
   void moveDrag(const double target[3]);
   void endDrag();
@@ -107,7 +105,8 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   // A colliding pair's surface; the default is plain friction with contactMu(),
   // which overrides use too so that --mu, F / G and the panel reach them.
   virtual void setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface);
-  // Called in a scene's constructor when it has contacts: --mu, --max-contacts, F / G, panel, metrics.
+  // Called in a scene's constructor when it has contacts: the knobs mu and
+  // max_contacts (--mu, --max-contacts, F / G, the panel's Contacts group).
   void useContactChoices(double defaultMu);
   // Before every step, after recorded inputs and the drag spring, before collision.
   virtual void beforeStep() {}
@@ -136,7 +135,9 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   void keepAcrossRewind(T& value) {
     rewind_.keep(value);
   }
-  // A scene's knob, declared once (utils/Knob.h): option, key, panel row and rewind follow.
+  // A knob, declared once (utils/Knob.h): option, keys, panel row, header
+  // line, metric and rewind follow. The world settings are declared by the
+  // base, the contact choices by useContactChoices().
   Knob& declare(Knob knob);
   // Objects are owned here; scenes keep raw pointers, valid until the next reset.
   template <class T, class... Args>
@@ -157,8 +158,9 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   void logAction(const std::string& text);
   void bindSharedKeys();
   void bindTimeAndViewKeys();
-  void changeKnob(Knob& knob, double value, const std::string& source);
-  void reportSetting(const SettingChange& change);
+  // Every knob change, from a key ("key"), the panel ("panel") or a replay, ends here.
+  void changeKnob(Knob& knob, double value, const char* source);
+  void stepKnob(Knob& knob, int direction);
   void recoverFrom(const std::string& failure);
 
   std::string programName_;

@@ -10,6 +10,7 @@
 #include "OdeMessages.h"
 #include "SceneKeys.h"
 #include "SpringDamper.h"
+#include "WorldKnobs.h"
 
 namespace odelab {
 
@@ -22,7 +23,7 @@ std::string springLine(const WorldSettings& settings) {
   if (spring.rigid)
     return "constraints rigid (CFM 0): no spring; ERP corrects " + formatValue(settings.erp) + " of the error per step";
   WorldSettings next = settings;
-  ParameterStepper::stepStepSize(next, +1);
+  next.step = ranges::STEP.clamp(nextStepSize(settings.step, +1));
   const ErpCfm keep = erpCfmFor(spring, next.step);
   std::ostringstream s;
   s << "spring kp " << formatValue(spring.kp) << " N/m, damper kd " << formatValue(spring.kd) << " N s/m; at step "
@@ -30,13 +31,13 @@ std::string springLine(const WorldSettings& settings) {
   return s.str();
 }
 
-// Every setting of the table on one line: "ERP 0.2  CFM 1e-06  step 0.001 s ...".
-std::string settingsLine(const WorldSettings& settings) {
+// Every world setting with an F-key on one line: "ERP 0.2   CFM 1e-06   step 0.001 s ...".
+std::string settingsLine(const std::deque<Knob>& knobs) {
   std::string line;
-  for (const SettingSpec& spec : settingsTable()) {
+  for (const Knob& knob : knobs) {
+    if (!knob.appliesToWorld || knob.key == SDLK_UNKNOWN) continue;
     if (!line.empty()) line += "   ";
-    line += std::string(spec.label) + ' ' + settingText(spec.id, settingValue(settings, spec.id));
-    if (*spec.unit) line += std::string(" ") + spec.unit;
+    line += knob.label + ' ' + knob.words() + (knob.unit.empty() ? "" : " " + knob.unit);
   }
   return line;
 }
@@ -56,7 +57,7 @@ std::vector<std::string> AbstractWindow::hudLines() const {
   if (hudMode_ == HudMode::Off) return lines;
   const bool full = hudMode_ == HudMode::Full;
   lines.push_back(title_ + (full ? "" : "   (F1 more, H keys, Tab panel)"));
-  lines.push_back(settingsLine(settings_));
+  lines.push_back(settingsLine(knobs_));
   std::ostringstream s;
   char rate[96];
   // Paused, no simulated time passes: a factor would only say how long ago
@@ -79,7 +80,7 @@ std::vector<std::string> AbstractWindow::hudLines() const {
   } else {
     if (!own.empty()) lines.push_back(own);
     s.str("");
-    s << "F2 increment " << formatValue(stepper_.increment()) << "   space " << spaceKindName(spaceKind_)
+    s << "F2 increment " << formatValue(increment_.value()) << "   space " << spaceKindName(spaceKind_)
       << "   bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << contactsLastStep_;
     lines.push_back(s.str());
     s.str("");
@@ -89,7 +90,7 @@ std::vector<std::string> AbstractWindow::hudLines() const {
     lines.push_back(springLine(settings_));
     if (contactChoicesUsed_)
       lines.push_back("contact mu " + ContactChoices::muWords(contact_.mu) + " (F / G)   contacts per pair " +
-                      std::to_string(contact_.contactLimit()));
+                      std::to_string(contact_.maxContacts));
     lines.insert(lines.end(), sceneLines.begin(), sceneLines.end());
     if (const AbstractObject* object = draggedObject()) {
       const dReal* v = dBodyGetLinearVel(object->getBody());

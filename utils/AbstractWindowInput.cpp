@@ -28,40 +28,48 @@ void AbstractWindow::rebindKey(SDL_Keycode key, std::string keyName, std::string
 Knob& AbstractWindow::declare(Knob declared) {
   knobs_.push_back(std::move(declared));
   Knob& knob = knobs_.back();  // a deque keeps it in place as more are declared
+  // (A knob read and written through functions, the solver, points into
+  // the world settings, which a run's start restores.)
   if (knob.count)
     rewind_.keep(*knob.count);
-  else
+  else if (knob.value)
     rewind_.keep(*knob.value);
-  // Every knob has its panel row, so that whatever the command line sets
-  // can be tuned there too.
-  parameters_.add({&knob, knob.offAtZero ? 0.0 : knob.min, knob.panelMax()});
-  panelKnobs_.push_back(&knob);
-  if (knob.key != SDLK_UNKNOWN) {
-    Knob* stepped = &knob;
-    bindKey(knob.key, knob.keyName, knob.keyHelp,
-            [this, stepped](int direction) { changeKnob(*stepped, stepped->next(direction), ""); });
-  }
+  Knob* stepped = &knob;
+  if (knob.key != SDLK_UNKNOWN)
+    keys_.bind({knob.key, knob.keyName, knob.keyHelp,
+                [this, stepped](int direction) { stepKnob(*stepped, direction); }, true, true});
+  if (knob.lowerKey != SDLK_UNKNOWN)
+    keys_.bind({knob.lowerKey, knob.lowerKeyName, knob.lowerKeyHelp,
+                [this, stepped](int direction) { stepKnob(*stepped, -direction); }, true, true});
   return knob;
 }
 
-// Every knob change, from its key, the panel or a replay, ends here.
-void AbstractWindow::changeKnob(Knob& knob, double value, const std::string& source) {
-  const std::string change = knob.set(value);
-  if (change.empty()) return;
-  if (!source.empty()) logAction(source + change);
-  if (knob.rebuilds) reset();  // a new value is a new experiment
-  notify((source.empty() ? "" : timeStamp(simulatedTime_) + ": ") + change + (knob.rebuilds ? "; scene rebuilt" : ""));
-  onKnobChanged(knob);
+// A knob's key: the next value on its ladder or by its stepper. At either
+// end of its range or ladder the key changes nothing, and says so.
+void AbstractWindow::stepKnob(Knob& knob, int direction) {
+  const double before = knob.get();
+  changeKnob(knob, knob.next(direction), "key");
+  if (knob.get() != before || rewind_.replaying()) return;
+  const char* end = knob.ladder.empty() ? (direction > 0 ? " (the top of its range)" : " (the bottom of its range)")
+                    : direction > 0     ? " (the ladder's top)"
+                                        : " (the ladder's bottom)";
+  notify(timeStamp(simulatedTime_) + ": " + knob.label + " stays " + knob.words() + end);
 }
 
-namespace {
-// Setting keys log their own change (reportSetting); others their description.
-bool settingKey(SDL_Keycode key) {
-  for (const SettingSpec& spec : settingsTable())
-    if (spec.key == key) return true;
-  return key == SDLK_F2;
+void AbstractWindow::changeKnob(Knob& knob, double value, const char* source) {
+  const bool byKey = std::string(source) == "key";
+  const std::string change = knob.set(value);
+  if (change.empty()) return;
+  logAction(byKey ? change : std::string(source) + ": " + change);
+  if (knob.appliesToWorld) {
+    applySettings(change);  // the world takes it at once; notifies, and tells the scene
+    return;
+  }
+  if (knob.rebuilds) reset();  // a new value is a new experiment
+  if (!rewind_.replaying())
+    notify(timeStamp(simulatedTime_) + ": " + change + (knob.rebuilds ? "; scene rebuilt" : ""));
+  onKnobChanged(knob);
 }
-}  // namespace
 
 bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
   const KeyBinding* binding = keys_.find(key);
@@ -83,26 +91,17 @@ bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
     event.shift = shift;
     rewind_.record(event);
   }
-  // Setting keys log their own change (reportSetting); others their description.
-  if (!settingKey(key)) logAction(name + ": " + description);
+  // A knob's key logs the change it made (changeKnob); others their description.
+  if (!binding->logsItself) logAction(name + ": " + description);
   return true;
 }
 
 
-void AbstractWindow::changeSetting(SettingId id, double value) {
+void AbstractWindow::changeKnob(int index, double value) {
+  if (index < 0 || index >= static_cast<int>(knobs_.size())) return;
   TimelineEvent event;
   event.step = steps_;
-  event.kind = TimelineEvent::Kind::Setting;
-  event.index = static_cast<int>(id);
-  event.value = value;
-  recordAndApply(event);
-}
-
-void AbstractWindow::changeParameter(int index, double value) {
-  if (!parameters_.valid(index)) return;
-  TimelineEvent event;
-  event.step = steps_;
-  event.kind = TimelineEvent::Kind::Parameter;
+  event.kind = TimelineEvent::Kind::Knob;
   event.index = index;
   event.value = value;
   recordAndApply(event);
@@ -124,20 +123,10 @@ void AbstractWindow::applyEvent(const TimelineEvent& event) {
     case TimelineEvent::Kind::Release:
       drag_.apply(event, static_cast<int>(objects_.size()));
       break;
-    case TimelineEvent::Kind::Setting:
-      reportSetting(assignSetting(settings_, static_cast<SettingId>(event.index), event.value));
-      break;
-    case TimelineEvent::Kind::Parameter:
-      changeKnob(*panelKnobs_[event.index], event.value, "panel: ");
+    case TimelineEvent::Kind::Knob:
+      changeKnob(knobs_[static_cast<size_t>(event.index)], event.value, "panel");
       break;
   }
-}
-
-// Every setting change, from a key, the panel or a replay, ends here.
-void AbstractWindow::reportSetting(const SettingChange& change) {
-  if (!change.changed()) return;
-  logAction(change.text());
-  applySettings(change.text());
 }
 
 void AbstractWindow::logAction(const std::string& text) {
@@ -160,17 +149,14 @@ void AbstractWindow::bindSharedKeys() {
                : hudMode_ == HudMode::Full  ? HudMode::Off
                                             : HudMode::Compact;
   });
-  bindKey(SDLK_F2, "F2", "choose the increment used by F3 / F4 (1e-6 ... 0.1)", [this](int d) {
-    stepper_.cycleIncrement(d);
-    const std::string change = "F2 increment " + formatValue(stepper_.increment());
-    logAction(change);
-    applySettings(change);
-  });
-  for (const SettingSpec& spec : settingsTable()) {
-    const SettingId id = spec.id;
-    bindKey(spec.key, spec.keyName, spec.keyHelp,
-            [this, id](int d) { reportSetting(stepSetting(settings_, id, d, stepper_)); });
-  }
+  keys_.bind({SDLK_F2, "F2", "choose the increment used by F3 / F4 (1e-6 ... 0.1)",
+              [this](int d) {
+                increment_.cycle(d);
+                const std::string change = "F2 increment " + formatValue(increment_.value());
+                logAction(change);
+                applySettings(change);
+              },
+              true, true});
 }
 
 void AbstractWindow::offerSceneSwitch(std::vector<SceneChoice> scenes, int current) {

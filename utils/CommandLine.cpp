@@ -7,6 +7,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "ExitCodes.h"
 #include "MeasurementLog.h"
 #include "Platform.h"
@@ -125,13 +127,6 @@ CLI::Validator integerRange(int min, int max) {
       "in " + range);
 }
 
-double settingNumber(SettingId id, const std::string& text) {
-  if (id == SettingId::Solver) return text == "step" ? 1.0 : 0.0;
-  double value = 0;
-  CLI::detail::lexical_cast(text, value);  // checked by the option's validator first
-  return value;
-}
-
 CLI::Validator positive(double max) {
   return CLI::Validator(
       [max](std::string& text) -> std::string {
@@ -144,27 +139,11 @@ CLI::Validator positive(double max) {
       "> 0");
 }
 
-void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& settings) {
+void addCommonOptions(CLI::App& app, RunOptions& options) {
   app.add_flag("--headless", options.headless, "run with no window and no GL calls; print metrics and exit");
   app.add_option("--seconds", options.seconds,
                  "simulated seconds to run (headless default: the scene's; window: quit on the step a headless run ends on, default never)")
       ->check(positive(1e7));
-  // The world settings, from the same table as the F-keys and the panel.
-  for (const SettingSpec& spec : settingsTable()) {
-    const SettingId id = spec.id;
-    CLI::Option* option = app.add_option_function<std::string>(
-        spec.option, [&settings, id](const std::string& text) { setSettingValue(settings, id, settingNumber(id, text)); },
-        spec.optionHelp);
-    option->default_str(settingText(id, settingValue(settings, id)));
-    option->type_name(id == SettingId::Solver ? "TEXT" : spec.integer ? "INT" : "FLOAT");
-    if (id == SettingId::Solver)
-      option->check(CLI::IsMember({"quick", "step"}));
-    else if (spec.integer)
-      option->check(integerRange(static_cast<int>(spec.range->min), static_cast<int>(spec.range->max)))
-          ->transform(decimalInteger());
-    else
-      option->check(finiteRange(spec.range->min, spec.range->max));
-  }
   app.add_option("--seed", options.seed, "seed for every random choice of the scene and for ODE's dRandSetSeed")
       ->capture_default_str();
   app.add_option("--out-dir", options.outDir,
@@ -219,26 +198,30 @@ void addWindowOptions(CLI::App& app, RunOptions& options) {
 
 void addKnobOptions(CLI::App& app, std::deque<Knob>& knobs) {
   for (Knob& knob : knobs) {
-    if (knob.option.empty() || knob.ownParser) continue;
+    if (knob.option.empty()) continue;
     Knob* target = &knob;
     const std::string range = knob.rangeText();
-    CLI::Option* option = app.add_option_function<double>(
-        knob.option, [target](double value) { target->set(value); }, knob.help);
-    option->type_name(knob.kind == KnobKind::Integer ? "INT" : "FLOAT");
-    option->default_str(formatNumber(knob.get()));
+    CLI::Option* option = app.add_option_function<std::string>(
+        knob.option, [target](const std::string& text) { target->set(target->parse(text)); }, knob.help);
+    option->type_name(knob.kind == KnobKind::Choice ? "TEXT" : knob.kind == KnobKind::Integer ? "INT" : "FLOAT");
+    option->default_str(knob.optionText());
     option->check(CLI::Validator(
         [target, range](std::string& text) -> std::string {
-          double value = 0;
-          if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
-          // inf only where the knob's range reaches it (test5's max correcting velocity).
-          if (std::isnan(value) || (std::isinf(value) && !target->accepts(value)))
-            return "'" + text + "' is not a finite number";
+          if (target->kind == KnobKind::Choice)
+            return std::isnan(target->parse(text)) ? "'" + text + "' is not " + range : std::string();
+          const double value = target->parse(text);
+          // inf only where the knob's range reaches it (mu, test5's max correcting velocity).
+          if (std::isnan(value)) {
+            double any = 0;
+            return "'" + text + "' is not a " +
+                   (CLI::detail::lexical_cast(text, any) && !isHexadecimal(text) ? "finite number" : "number");
+          }
           if (!target->accepts(value))
             return "'" + text + "' is outside " + range +
                    (target->kind == KnobKind::Integer ? " or not a whole number" : "");
           return {};
         },
-        "in " + range));
+        knob.kind == KnobKind::Choice ? range : "in " + range));
     if (knob.kind == KnobKind::Integer) option->transform(decimalInteger());
     knob.parsed = option;
   }
@@ -254,12 +237,41 @@ void checkKnobs(const CLI::App& app, const std::deque<Knob>& knobs, double step)
   }
 }
 
-std::string settingsJson(const WorldSettings& settings, const std::deque<Knob>& knobs) {
-  std::string text = "[\n";
-  for (const SettingSpec& spec : settingsTable()) text += "  " + settingJson(spec, settings) + ",\n";
-  for (size_t i = 0; i < knobs.size(); ++i) text += "  " + knobs[i].json() + (i + 1 < knobs.size() ? ",\n" : "\n");
-  if (knobs.empty()) text.erase(text.size() - 2, 1);  // the last setting's comma
-  return text + "]\n";
+std::string settingsJson(const std::deque<Knob>& knobs) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  // JSON has no infinity: a range reaching it says "inf", as the option takes it.
+  const auto number = [](double v) -> nlohmann::ordered_json {
+    if (std::isinf(v)) return "inf";
+    return v;
+  };
+  const char* groups[] = {"world", "contacts", "scene"};
+  for (const Knob& knob : knobs) {
+    nlohmann::ordered_json entry;
+    entry["name"] = knob.name;
+    entry["option"] = knob.option;
+    entry["key"] = knob.keyName;
+    if (knob.kind == KnobKind::Choice) {
+      entry["choices"] = knob.choices;
+      entry["default"] = knob.words();
+      entry["kind"] = "choice";
+    } else {
+      const bool whole = knob.kind == KnobKind::Integer;
+      entry["min"] = whole ? nlohmann::ordered_json(static_cast<long long>(knob.min)) : number(knob.min);
+      entry["max"] = whole ? nlohmann::ordered_json(static_cast<long long>(knob.max)) : number(knob.max);
+      entry["default"] = knob.kind == KnobKind::Integer ? nlohmann::ordered_json(static_cast<long long>(knob.get()))
+                                                         : number(knob.get());
+      entry["kind"] = knob.kind == KnobKind::Integer ? "integer" : knob.kind == KnobKind::Interval ? "interval" : "real";
+    }
+    entry["unit"] = knob.unit;
+    entry["group"] = groups[static_cast<int>(knob.group)];
+    entry["header"] = knob.headerKey();
+    entry["metric"] = "knob_" + knob.name;
+    entry["off_at_zero"] = knob.offAtZero;
+    entry["only_with"] = knob.companion;
+    entry["scene_default"] = knob.sceneDefault;
+    list.push_back(std::move(entry));
+  }
+  return list.dump(2) + "\n";
 }
 
 void rejectEmptyValues(CLI::App& app) {

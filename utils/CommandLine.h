@@ -30,26 +30,25 @@ CLI::Validator finiteRange(double min, double max);
 CLI::Validator positive(double max = 1e12);
 // A whole number within [min, max].
 CLI::Validator integerRange(int min, int max);
-// A checked option value of a setting as a number (the solver: 0 or 1).
-double settingNumber(SettingId id, const std::string& text);
 
-// Adds --headless, --seconds, --step, --erp, --cfm, --iterations, --sor,
-// --solver (the settings table), --seed, --out-dir, --metrics-json,
+// Adds --headless, --seconds, --seed, --out-dir, --metrics-json,
 // --screenshot, --frames, --shader-dir, --font, --width, --height and the
 // window options below.
-void addCommonOptions(CLI::App& app, RunOptions& options, WorldSettings& settings);
+void addCommonOptions(CLI::App& app, RunOptions& options);
 // --max-frame-time, --max-fps, --no-vsync, --text-size, --hud, --no-panel.
 void addWindowOptions(CLI::App& app, RunOptions& options);
 
-// An option for every knob that names one, checked against the knob's
-// range (utils/Knob.h), default shown in --help.
+// An option for every knob that names one (the world settings, the contact
+// choices, the scene's), checked against the knob's range or choices
+// (utils/Knob.h), default shown in --help.
 void addKnobOptions(CLI::App& app, std::deque<Knob>& knobs);
 // After parsing: an interval knob given below one step is refused (a row,
 // spawn or throw that no step separates), and a knob given without the flag
 // it only works with. Throws UsageError naming the option.
 void checkKnobs(const CLI::App& app, const std::deque<Knob>& knobs, double step);
-// --list-settings: the world settings and the scene's knobs as a JSON array.
-std::string settingsJson(const WorldSettings& settings, const std::deque<Knob>& knobs);
+// --list-settings: every knob as a JSON array (name, option, key, range or
+// choices, default, kind, unit, panel group, header key, metric name).
+std::string settingsJson(const std::deque<Knob>& knobs);
 
 // Makes every option that takes a value refuse an empty one ("--seed=").
 // Call after every option is added.

@@ -3,9 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "AbstractWindow.h"
-#include "ContactChoices.h"
 #include "Knob.h"
-#include "SettingsTable.h"
 
 namespace odelab {
 
@@ -23,9 +21,8 @@ bool givenFlag(const std::vector<LineOption>& given, const std::string& flag) {
 }
 
 // Whether naming the knob on a command line starts the run it is in now.
-bool named(const Knob& knob, bool contactKnob, const std::vector<LineOption>& given) {
+bool named(const Knob& knob, const std::vector<LineOption>& given) {
   if (!knob.companion.empty() && !givenFlag(given, knob.companion)) return false;
-  if (contactKnob) return true;  // --mu takes any mu >= 0 and inf, beyond the panel's slider
   if (!knob.accepts(knob.get())) return false;
   const bool given_ = knob.parsed && knob.parsed->count() > 0;
   return !knob.sceneDefault || given_ || knob.get() != knob.initial;
@@ -55,21 +52,10 @@ std::vector<LineOption> givenOptions(const std::vector<const CLI::Option*>& scen
   return given;
 }
 
-std::vector<LineOption> tuningOptions(const WorldSettings& settings, const std::deque<Knob>& knobs, unsigned seed,
-                                      const std::vector<LineOption>& given) {
+std::vector<LineOption> tuningOptions(const std::deque<Knob>& knobs, unsigned seed, const std::vector<LineOption>& given) {
   std::vector<LineOption> line;
-  for (const SettingSpec& spec : settingsTable()) {
-    const double value = settingValue(settings, spec.id);
-    // settingText rounds to 6 digits for people; the line must read back exactly.
-    line.push_back({spec.option, spec.id == SettingId::Solver ? settingText(spec.id, value) : jsonNumber(value)});
-  }
-  for (const Knob& knob : knobs) {
-    const std::string contactOption = ContactChoices::optionOfKnob(knob.name);
-    const bool contactKnob = !contactOption.empty();
-    const std::string option = contactKnob ? contactOption : knob.option;
-    if (option.empty() || !named(knob, contactKnob, given)) continue;
-    line.push_back({option, contactKnob ? ContactChoices::optionText(knob.get()) : knob.optionText()});
-  }
+  for (const Knob& knob : knobs)
+    if (!knob.option.empty() && named(knob, given)) line.push_back({knob.option, knob.optionText()});
   line.push_back({"--seed", std::to_string(seed)});
   line.insert(line.end(), given.begin(), given.end());
   return line;
@@ -85,8 +71,7 @@ std::string commandLineText(const std::string& program, const std::vector<LineOp
 }
 
 std::string copyLine(const AbstractWindow& scene) {
-  const SceneSettings& tuning = scene.tuning();
-  return commandLineText(scene.programName(), tuningOptions(tuning.settings(), tuning.knobs(), scene.options().seed,
+  return commandLineText(scene.programName(), tuningOptions(scene.tuning().knobs(), scene.options().seed,
                                                             scene.session().givenSceneOptions()));
 }
 

@@ -12,7 +12,6 @@ namespace odelab {
 
 class AbstractWindow;
 struct Knob;
-struct WorldSettings;
 
 // One option of a command line: "--erp" with "0.2", or a flag ("--ccd").
 struct LineOption {
@@ -26,15 +25,14 @@ struct LineOption {
 // repeats them.
 std::vector<LineOption> givenOptions(const std::vector<const CLI::Option*>& sceneOptions);
 
-// Every tunable value in force as the options that set it, in one list: the
-// world settings (SettingsTable), each knob (the contact choices as --mu and
-// --max-contacts), --seed, then the scene's own options as given. A knob is
+// Every tunable value in force as the options that set it, in one list: each
+// knob (world settings, contact choices, the scene's), --seed, then the
+// scene's own options as given. A knob is
 // left out only where naming it would change or refuse the run: its value is
 // outside its range (a stand-in for the scene's own default, as test5's
 // --plates 0), it is a default the scene picks (Knob::sceneDefault) and was
 // neither given nor changed, or it needs a flag the line does not carry.
-std::vector<LineOption> tuningOptions(const WorldSettings& settings, const std::deque<Knob>& knobs, unsigned seed,
-                                      const std::vector<LineOption>& given);
+std::vector<LineOption> tuningOptions(const std::deque<Knob>& knobs, unsigned seed, const std::vector<LineOption>& given);
 
 // "test4 --erp 0.2 ... --seed 1": words a POSIX shell passes on unchanged
 // (anything else single-quoted), numbers in their shortest exact form.

@@ -17,6 +17,9 @@ struct KeyBinding {
   // Whether the key changes the simulation: such presses are recorded on the
   // timeline (rewind replays them) and in the run log. View keys are not.
   bool recorded = true;
+  // A knob's key (and F2) writes the change it made to the run log itself,
+  // in place of the key's description.
+  bool logsItself = false;
 };
 
 class KeyTable {

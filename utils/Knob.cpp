@@ -7,9 +7,14 @@
 #include <limits>
 
 #include "FormatValue.h"
-#include "WorldSettings.h"
 
 namespace odelab {
+
+namespace {
+
+constexpr double INF = std::numeric_limits<double>::infinity();
+
+}  // namespace
 
 Knob Knob::real(std::string name, std::string label, std::string unit, double& value, double min, double max) {
   Knob knob;
@@ -41,6 +46,21 @@ Knob Knob::interval(std::string name, std::string label, double& value, double m
   return knob;
 }
 
+Knob Knob::choice(std::string name, std::string label, std::vector<std::string> words,
+                  std::vector<std::string> odeNames, std::function<int()> get, std::function<void(int)> set) {
+  Knob knob;
+  knob.name = std::move(name);
+  knob.label = std::move(label);
+  knob.kind = KnobKind::Choice;
+  knob.max = static_cast<double>(words.size()) - 1;
+  knob.choices = std::move(words);
+  knob.choiceNames = std::move(odeNames);
+  knob.read = [get] { return static_cast<double>(get()); };
+  knob.write = [set](double index) { set(static_cast<int>(index)); };
+  knob.initial = knob.get();
+  return knob;
+}
+
 Knob& Knob::withOption(std::string optionName, std::string optionHelp) {
   option = std::move(optionName);
   help = std::move(optionHelp);
@@ -52,6 +72,13 @@ Knob& Knob::withKey(SDL_Keycode keyCode, std::string name, std::string descripti
   keyName = std::move(name);
   keyHelp = std::move(description);
   ladder = std::move(values);
+  return *this;
+}
+
+Knob& Knob::withLowerKey(SDL_Keycode keyCode, std::string name, std::string description) {
+  lowerKey = keyCode;
+  lowerKeyName = std::move(name);
+  lowerKeyHelp = std::move(description);
   return *this;
 }
 
@@ -90,58 +117,104 @@ Knob& Knob::onlyWith(std::string flag) {
   return *this;
 }
 
+Knob& Knob::inGroup(KnobGroup where) {
+  group = where;
+  return *this;
+}
+
 Knob& Knob::upToInfinity(double sliderTop) {
-  max = std::numeric_limits<double>::infinity();
+  max = INF;
   sliderMax = sliderTop;
   return *this;
 }
 
-Knob& Knob::optionParsedByOwner() {
-  ownParser = true;
+Knob& Knob::worldSetting(std::string headerKey, std::string messageWords, int rank) {
+  group = KnobGroup::World;
+  appliesToWorld = true;
+  header = std::move(headerKey);
+  inMessage = std::move(messageWords);
+  reportRank = rank;
   return *this;
 }
 
-double Knob::get() const { return count ? *count : *value; }
+double Knob::get() const {
+  if (read) return read();
+  return count ? *count : *value;
+}
 
 std::string Knob::set(double newValue) {
   if (std::isnan(newValue)) return {};
   const double from = get();
   double to = offAtZero && newValue <= 0 ? 0.0 : std::min(max, std::max(min, newValue));
-  if (count) {
-    *count = static_cast<int>(std::lround(to));
-    to = *count;
-  } else {
+  if (kind == KnobKind::Choice || count) to = std::round(to);
+  if (write)
+    write(to);
+  else if (count)
+    *count = static_cast<int>(to);
+  else
     *value = to;
-  }
+  to = get();
   if (to == from) return {};
-  return label + ' ' + formatValue(from) + " -> " + formatValue(to) + (unit.empty() ? "" : " " + unit);
+  return label + ' ' + words(from) + " -> " + words(to) + (unit.empty() ? "" : " " + unit);
 }
 
 double Knob::next(int direction) const {
   if (stepper) return stepper(get(), direction);
+  if (kind == KnobKind::Choice) {
+    const int n = static_cast<int>(choices.size());
+    return (static_cast<int>(get()) + (direction >= 0 ? 1 : n - 1)) % n;
+  }
   if (ladder.empty()) return get();
-  return ParameterStepper::nextOnLadder(ladder, get(), direction);
+  return nextOnLadder(ladder, get(), direction);
 }
 
 bool Knob::accepts(double candidate) const {
   // Infinity only where the range reaches it (max is infinity).
-  if (std::isnan(candidate) || candidate == -std::numeric_limits<double>::infinity()) return false;
+  if (std::isnan(candidate) || candidate == -INF) return false;
   if (offAtZero && candidate == 0) return true;
-  if (kind == KnobKind::Integer && candidate != std::floor(candidate)) return false;
+  if ((kind == KnobKind::Integer || kind == KnobKind::Choice) && candidate != std::floor(candidate)) return false;
   return candidate >= min && candidate <= max;
 }
 
+std::string Knob::words(double v) const {
+  if (kind == KnobKind::Choice) return choices.at(static_cast<size_t>(v));
+  if (std::isinf(v)) return "infinite";
+  return formatValue(v);
+}
+
 std::string Knob::rangeText() const {
-  const auto bound = [](double value) { return std::isinf(value) ? std::string("inf") : jsonNumber(value); };
+  if (kind == KnobKind::Choice) {
+    std::string text;
+    for (size_t i = 0; i < choices.size(); ++i)
+      text += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+    return text;
+  }
+  const auto bound = [](double v) { return std::isinf(v) ? std::string("inf") : shortestNumber(v); };
   const std::string range = "[" + bound(min) + ", " + bound(max) + "]";
   return offAtZero ? "0 (off) or " + range : range;
 }
 
 std::string Knob::optionText() const {
-  // jsonNumber's text is the shortest that reads back as the same double,
-  // which is what CLI11's number parser does with it; counts are whole;
-  // infinity as "inf", which the options that take it read.
-  return std::isinf(get()) ? "inf" : jsonNumber(get());
+  // The shortest text that reads back as the same double, which is what the
+  // option's parser does with it; counts are whole; infinity as "inf".
+  if (kind == KnobKind::Choice) return words();
+  return std::isinf(get()) ? "inf" : shortestNumber(get());
+}
+
+std::string Knob::headerText() const {
+  const double v = get();
+  if (kind == KnobKind::Choice) {
+    const auto i = static_cast<size_t>(v);
+    return choices.at(i) + (i < choiceNames.size() ? " (" + choiceNames[i] + ")" : "");
+  }
+  // ODE's name for it, which --mu also reads.
+  if (std::isinf(v)) return "dInfinity";
+  return formatValue(v);
+}
+
+double Knob::metricValue() const {
+  const double v = get();
+  return std::isinf(v) ? -1.0 : v;
 }
 
 std::string Knob::effectText() const {
@@ -150,18 +223,24 @@ std::string Knob::effectText() const {
   return {};
 }
 
-std::string jsonString(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+double Knob::parse(const std::string& text) const {
+  constexpr double NOT_A_VALUE = std::numeric_limits<double>::quiet_NaN();
+  if (kind == KnobKind::Choice) {
+    const auto at = std::find(choices.begin(), choices.end(), text);
+    return at == choices.end() ? NOT_A_VALUE : static_cast<double>(at - choices.begin());
   }
-  return out + '"';
+  if (text == "inf" || text == "infinity" || text == "dInfinity") return std::isinf(max) ? INF : NOT_A_VALUE;
+  // strtod takes "0x10" as 16, "nan" and "inf" as themselves: a person
+  // typing a setting means a decimal number.
+  if (text.empty() || text.find_first_of("xXnNiI") != std::string::npos) return NOT_A_VALUE;
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  // Only the names above mean infinity, not a number too large for a double ("1e400").
+  if (end != text.c_str() + text.size() || !std::isfinite(number)) return NOT_A_VALUE;
+  return number;
 }
 
-std::string jsonNumber(double value) {
-  if (!std::isfinite(value)) return std::isnan(value) ? "null" : value > 0 ? "\"inf\"" : "\"-inf\"";  // JSON has no infinity
-  // The shortest text that reads back as the same double.
+std::string shortestNumber(double value) {
   for (int digits = 6; digits <= 17; ++digits) {
     char text[40];
     std::snprintf(text, sizeof text, "%.*g", digits, value);
@@ -170,13 +249,17 @@ std::string jsonNumber(double value) {
   return formatValue(value, 17);
 }
 
-std::string Knob::json() const {
-  return "{\"name\": " + jsonString(name) + ", \"option\": " + jsonString(option) +
-         ", \"key\": " + jsonString(keyName) + ", \"min\": " + jsonNumber(min) + ", \"max\": " + jsonNumber(max) +
-         ", \"unit\": " + jsonString(unit) + ", \"default\": " + jsonNumber(get()) +
-         ", \"kind\": " + jsonString(kind == KnobKind::Integer ? "integer" : kind == KnobKind::Interval ? "interval" : "real") +
-         ", \"off_at_zero\": " + (offAtZero ? "true" : "false") + ", \"only_with\": " + jsonString(companion) +
-         ", \"scene_default\": " + (sceneDefault ? "true" : "false") + "}";
+double nextOnLadder(const std::vector<double>& ladder, double current, int direction) {
+  // Not relative at infinity (mu's dInfinity): inf - inf would match no rung.
+  const double tolerance = std::isfinite(current) ? 1e-9 * std::fabs(current) : 0.0;
+  if (direction > 0) {
+    for (double rung : ladder)
+      if (rung > current + tolerance) return rung;
+    return std::max(current, ladder.back());
+  }
+  for (auto it = ladder.rbegin(); it != ladder.rend(); ++it)
+    if (*it < current - tolerance) return *it;
+  return std::min(current, ladder.front());
 }
 
 }  // namespace odelab

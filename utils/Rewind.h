@@ -16,7 +16,7 @@ namespace odelab {
 struct RunStart {
   WorldSettings settings;
   SpaceKind space = SpaceKind::Simple;
-  ParameterStepper stepper;
+  F2Increment increment;
 };
 
 // Rewind by replay: the run's start, its timeline of recorded inputs and

@@ -8,39 +8,38 @@
 
 #include "ContactChoices.h"
 #include "Knob.h"
-#include "SceneParameters.h"
 #include "WorldSettings.h"
 
 namespace odelab {
 
-// What a run is tuned by: the world settings of the table (SettingsTable.h)
-// with the F2 increment that steps them, the scene's declared knobs with
-// their panel rows, and the contact choices of a scene with contacts. Keys,
-// panel and command line change them through AbstractWindow, which records
-// each change; the front end and the runner read them through
-// AbstractWindow::tuning().
+// What a run is tuned by, as one list of knobs (utils/Knob.h): the world
+// settings (utils/WorldKnobs.cpp) with F2's increment, the contact choices
+// of a scene with contacts, and the scene's own. Keys, panel and command
+// line change them through AbstractWindow, which records each change; the
+// front end and the runner read them through AbstractWindow::tuning().
 class SceneSettings {
  public:
   WorldSettings& settings() { return settings_; }
   const WorldSettings& settings() const { return settings_; }
-  // Every declared knob; the runner adds their options (utils/CommandLine.h).
+  // Every knob, world settings first; the runner adds their options (utils/CommandLine.h).
   std::deque<Knob>& knobs() { return knobs_; }
   const std::deque<Knob>& knobs() const { return knobs_; }
-  const SceneParameters& parameters() const { return parameters_; }  // the panel's knob rows
-  double f2Increment() const { return stepper_.increment(); }
+  double f2Increment() const { return increment_.value(); }
   double contactMu() const { return contact_.mu; }
-  int maxContacts() const { return contact_.contactLimit(); }
-  // " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations, SOR w 1.3)"
+  int maxContacts() const { return contact_.maxContacts; }
+  // " (step 0.001, ERP 0.2, CFM 1e-06, solver quick, 20 iterations, SOR w 1.3)":
+  // every knob with message words, in report order.
   std::string settingsInForce() const;
+  // The world settings in report order (step first), then every other knob
+  // as declared: the order of output headers.
+  std::vector<const Knob*> inReportOrder() const;
 
  protected:
   explicit SceneSettings(WorldSettings defaults) : settings_(defaults) {}
 
   WorldSettings settings_;
-  ParameterStepper stepper_;
+  F2Increment increment_;
   std::deque<Knob> knobs_;  // a deque keeps each knob in place as more are declared
-  SceneParameters parameters_;
-  std::vector<Knob*> panelKnobs_;  // parameters_'s rows, in order
   ContactChoices contact_{dInfinity};
   bool contactChoicesUsed_ = false;
 };

@@ -108,17 +108,16 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   RunOptions options;
   CLI::App app{std::string(scene.title()) + "\n" + description};
   app.get_formatter()->column_width(34);
-  cli::addCommonOptions(app, options, scene.tuning().settings());
+  cli::addCommonOptions(app, options);
   // The scene's own options, which the copied command line repeats as given.
   const size_t sharedOptions = app.get_options().size();
   scene.addOptions(app);
   const std::vector<CLI::Option*> added = app.get_options();
   const std::vector<const CLI::Option*> sceneOptions(added.begin() + static_cast<long>(sharedOptions), added.end());
   cli::addKnobOptions(app, scene.tuning().knobs());
-  scene.addContactOptions(app);
   bool listSettings = false;
   app.add_flag("--list-settings", listSettings,
-               "print every setting and scene knob as JSON (name, option, key, min, max, unit, default) and exit");
+               "print every knob (world settings, contact choices, the scene's) as JSON (name, option, key, range, default, unit, group, header, metric) and exit");
   bool printCommandLine = false;
   app.add_flag("--print-command-line", printCommandLine,
                "at the run's end print \"command line: \" and the command line that starts it again with every "
@@ -144,7 +143,7 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   scene.session().setGivenSceneOptions(givenOptions(sceneOptions));
 
   if (listSettings) {
-    std::cout << cli::settingsJson(scene.tuning().settings(), scene.tuning().knobs());
+    std::cout << cli::settingsJson(scene.tuning().knobs());
     return exit_code::OK;
   }
   installStopSignalHandlers();

@@ -11,9 +11,8 @@ namespace odelab {
 // An input that changes the simulation, stamped with the step it came before.
 struct TimelineEvent {
   // Key: a recorded key press. Drag / Release: the mouse spring.
-  // Setting: a world setting set from the panel (index: SettingId).
-  // Parameter: a scene parameter set from the panel (index into the scene's).
-  enum class Kind { Key, Drag, Release, Setting, Parameter };
+  // Knob: a knob set from the panel (index: its place in the scene's knobs).
+  enum class Kind { Key, Drag, Release, Knob };
   long long step = 0;
   Kind kind = Kind::Key;
   SDL_Keycode key = 0;
@@ -21,8 +20,8 @@ struct TimelineEvent {
   int objectIndex = -1;          // Drag: index into the scene's objects
   double target[3] = {0, 0, 0};  // Drag: where the spring pulls (world)
   double grab[3] = {0, 0, 0};    // Drag: the grabbed point in the body's frame
-  int index = -1;                // Setting, Parameter: which one
-  double value = 0.0;            // Setting, Parameter: the new value
+  int index = -1;                // Knob: which one
+  double value = 0.0;            // Knob: the new value
 };
 
 // The inputs of one run since its last reset, in order, and snapshot marks:

@@ -14,8 +14,8 @@ enum class Solver { QuickStep, WorldStep };
 
 const char* solverName(Solver solver);  // "quick" or "step", as on the command line
 
-// Valid range of a tunable parameter. The same ranges validate command-line
-// values and clamp F-key changes, so both paths agree on what is legal.
+// The range of a world setting (its knob's, utils/WorldKnobs.cpp), named as
+// --list-settings names it.
 struct ParameterRange {
   const char* name;
   double min;
@@ -30,10 +30,11 @@ extern const ParameterRange CFM;
 extern const ParameterRange STEP;
 extern const ParameterRange ITERATIONS;
 extern const ParameterRange SOR;
+extern const ParameterRange GRAVITY;
 }  // namespace ranges
 
 // Plain data: everything the world step depends on. Scenes override the
-// defaults they need; the command line and the F-keys edit it.
+// defaults they need; their knobs (utils/WorldKnobs.cpp) edit it.
 struct WorldSettings {
   double erp = 0.2;
   double cfm = 1e-6;
@@ -46,28 +47,16 @@ struct WorldSettings {
   void applyTo(dWorldID world) const;
 };
 
-// The F2-F8 behaviour: F2 picks the increment used by F3/F4; F6-F8 walk
-// through preset ladders. Every change is clamped to its ParameterRange.
-class ParameterStepper {
+// F2's increment, the step F3 and F4 move ERP and CFM by: 1e-6 ... 0.1,
+// cycled. A run's start keeps it, so a replay steps as the run did.
+class F2Increment {
  public:
-  ParameterStepper();
-
-  void cycleIncrement(int direction);  // F2 / Shift+F2
-  double increment() const { return increments_[incrementIndex_]; }
-
-  void stepErp(WorldSettings& settings, int direction) const;   // F3
-  void stepCfm(WorldSettings& settings, int direction) const;   // F4
-  static void stepIterations(WorldSettings& settings, int direction);  // F6
-  static void stepSor(WorldSettings& settings, int direction);         // F7
-  static void stepStepSize(WorldSettings& settings, int direction);    // F8
-
-  // The next value after `current` in an ascending ladder (direction +1) or
-  // the previous one (-1); stays at the ends.
-  static double nextOnLadder(const std::vector<double>& ladder, double current, int direction);
+  void cycle(int direction);  // F2 / Shift+F2
+  double value() const { return INCREMENTS[index_]; }
 
  private:
-  std::vector<double> increments_;
-  size_t incrementIndex_;
+  static constexpr double INCREMENTS[] = {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1};
+  int index_ = 4;
 };
 
 }  // namespace odelab

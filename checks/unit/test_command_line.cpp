@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <deque>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "CommandLine.h"
+#include "WorldKnobs.h"
 
 namespace {
 
@@ -23,7 +25,12 @@ struct Parsed {
 Parsed parse(std::vector<std::string> args) {
   Parsed result;
   CLI::App app;
-  odelab::cli::addCommonOptions(app, result.options, result.settings);
+  odelab::cli::addCommonOptions(app, result.options);
+  // The world settings' options are their knobs' (utils/WorldKnobs.cpp).
+  odelab::F2Increment increment;
+  std::deque<odelab::Knob> knobs;
+  for (odelab::Knob& knob : odelab::worldKnobs(result.settings, increment)) knobs.push_back(std::move(knob));
+  odelab::cli::addKnobOptions(app, knobs);
   odelab::cli::rejectEmptyValues(app);
   args.insert(args.begin(), "test");
   std::vector<const char*> argv;

@@ -9,6 +9,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
+#include <iterator>
+#include <set>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -145,6 +148,38 @@ TEST_P(SceneInProcess, AWindowsStepsAreTheHeadlessRunsSteps) {
   std::unique_ptr<AbstractWindow> scene = made(entry, second.path);
   scene->runFor(static_cast<double>(STEPS) * stepped.step);
   EXPECT_EQ(scene->run().stateHash(), stepped.hash);
+  scene->shutdown();
+}
+
+// Every knob, declared once, reaches every report: its option, the output
+// header (settingsDescription(), and the header of every output file the
+// scene writes), the metric knob_<name>, each under a name of its own.
+TEST_P(SceneInProcess, EveryKnobReachesEveryReport) {
+  const SceneEntry& entry = entryNamed(GetParam());
+  ScratchFolder folder(GetParam());
+  std::unique_ptr<AbstractWindow> scene = made(entry, folder.path);
+  for (int i = 0; i < 10; ++i) scene->stepOnce();
+  const Metrics metrics = scene->metrics();
+  const auto description = scene->settingsDescription();
+  std::set<std::string> names, headers;
+  for (const auto& [key, text] : description) EXPECT_TRUE(headers.insert(key).second) << "header key twice: " << key;
+  std::vector<std::string> files;
+  for (const auto& file : fs::directory_iterator(folder.path)) {
+    std::ifstream in(file.path());
+    files.push_back(std::string(std::istreambuf_iterator<char>(in), {}));
+  }
+  for (const Knob& knob : scene->tuning().knobs()) {
+    EXPECT_TRUE(names.insert(knob.name).second) << "knob name twice: " << knob.name;
+    EXPECT_EQ(knob.option.rfind("--", 0), 0u) << knob.name << ": no option";
+    ASSERT_TRUE(metrics.has("knob_" + knob.name)) << knob.name;
+    EXPECT_EQ(metrics.get("knob_" + knob.name), knob.metricValue()) << knob.name;
+    const std::pair<std::string, std::string> line{knob.headerKey(), knob.headerText()};
+    EXPECT_NE(std::find(description.begin(), description.end(), line), description.end()) << knob.name;
+    for (const std::string& text : files)
+      if (text.rfind("# ", 0) == 0)
+        EXPECT_NE(text.find("# " + line.first + ": " + line.second + "\n"), std::string::npos)
+            << knob.name << " not in an output file's header:\n" << text.substr(0, 2000);
+  }
   scene->shutdown();
 }
 

@@ -229,7 +229,6 @@ class Pendulum : public PendulumScene {
     header.emplace_back("composite_mass_kg", formatValue(p.mass, 10));
     header.emplace_back("inertia_about_axis_kg_m2", formatValue(p.inertiaAboutAxis, 10));
     header.emplace_back("period_exact_s", formatValue(exactPeriod_, 10));
-    header.emplace_back("sample_interval_s", formatValue(sampleInterval_));
     header.emplace_back("energy", std::string("potential m g y of the centre of mass (y from the ground); kinetic ") +
                                       (withoutRotation_ ? "0.5 m v^2 only (--no-rotational-energy)"
                                                         : "0.5 m v^2 + 0.5 w^T I w") +

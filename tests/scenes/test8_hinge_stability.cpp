@@ -164,7 +164,6 @@ class HingeStability : public PendulumScene {
                         "anchor [0, " + formatValue(ANCHOR_HEIGHT) + ", 0], axis [0, 0, 1], to the static world");
     header.emplace_back("start_deflection_rad", formatValue(START_DEFLECTION));
     header.emplace_back("start_length_m", formatValue(startLength_, 12));
-    header.emplace_back("sample_interval_s", formatValue(sampleInterval_));
     header.emplace_back("relative_elongation", "(l - l0) / l0, l = distance from the hinge anchor to the composite "
                                                "centre of mass, l0 = l before the run");
     header.emplace_back("deflection_rad", "angle of the centre of mass from straight down, positive towards +x");

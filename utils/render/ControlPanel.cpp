@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "../ContactChoices.h"
 #include "../CopyLine.h"
 #include "../FormatValue.h"
 #include "../SceneKeys.h"
@@ -331,58 +330,59 @@ void ControlPanel::viewToggles(AbstractWindow& scene) {
   if (flowButton("smaller")) scene.handleKey(SDLK_F2, true);
 }
 
-void ControlPanel::settings(AbstractWindow& scene) {
-  if (!ImGui::CollapsingHeader("World", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  for (const SettingSpec& spec : settingsTable()) {
-    double value = settingValue(scene.tuning().settings(), spec.id);
-    if (spec.id == SettingId::Solver) {
-      ImGui::TextUnformatted("solver");
-      int choice = value < 0.5 ? 0 : 1;
-      const int before = choice;
-      ImGui::RadioButton("QuickStep", &choice, 0);
-      ImGui::SameLine();
-      ImGui::RadioButton("dWorldStep", &choice, 1);
-      if (choice != before) scene.changeSetting(spec.id, choice);
-      continue;
-    }
-    // A logarithmic slider cannot reach 0; CFM 0 is typed (or F4 down), and
-    // the field takes the range the command line takes.
-    const double sliderMin = spec.logScale && spec.range->min <= 0 ? 1e-10 : spec.range->min;
-    std::string label = std::string(spec.label) + (*spec.unit ? std::string(" (") + spec.unit + ")" : "") + "   " +
-                        spec.keyName;
-    if (edit(label, value, sliderMin, spec.range->min, spec.range->max, spec.logScale, spec.integer))
-      scene.changeSetting(spec.id, value);
+void ControlPanel::knobs(AbstractWindow& scene) {
+  // Every knob, under its group's header: World open, the contact choices
+  // and the scene's values closed (open, a scene's dozen values would push
+  // the timeline and the scene's keys below the window's edge). A closed
+  // header counts its values, so it still says what it holds.
+  const std::deque<Knob>& all = scene.tuning().knobs();
+  const struct {
+    KnobGroup group;
+    const char* name;
+    bool open;
+  } groups[] = {{KnobGroup::World, "World", true}, {KnobGroup::Contacts, "Contacts", false}, {KnobGroup::Scene, "Scene", false}};
+  for (const auto& group : groups) {
+    std::vector<int> rows;
+    for (int i = 0; i < static_cast<int>(all.size()); ++i)
+      if (all[i].group == group.group) rows.push_back(i);
+    if (rows.empty()) continue;
+    const std::string header = group.open ? std::string(group.name)
+                                          : std::string(group.name) + " (" + std::to_string(rows.size()) +
+                                                (rows.size() == 1 ? " value)" : " values)") + "###" + group.name;
+    if (!ImGui::CollapsingHeader(header.c_str(), group.open ? ImGuiTreeNodeFlags_DefaultOpen : 0)) continue;
+    for (const int i : rows) knobRow(scene, i, all[i]);
   }
 }
 
-void ControlPanel::parameters(AbstractWindow& scene) {
-  // Every knob the scene declared, the contact choices first, each group
-  // under a header that starts closed: open, a scene's dozen values would
-  // push the timeline and the scene's keys below the window's edge. The
-  // header counts the values, so a closed group still says what it holds.
-  const auto& all = scene.tuning().parameters().all();
-  for (const bool contacts : {true, false}) {
-    std::vector<int> group;
-    for (int i = 0; i < static_cast<int>(all.size()); ++i)
-      if (ContactChoices::optionOfKnob(all[i].knob->name).empty() != contacts) group.push_back(i);
-    if (group.empty()) continue;
-    const std::string header = std::string(contacts ? "Contacts" : "Scene") + " (" + std::to_string(group.size()) +
-                               (group.size() == 1 ? " value)" : " values)") + (contacts ? "###contacts" : "###scene");
-    if (!ImGui::CollapsingHeader(header.c_str())) continue;
-    for (const int i : group) {
-      const SceneParameter& p = all[i];
-      const Knob& knob = *p.knob;
-      double value = knob.get();
-      const std::string effect = knob.effectText();
-      const std::string label = knob.label + (knob.unit.empty() ? "" : " (" + knob.unit + ")") +
-                                (knob.key != SDLK_UNKNOWN ? "   " + knob.keyName : "") +
-                                (effect.empty() ? "" : "; " + effect);
-      if (edit(label, value, p.min, p.min, p.max, knob.logScale, knob.kind == KnobKind::Integer))
-        scene.changeParameter(i, value);
-      if (ImGui::IsItemHovered() && !knob.help.empty())
-        ImGui::SetTooltip("%s %s\n%s", knob.option.c_str(), knob.rangeText().c_str(), knob.help.c_str());
+void ControlPanel::knobRow(AbstractWindow& scene, int index, const Knob& knob) {
+  if (knob.kind == KnobKind::Choice) {
+    ImGui::TextUnformatted((knob.label + (knob.keyName.empty() ? "" : "   " + knob.keyName)).c_str());
+    int choice = static_cast<int>(knob.get());
+    const int before = choice;
+    // The option's words, as the HUD and the command line say them; what
+    // each calls in ODE in its tooltip.
+    for (int c = 0; c < static_cast<int>(knob.choices.size()); ++c) {
+      if (c > 0) ImGui::SameLine();
+      ImGui::RadioButton(knob.choices[c].c_str(), &choice, c);
+      if (ImGui::IsItemHovered() && c < static_cast<int>(knob.choiceNames.size()))
+        ImGui::SetTooltip("%s %s: %s", knob.option.c_str(), knob.choices[c].c_str(), knob.choiceNames[c].c_str());
     }
+    if (choice != before) scene.changeKnob(index, choice);
+    return;
   }
+  double value = knob.get();
+  const std::string effect = knob.effectText();
+  const std::string label = knob.label + (knob.unit.empty() ? "" : " (" + knob.unit + ")") +
+                            (knob.key != SDLK_UNKNOWN ? "   " + knob.keyName : "") +
+                            (knob.lowerKey != SDLK_UNKNOWN ? " / " + knob.lowerKeyName : "") +
+                            (effect.empty() ? "" : "; " + effect);
+  // A logarithmic slider cannot reach 0; CFM 0 is typed (or F4 down), and
+  // the field takes the range the command line takes.
+  const double sliderMin = knob.logScale && knob.panelMin() <= 0 ? 1e-10 : knob.panelMin();
+  if (edit(label, value, sliderMin, knob.panelMin(), knob.panelMax(), knob.logScale, knob.kind == KnobKind::Integer))
+    scene.changeKnob(index, value);
+  if (ImGui::IsItemHovered() && !knob.help.empty())
+    ImGui::SetTooltip("%s %s\n%s", knob.option.c_str(), knob.rangeText().c_str(), knob.help.c_str());
 }
 
 void ControlPanel::feedKeys() {
@@ -446,8 +446,7 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
     sceneList(scene);
     timeButtons(scene);
     ImGui::Separator();
-    settings(scene);
-    parameters(scene);
+    knobs(scene);
     copyCommandLine(scene);
     ImGui::Separator();
     timelineSlider(scene);

@@ -14,7 +14,7 @@ namespace odelab {
 // The on-screen control panel (Dear ImGui, Tab shows and hides it): the
 // world settings of the settings table, the scene's own parameters, and
 // buttons for pause, step, time scale, rewind and reset. Every change goes
-// through the scene's changeSetting / changeParameter / handleKey, the same
+// through the scene's changeKnob / handleKey, the same
 // path as the F-keys: clamped, recorded for rewind, logged, and written to
 // the output files.
 class ControlPanel {
@@ -48,8 +48,8 @@ class ControlPanel {
   void copyCommandLine(const AbstractWindow& scene);
   void sceneKeys(AbstractWindow& scene);    // the scene's own keys as buttons
   void viewToggles(AbstractWindow& scene);  // C, J, X, V, L, H and the F2 increment
-  void settings(AbstractWindow& scene);
-  void parameters(AbstractWindow& scene);
+  void knobs(AbstractWindow& scene);
+  void knobRow(AbstractWindow& scene, int index, const Knob& knob);
   // A value edited by slider or typing, committed when the edit ends, so a
   // drag is one change on the timeline, not one per frame: a slider when a
   // drag (not a click) is released, a field on Enter, Tab or a click

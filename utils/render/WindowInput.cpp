@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "../SettingsTable.h"
 
 namespace odelab {
 
@@ -19,12 +18,10 @@ const int LEAST_DRAG_PIXELS = 4;
 const char* const QUIT_PROMPT =
     "settings changed since the start: Esc again quits; the panel's \"Copy as command line\" keeps them";
 
-// What a person tunes in a session: every world setting and the scene's
-// panel values.
+// What a person tunes in a session: every knob.
 std::vector<double> tuningOf(const AbstractWindow& scene) {
   std::vector<double> values;
-  for (const SettingSpec& spec : settingsTable()) values.push_back(settingValue(scene.tuning().settings(), spec.id));
-  for (const SceneParameter& p : scene.tuning().parameters().all()) values.push_back(p.knob->get());
+  for (const Knob& knob : scene.tuning().knobs()) values.push_back(knob.get());
   return values;
 }
 
