@@ -37,9 +37,9 @@ bool runLengthReached(double seconds, double simulatedTime, double step) {
 
 }  // namespace
 
-AbstractWindow::AbstractWindow(WorldSettings defaults) : SceneSettings(defaults) {
+AbstractWindow::AbstractWindow(WorldSettings defaults) : tuning_(defaults) {
   bindSharedKeys();
-  for (Knob& knob : worldKnobs(settings_, increment_)) declare(std::move(knob));
+  for (Knob& knob : worldKnobs(tuning_.settings_, tuning_.increment_)) declare(std::move(knob));
   bindTimeAndViewKeys();
 }
 
@@ -49,112 +49,63 @@ void AbstractWindow::addOptions(CLI::App& app) { (void)app; }
 
 void AbstractWindow::initialize(const RunOptions& options) {
   options_ = options;
-  time_.setMaximumFrameTime(options.maxFrameTime);
-  hudMode_ = options.hud;
-  runLog_.setTarget(joinPath(options.outDir, programName() + "_run_log.txt"), title_);
+  session_.time_.setMaximumFrameTime(options.maxFrameTime);
+  session_.hudMode_ = options.hud;
+  session_.runLog_.setTarget(joinPath(options.outDir, programName() + "_run_log.txt"), title_);
   initialCamera(camera_);
   createWorld();
   beginRun();
 }
 
 void AbstractWindow::reset() {
-  rewind_.newEpoch();
-  failure_.clear();
-  destroyWorld();
+  session_.rewind_.newEpoch();
+  session_.failure_.clear();
+  run_.destroy();
   createWorld();
   beginRun();
 }
 
 // A new run begins: what the timeline replays starts from here.
-void AbstractWindow::beginRun() { rewind_.begin({settings_, spaceKind_, increment_}); }
+void AbstractWindow::beginRun() { session_.rewind_.begin({tuning_.settings_, run_.spaceKind_, tuning_.increment_}); }
 
 void AbstractWindow::replayTo(long long step) {
-  rewind_.setReplaying(true);
-  const RunStart& start = rewind_.restore();
-  settings_ = start.settings;
-  spaceKind_ = start.space;
-  increment_ = start.increment;
-  destroyWorld();
+  session_.rewind_.setReplaying(true);
+  const RunStart& start = session_.rewind_.restore();
+  tuning_.settings_ = start.settings;
+  run_.spaceKind_ = start.space;
+  tuning_.increment_ = start.increment;
+  run_.destroy();
   createWorld();
-  rewind_.timeline().rewindCursor();
-  while (steps_ < step && stepOnce()) {
+  session_.rewind_.timeline().rewindCursor();
+  while (run_.steps_ < step && stepOnce()) {
   }
-  rewind_.setReplaying(false);
-  time_.setPaused(true);
+  session_.rewind_.setReplaying(false);
+  session_.time_.setPaused(true);
   const std::string caveat = rewindCaveat();
   if (!caveat.empty()) notify("warning: " + caveat);
 }
 
 void AbstractWindow::shutdown() {
-  destroyWorld();
-  freeThreading();
+  run_.destroy();
+  run_.freeThreading();
 }
 
 void AbstractWindow::createWorld() {
-  // Everything random in a run derives from --seed, so a run is reproducible.
-  random_.seed(options_.seed);
-  dRandSetSeed(options_.seed);
-  world_ = dWorldCreate();
-  // The world steps with an implementation of its own rather than ODE's
-  // default, which all worlds share, so that one an ODE error has left in
-  // a bad state can be dropped with its world (advanceFrame). A scene may
-  // replace it in configureWorld() (test5 --threads).
-  if (!stepThreading_) stepThreading_ = dThreadingAllocateSelfThreadedImplementation();
-  dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(stepThreading_), stepThreading_);
-  contactGroup_ = dJointGroupCreate(0);
-  space_ = nullptr;
-  setSpaceKind(spaceKind_);
-  settings_.applyTo(world_);
-  simulatedTime_ = 0.0;
-  steps_ = 0;
-  contactsLastStep_ = 0;
-  wallSeconds_ = 0.0;
-  blowUpReason_.clear();
-  time_.resetClock();
-  drag_.release();
-  contactMarkers_.clear();
-  chart_.clear();
-  chart_.label = plotLabel();
-  nextChartTime_ = 0.0;
-  rewind_.worldRebuilt();
+  run_.create(options_.seed);
+  setSpaceKind(run_.spaceKind_);
+  tuning_.settings_.applyTo(run_.world_);
+  session_.time_.resetClock();
+  session_.drag_.release();
+  session_.contactMarkers_.clear();
+  session_.chart_.clear();
+  session_.chart_.label = plotLabel();
+  session_.nextChartTime_ = 0.0;
+  session_.rewind_.worldRebuilt();
   configureWorld();
   buildScene();
 }
 
-void AbstractWindow::setSpaceKind(SpaceKind kind) {
-  dSpaceID next = nullptr;
-  switch (kind) {
-    case SpaceKind::Simple: next = dSimpleSpaceCreate(nullptr); break;
-    case SpaceKind::Hash: next = dHashSpaceCreate(nullptr); break;
-    case SpaceKind::SweepAndPrune: next = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XZY); break;
-    case SpaceKind::QuadTree: {
-      // Centred on the scene, covering its bounds; y is up so the tree splits x and z.
-      const SceneBounds b = bounds();
-      const dVector3 centre{b.centre[0], b.centre[1], b.centre[2], 0};
-      const dVector3 extents{4 * b.radius, 4 * b.radius, 4 * b.radius, 0};
-      next = dQuadTreeSpaceCreate(nullptr, centre, extents, 6);
-      break;
-    }
-  }
-  // Space cleanup is off: geoms belong to their objects, not to the space.
-  dSpaceSetCleanup(next, 0);
-  if (space_) {
-    // Every geom in the space is an object's (a scene adds geoms only
-    // through objects). They are found through the objects, not the space:
-    // ODE's quadtree space cannot list its geoms (dSpaceGetGeom fails with
-    // "not yet implemented"), which input fuzzing found.
-    for (const auto& object : objects_) {
-      const dGeomID geom = object->getGeom();
-      if (!geom || dGeomGetSpace(geom) != space_) continue;
-      dSpaceRemove(space_, geom);
-      dSpaceAdd(next, geom);
-    }
-    if (dSpaceGetNumGeoms(space_) != 0) throw std::logic_error("setSpaceKind: the space holds a geom of no object");
-    dSpaceDestroy(space_);
-  }
-  space_ = next;
-  spaceKind_ = kind;
-}
+void AbstractWindow::setSpaceKind(SpaceKind kind) { run_.setSpaceKind(kind, bounds()); }
 
 void AbstractWindow::nearCallback(void* data, dGeomID o1, dGeomID o2) {
   auto* self = static_cast<AbstractWindow*>(data);
@@ -173,14 +124,14 @@ void AbstractWindow::nearCallback(void* data, dGeomID o1, dGeomID o2) {
   self->setContactSurface(o1, o2, surface);
   for (int i = 0; i < count; ++i) {
     contact[i].surface = surface;
-    dJointID joint = dJointCreateContact(self->world_, self->contactGroup_, &contact[i]);
+    dJointID joint = dJointCreateContact(self->run_.world_, self->run_.contactGroup_, &contact[i]);
     dJointAttach(joint, b1, b2);
   }
-  self->contactsThisStep_ += count;
-  if (self->viewFlags_.contacts)
-    for (int i = 0; i < count && self->contactMarkers_.size() < MAX_CONTACT_MARKERS; ++i) {
+  self->run_.contactsThisStep_ += count;
+  if (self->session_.viewFlags_.contacts)
+    for (int i = 0; i < count && self->session_.contactMarkers_.size() < MAX_CONTACT_MARKERS; ++i) {
       const dContactGeom& g = contact[i].geom;
-      self->contactMarkers_.push_back({{float(g.pos[0]), float(g.pos[1]), float(g.pos[2])},
+      self->session_.contactMarkers_.push_back({{float(g.pos[0]), float(g.pos[1]), float(g.pos[2])},
                                        {float(g.normal[0]), float(g.normal[1]), float(g.normal[2])},
                                        float(g.depth)});
     }
@@ -192,84 +143,84 @@ void AbstractWindow::setContactSurface(dGeomID, dGeomID, dSurfaceParameters& sur
 }
 
 void AbstractWindow::useContactChoices(double defaultMu) {
-  contactChoicesUsed_ = true;
-  contact_.mu = defaultMu;
-  for (Knob& knob : contact_.knobs()) declare(std::move(knob));
+  tuning_.contactChoicesUsed_ = true;
+  tuning_.contact_.mu = defaultMu;
+  for (Knob& knob : tuning_.contact_.knobs()) declare(std::move(knob));
 }
 
 bool AbstractWindow::stepOnce() {
   // The clock only for scenes that measure a step's wall time (test5): two
   // clock reads a step are a tenth of a one-ball scene's framework cost.
-  const auto start = timeSteps_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+  const auto start = run_.timeSteps_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
   // Inputs, the drag, contact markers, rewind marks and the live plot: none
   // can come or be seen inside runFor(), which skips their cost.
-  const bool attended = !unattended_;
+  const bool attended = !run_.unattended_;
   if (attended) {
-    rewind_.timeline().applyDue(steps_, [this](const TimelineEvent& event) { applyEvent(event); });
-    drag_.pull(objects_, settings_.gravity);
-    if (viewFlags_.contacts) contactMarkers_.clear();
+    session_.rewind_.timeline().applyDue(run_.steps_, [this](const TimelineEvent& event) { applyEvent(event); });
+    session_.drag_.pull(run_.objects_, tuning_.settings_.gravity);
+    if (session_.viewFlags_.contacts) session_.contactMarkers_.clear();
   }
-  contactsThisStep_ = 0;
+  run_.contactsThisStep_ = 0;
   beforeStep();
   try {
     // Collision is timed only for the window's frame profile: a headless run
     // pays no clock reads.
-    const auto collideStart = profileCollision_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    dSpaceCollide(space_, this, &AbstractWindow::nearCallback);
-    if (profileCollision_)
-      collideWallSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - collideStart).count();
-    if (settings_.solver == Solver::QuickStep)
-      dWorldQuickStep(world_, settings_.step);
+    const auto collideStart = run_.profileCollision_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+    dSpaceCollide(run_.space_, this, &AbstractWindow::nearCallback);
+    if (run_.profileCollision_)
+      run_.collideWallSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - collideStart).count();
+    if (tuning_.settings_.solver == Solver::QuickStep)
+      dWorldQuickStep(run_.world_, tuning_.settings_.step);
     else
-      dWorldStep(world_, settings_.step);
+      dWorldStep(run_.world_, tuning_.settings_.step);
   } catch (const OdeError& error) {
-    // ODE's own checks often see a blow-up before stateProblem() does (a NaN
+    // ODE's own checks often see a blow-up before run_.stateProblem() does (a NaN
     // quaternion fails dxNormalize4): report it with the time and settings.
     throw OdeError(std::string(error.what()) + momentAndSettings());
   }
-  dJointGroupEmpty(contactGroup_);
-  contactsLastStep_ = contactsThisStep_;
-  simulatedTime_ += settings_.step;
-  ++steps_;
-  if (timeSteps_) lastStepWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  dJointGroupEmpty(run_.contactGroup_);
+  run_.contactsLastStep_ = run_.contactsThisStep_;
+  run_.simulatedTime_ += tuning_.settings_.step;
+  ++run_.steps_;
+  if (run_.timeSteps_) run_.lastStepWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   afterStep();
   if (attended) {
-    rewind_.afterStep(simulatedTime_, steps_);
-    if (simulatedTime_ >= nextChartTime_) {
+    session_.rewind_.afterStep(run_.simulatedTime_, run_.steps_);
+    if (run_.simulatedTime_ >= session_.nextChartTime_) {
       double value;
-      if (plotValue(value)) chart_.add(simulatedTime_, value);
-      nextChartTime_ += CHART_INTERVAL;
+      if (plotValue(value)) session_.chart_.add(run_.simulatedTime_, value);
+      session_.nextChartTime_ += CHART_INTERVAL;
     }
   }
   // Every step: a few multiplications per body; the message only when one looks wrong.
-  if (!stateSuspicious()) return true;
-  const std::string problem = stateProblem();
+  if (!run_.stateSuspicious()) return true;
+  const std::string problem = run_.stateProblem();
   if (problem.empty()) return true;
-  blowUpReason_ = "simulation blew up: " + problem + momentAndSettings();
+  run_.blowUpReason_ = "simulation blew up: " + problem + momentAndSettings();
   return false;
 }
 
 std::string AbstractWindow::momentAndSettings() const {
-  return " at t=" + formatValue(simulatedTime_) + " s" + settingsInForce();
+  return " at t=" + formatValue(run_.simulatedTime_) + " s" + tuning_.settingsInForce();
 }
 
 void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) {
-  profileCollision_ = true;  // only a window advances by frames
-  wallSeconds_ += elapsedSeconds;
-  const int stepsNow = time_.stepsFor(elapsedSeconds, settings_.step);
+  run_.profileCollision_ = true;  // only a window advances by frames
+  run_.wallSeconds_ += elapsedSeconds;
+  const int stepsNow = session_.time_.stepsFor(elapsedSeconds, tuning_.settings_.step);
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < stepsNow; ++i) {
     // A run given --seconds ends on the step a headless run ends on, not
     // wherever the frame that crossed it ends: the last picture, the output
     // files and the metrics are those of that moment on any machine.
-    if (runLengthReached(options_.seconds, simulatedTime_, settings_.step)) break;
+    if (runLengthReached(options_.seconds, run_.simulatedTime_, tuning_.settings_.step)) break;
     if (i > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > steppingBudget) {
-      time_.dropSteps(stepsNow - i);
+      session_.time_.dropSteps(stepsNow - i);
       break;
     }
     std::string failure;
     try {
-      if (!stepOnce()) failure = blowUpReason_;
+      if (!stepOnce()) failure = run_.blowUpReason_;
     } catch (const OdeError& error) {
       // Headless, an ODE error ends the run (status 4). In a window the
       // session goes on: the world is torn down and the run replayed to the
@@ -281,26 +232,26 @@ void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) 
       // The failed step left a job in the world's threading implementation;
       // freeing it would fail ODE's own check, so it is left allocated
       // (a few hundred bytes an error) and the next world gets a new one.
-      stepThreading_ = nullptr;
+      run_.stepThreading_ = nullptr;
     }
     if (!failure.empty()) {
       recoverFrom(failure);
       return;
     }
   }
-  if (runLengthReached(options_.seconds, simulatedTime_, settings_.step)) quitRequested_ = true;
+  if (runLengthReached(options_.seconds, run_.simulatedTime_, tuning_.settings_.step)) session_.quitRequested_ = true;
 }
 
 // A blow-up or an ODE error in a window: the run is replayed to the step
 // before the failure and paused there, with the message on screen until it
 // is dismissed; the timeline stays, so , rewinds further and R starts over.
 void AbstractWindow::recoverFrom(const std::string& failure) {
-  ++failures_;
-  const long long lastGood = steps_ - 1;
+  ++session_.failures_;
+  const long long lastGood = run_.steps_ - 1;
   replayTo(std::max(0LL, lastGood));
-  failure_ = failure + "; paused at the last good state, t=" + formatValue(simulatedTime_) +
+  session_.failure_ = failure + "; paused at the last good state, t=" + formatValue(run_.simulatedTime_) +
              " s (Enter dismisses, , rewinds, R resets)";
-  notify(failure_);
+  notify(session_.failure_);
 }
 
 int AbstractWindow::runHeadless() {
@@ -309,39 +260,39 @@ int AbstractWindow::runHeadless() {
 }
 
 bool AbstractWindow::runFor(double seconds) {
-  const long long total = steps_ + std::llround(seconds / settings_.step);
+  const long long total = run_.steps_ + std::llround(seconds / tuning_.settings_.step);
   const auto start = std::chrono::steady_clock::now();
-  bool finite = blowUpReason_.empty();
+  bool finite = run_.blowUpReason_.empty();
   {
     // Set for the loop only, and cleared even when a step throws.
     struct Unattended {
       bool& flag;
       ~Unattended() { flag = false; }
-    } unattended{unattended_ = true};
-    while (steps_ < total && finite && stopSignal() == 0) finite = stepOnce();
+    } unattended{run_.unattended_ = true};
+    while (run_.steps_ < total && finite && stopSignal() == 0) finite = stepOnce();
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  wallSeconds_ += wall;
-  time_.addRun(wall, seconds);
+  run_.wallSeconds_ += wall;
+  session_.time_.addRun(wall, seconds);
   return finite;
 }
 
 int AbstractWindow::reportHeadless() {
   if (stopSignal() != 0) return stoppedBySignal();
-  endOutputs(blowUpReason_);
+  endOutputs(run_.blowUpReason_);
   const Metrics result = metrics();
-  std::cout << title_ << ": " << formatValue(simulatedTime_) << " simulated seconds\n";
+  std::cout << title_ << ": " << formatValue(run_.simulatedTime_) << " simulated seconds\n";
   result.print(std::cout);
   if (!options_.metricsJson.empty()) result.writeJsonAtomically(options_.metricsJson);
-  if (!blowUpReason_.empty()) {
-    std::cerr << "error: " << blowUpReason_ << '\n';
+  if (!run_.blowUpReason_.empty()) {
+    std::cerr << "error: " << run_.blowUpReason_ << '\n';
     return exit_code::BLEW_UP;
   }
   return exit_code::OK;
 }
 
 void AbstractWindow::endOutputs(const std::string& cutShortBecause) {
-  const std::string where = "t=" + formatValue(simulatedTime_) + " s, " + std::to_string(steps_) + " steps";
+  const std::string where = "t=" + formatValue(run_.simulatedTime_) + " s, " + std::to_string(run_.steps_) + " steps";
   writeEndLine(cutShortBecause.empty() ? "complete: " + where : "incomplete: " + where + "; " + cutShortBecause);
 }
 
@@ -349,45 +300,45 @@ void AbstractWindow::endOutputs(const std::string& cutShortBecause) {
 // written as if the run were whole, and the status is the shell's 128 + N.
 int AbstractWindow::stoppedBySignal() {
   endOutputs(std::string("stopped by ") + stopSignalName());
-  std::cerr << "error: stopped by " << stopSignalName() << " at t=" << formatValue(simulatedTime_)
+  std::cerr << "error: stopped by " << stopSignalName() << " at t=" << formatValue(run_.simulatedTime_)
             << " s; no metrics written\n";
   return 128 + stopSignal();
 }
 
 Metrics AbstractWindow::metrics() const {
   Metrics m;
-  m.set("steps", static_cast<double>(steps_));
-  m.set("sim_seconds", simulatedTime_);
-  m.set("wall_seconds", wallSeconds_);
+  m.set("steps", static_cast<double>(run_.steps_));
+  m.set("sim_seconds", run_.simulatedTime_);
+  m.set("wall_seconds", run_.wallSeconds_);
   if (options_.headless) {
-    m.set("real_time_factor", wallSeconds_ > 0 ? simulatedTime_ / wallSeconds_ : 0.0);
+    m.set("real_time_factor", run_.wallSeconds_ > 0 ? run_.simulatedTime_ / run_.wallSeconds_ : 0.0);
   } else {
     // A window run: over the whole session, every reset included.
-    m.set("real_time_factor", time_.sessionRealTimeFactor());
-    m.set("window_fps", time_.sessionFramesPerSecond());
-    m.set("longest_frame_ms", 1000.0 * time_.longestFrameSeconds());
-    m.set("window_failures", static_cast<double>(failures_));
+    m.set("real_time_factor", session_.time_.sessionRealTimeFactor());
+    m.set("window_fps", session_.time_.sessionFramesPerSecond());
+    m.set("longest_frame_ms", 1000.0 * session_.time_.longestFrameSeconds());
+    m.set("window_failures", static_cast<double>(session_.failures_));
   }
-  m.set("dropped_steps", static_cast<double>(time_.droppedSteps()));
+  m.set("dropped_steps", static_cast<double>(session_.time_.droppedSteps()));
   // Read back from the world: what a key or the panel set reached ODE.
-  if (world_) {
-    m.set("world_erp", dWorldGetERP(world_));
-    m.set("world_cfm", dWorldGetCFM(world_));
+  if (run_.world_) {
+    m.set("world_erp", dWorldGetERP(run_.world_));
+    m.set("world_cfm", dWorldGetCFM(run_.world_));
   }
   m.set("bodies", bodyCount());
   m.set("disabled_bodies", disabledBodyCount());
-  m.set("contacts", contactsLastStep_);
-  if (contactChoicesUsed_) {
-    m.set("mu", ContactChoices::muMetric(contact_.mu));  // -1: dInfinity (JSON has no infinity)
-    m.set("mu_infinite", std::isinf(contact_.mu) ? 1 : 0);
-    m.set("max_contacts", contact_.maxContacts);
+  m.set("contacts", run_.contactsLastStep_);
+  if (tuning_.contactChoicesUsed_) {
+    m.set("mu", ContactChoices::muMetric(tuning_.contact_.mu));  // -1: dInfinity (JSON has no infinity)
+    m.set("mu_infinite", std::isinf(tuning_.contact_.mu) ? 1 : 0);
+    m.set("max_contacts", tuning_.contact_.maxContacts);
   }
-  m.set("non_finite", blowUpReason_.empty() ? 0 : 1);
-  m.set("state_hash", static_cast<double>(stateHash()));
+  m.set("non_finite", run_.blowUpReason_.empty() ? 0 : 1);
+  m.set("state_hash", static_cast<double>(run_.stateHash()));
   // Every knob in force at the end, under one prefix (infinity as -1).
-  for (const Knob& knob : knobs_) m.set("knob_" + knob.name, knob.metricValue());
+  for (const Knob& knob : tuning_.knobs_) m.set("knob_" + knob.name, knob.metricValue());
   addMetrics(m);
-  for (const auto& [name, value] : marks_.entries()) m.set(name, value);
+  for (const auto& [name, value] : session_.marks_.entries()) m.set(name, value);
   return m;
 }
 
@@ -398,10 +349,10 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
       {"ode_precision", dCheckConfiguration("ODE_double_precision") ? "double" : "single"},
   };
   // The world settings (step first), what no knob tunes, then every other knob.
-  const std::vector<const Knob*> knobs = inReportOrder();
+  const std::vector<const Knob*> knobs = tuning_.inReportOrder();
   auto next = knobs.begin();
   for (; next != knobs.end() && (*next)->appliesToWorld; ++next) description.push_back({(*next)->headerKey(), (*next)->headerText()});
-  description.push_back({"space", spaceKindName(spaceKind_)});
+  description.push_back({"space", spaceKindName(run_.spaceKind_)});
   description.push_back({"seed", std::to_string(options_.seed)});
   // The run length asked for; the file's last line says whether it was reached.
   description.push_back({"run_seconds_asked", options_.seconds > 0 ? formatValue(options_.seconds)
@@ -412,10 +363,10 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
 }
 
 void AbstractWindow::applySettings(const std::string& change) {
-  settings_.applyTo(world_);
-  chart_.markChange(simulatedTime_);
+  tuning_.settings_.applyTo(run_.world_);
+  session_.chart_.markChange(run_.simulatedTime_);
   // A replay repeats changes the user has seen already.
-  if (!rewind_.replaying()) notify(timeStamp(simulatedTime_) + ": " + change);
+  if (!session_.rewind_.replaying()) notify(timeStamp(run_.simulatedTime_) + ": " + change);
   onSettingChanged(change);
 }
 
@@ -427,13 +378,13 @@ void AbstractWindow::identify(std::string programName, const std::string& title)
 }
 
 void AbstractWindow::mark(const std::string& label) {
-  marks_.set("mark_" + label + "_steps", static_cast<double>(steps_));
-  marks_.set("mark_" + label + "_sim_seconds", simulatedTime_);
-  marks_.set("mark_" + label + "_hash", static_cast<double>(stateHash()));
+  session_.marks_.set("mark_" + label + "_steps", static_cast<double>(run_.steps_));
+  session_.marks_.set("mark_" + label + "_sim_seconds", run_.simulatedTime_);
+  session_.marks_.set("mark_" + label + "_hash", static_cast<double>(run_.stateHash()));
 }
 
 bool AbstractWindow::plotValue(double& value) const {
-  value = contactsLastStep_;
+  value = run_.contactsLastStep_;
   return true;
 }
 
@@ -443,11 +394,11 @@ void AbstractWindow::remove(const AbstractObject* object) {
 
 void AbstractWindow::removeIf(const std::function<bool(const AbstractObject&)>& predicate) {
   const AbstractObject* dragged = draggedObject();
-  objects_.erase(std::remove_if(objects_.begin(), objects_.end(),
+  run_.objects_.erase(std::remove_if(run_.objects_.begin(), run_.objects_.end(),
                                 [&](const std::unique_ptr<AbstractObject>& o) { return predicate(*o); }),
-                 objects_.end());
+                 run_.objects_.end());
   // The dragged object's index moves with the removal, or the drag ends.
-  drag_.follow(objects_, dragged);
+  session_.drag_.follow(run_.objects_, dragged);
 }
 
 }  // namespace odelab

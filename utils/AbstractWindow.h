@@ -8,7 +8,7 @@
 
 #include "Camera.h"
 #include "KeyTable.h"
-#include "SceneSettings.h"
+#include "Tuning.h"
 #include "SessionTools.h"
 #include "WorldRun.h"
 
@@ -19,13 +19,14 @@ class App;
 namespace odelab {
 
 // The base of every test: the fixed-step loop and the hooks a scene fills
-// in, composed of parts with one job each: WorldRun (world, space, objects,
-// counters, blow-up test), SceneSettings (world settings, knobs, contact
-// choices), SessionTools (clock, rewind, drag, run log, notices), the Camera
-// and the KeyTable. It never calls GL: the front end (utils/render) reads the
-// parts through run(), tuning() and session(). The parts are protected bases,
-// not members, so the step loop and the scenes name their fields directly.
-class AbstractWindow : protected WorldRun, protected SceneSettings, protected SessionTools {
+// in. It holds its parts as members, each with one job: WorldRun (world,
+// space, objects, counters, blow-up test; creates and destroys the world),
+// Tuning (every knob: world settings, contact choices, the scene's),
+// SessionTools (clock, rewind, drag, run log, notices), the Camera and the
+// KeyTable. Scenes reach them through the few accessors below; the front
+// end (utils/render) reads them through run(), tuning() and session(). It
+// never calls GL.
+class AbstractWindow {
  public:
   explicit AbstractWindow(WorldSettings defaults);
   virtual ~AbstractWindow();
@@ -64,11 +65,11 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   std::vector<std::pair<std::string, std::string>> settingsDescription() const;
 
   // ---- the parts, for the front end and checks ------------------------------
-  const WorldRun& run() const { return *this; }
-  SceneSettings& tuning() { return *this; }
-  const SceneSettings& tuning() const { return *this; }
-  SessionTools& session() { return *this; }
-  const SessionTools& session() const { return *this; }
+  const WorldRun& run() const { return run_; }
+  Tuning& tuning() { return tuning_; }
+  const Tuning& tuning() const { return tuning_; }
+  SessionTools& session() { return session_; }
+  const SessionTools& session() const { return session_; }
   Camera& camera() { return camera_; }
   const Camera& camera() const { return camera_; }
   const KeyTable& keys() const { return keys_; }
@@ -98,6 +99,26 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   void setSpaceKind(SpaceKind kind);  // moves every geom into a new space of that kind
 
  protected:
+  // ---- what scenes read and use --------------------------------------------
+  dWorldID world() const { return run_.world(); }
+  dSpaceID space() const { return run_.space(); }
+  dJointGroupID contactGroup() const { return run_.contactGroup(); }
+  SpaceKind spaceKind() const { return run_.spaceKind(); }
+  const std::vector<std::unique_ptr<AbstractObject>>& objects() const { return run_.objects(); }
+  double simulatedTime() const { return run_.simulatedTime(); }
+  long long steps() const { return run_.steps(); }
+  double lastStepWallSeconds() const { return run_.lastStepWallSeconds(); }
+  int bodyCount() const { return run_.bodyCount(); }
+  int disabledBodyCount() const { return run_.disabledBodyCount(); }
+  std::mt19937& random() { return run_.random(); }
+  void timeSteps() { run_.timeSteps(); }
+  const WorldSettings& settings() const { return tuning_.settings(); }
+  double contactMu() const { return tuning_.contactMu(); }
+  int maxContacts() const { return tuning_.maxContacts(); }
+  TimeControl& time() { return session_.time(); }
+  const TimeControl& time() const { return session_.time(); }
+  void notify(const std::string& message) { session_.notify(message); }
+
   // ---- hooks for scenes ----------------------------------------------------
   virtual void buildScene() = 0;  // objects and joints, measurement reset; every (re)build
   // World settings beyond WorldSettings (auto-disable...); every (re)build, before buildScene().
@@ -133,7 +154,7 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   // A scene value keys change that survives R: rewind restores its start value before replaying.
   template <class T>
   void keepAcrossRewind(T& value) {
-    rewind_.keep(value);
+    session_.rewind_.keep(value);
   }
   // A knob, declared once (utils/Knob.h): option, keys, panel row, header
   // line, metric and rewind follow. The world settings are declared by the
@@ -142,8 +163,8 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   // Objects are owned here; scenes keep raw pointers, valid until the next reset.
   template <class T, class... Args>
   T& add(Args&&... args) {
-    objects_.push_back(std::make_unique<T>(std::forward<Args>(args)...));
-    return static_cast<T&>(*objects_.back());
+    run_.objects_.push_back(std::make_unique<T>(std::forward<Args>(args)...));
+    return static_cast<T&>(*run_.objects_.back());
   }
   void remove(const AbstractObject* object);
   void removeIf(const std::function<bool(const AbstractObject&)>& predicate);
@@ -163,6 +184,9 @@ class AbstractWindow : protected WorldRun, protected SceneSettings, protected Se
   void stepKnob(Knob& knob, int direction);
   void recoverFrom(const std::string& failure);
 
+  WorldRun run_;
+  Tuning tuning_;
+  SessionTools session_;
   std::string programName_;
   std::string title_;
   RunOptions options_;

@@ -54,20 +54,20 @@ std::string timeText(double time, double step) {
 
 std::vector<std::string> AbstractWindow::hudLines() const {
   std::vector<std::string> lines;
-  if (hudMode_ == HudMode::Off) return lines;
-  const bool full = hudMode_ == HudMode::Full;
+  if (session_.hudMode_ == HudMode::Off) return lines;
+  const bool full = session_.hudMode_ == HudMode::Full;
   lines.push_back(title_ + (full ? "" : "   (F1 more, H keys, Tab panel)"));
-  lines.push_back(settingsLine(knobs_));
+  lines.push_back(settingsLine(tuning_.knobs_));
   std::ostringstream s;
   char rate[96];
   // Paused, no simulated time passes: a factor would only say how long ago
   // the pause began.
   char factor[32] = "paused";
-  if (!time_.paused()) std::snprintf(factor, sizeof factor, "x%.2f", time_.recentRealTimeFactor());
-  std::snprintf(rate, sizeof rate, "FPS %.0f (%s)   real-time %s", time_.recentFramesPerSecond(),
-                frameLimitName(time_.limit()), factor);
-  s << rate << "   t=" << timeText(simulatedTime_, settings_.step) << " s   step " << steps_;
-  if (time_.paused()) s << "   PAUSED (P runs, O steps)";
+  if (!session_.time_.paused()) std::snprintf(factor, sizeof factor, "x%.2f", session_.time_.recentRealTimeFactor());
+  std::snprintf(rate, sizeof rate, "FPS %.0f (%s)   real-time %s", session_.time_.recentFramesPerSecond(),
+                frameLimitName(session_.time_.limit()), factor);
+  s << rate << "   t=" << timeText(run_.simulatedTime_, tuning_.settings_.step) << " s   step " << run_.steps_;
+  if (session_.time_.paused()) s << "   PAUSED (P runs, O steps)";
   lines.push_back(s.str());
   std::vector<std::string> sceneLines;
   addHudLines(sceneLines);
@@ -80,22 +80,22 @@ std::vector<std::string> AbstractWindow::hudLines() const {
   } else {
     if (!own.empty()) lines.push_back(own);
     s.str("");
-    s << "F2 increment " << formatValue(increment_.value()) << "   space " << spaceKindName(spaceKind_)
-      << "   bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << contactsLastStep_;
+    s << "F2 increment " << formatValue(tuning_.increment_.value()) << "   space " << spaceKindName(run_.spaceKind_)
+      << "   bodies " << bodyCount() << " (" << disabledBodyCount() << " disabled)   contacts " << run_.contactsLastStep_;
     lines.push_back(s.str());
     s.str("");
-    s << "time scale x" << formatValue(time_.scale()) << "   rewind , .  (" << timeline().snapshotCount()
-      << " snapshots)   dropped steps " << time_.droppedSteps() << "   H help";
+    s << "time scale x" << formatValue(session_.time_.scale()) << "   rewind , .  (" << session_.timeline().snapshotCount()
+      << " snapshots)   dropped steps " << session_.time_.droppedSteps() << "   H help";
     lines.push_back(s.str());
-    lines.push_back(springLine(settings_));
-    if (contactChoicesUsed_)
-      lines.push_back("contact mu " + ContactChoices::muWords(contact_.mu) + " (F / G)   contacts per pair " +
-                      std::to_string(contact_.maxContacts));
+    lines.push_back(springLine(tuning_.settings_));
+    if (tuning_.contactChoicesUsed_)
+      lines.push_back("contact mu " + ContactChoices::muWords(tuning_.contact_.mu) + " (F / G)   contacts per pair " +
+                      std::to_string(tuning_.contact_.maxContacts));
     lines.insert(lines.end(), sceneLines.begin(), sceneLines.end());
     if (const AbstractObject* object = draggedObject()) {
       const dReal* v = dBodyGetLinearVel(object->getBody());
       s.str("");
-      s << "dragging object #" << drag_.index() << " (" << (object->shape() == Shape::Box ? "box" : "sphere") << ", "
+      s << "dragging object #" << session_.drag_.index() << " (" << (object->shape() == Shape::Box ? "box" : "sphere") << ", "
         << formatValue(object->mass()) << " kg), speed "
         << formatValue(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) << " m/s";
       lines.push_back(s.str());
@@ -110,10 +110,10 @@ std::vector<std::string> AbstractWindow::hudLines() const {
 
 std::vector<std::string> AbstractWindow::hudPassingLines() const {
   std::vector<std::string> lines;
-  if (hudMode_ == HudMode::Off) return lines;
-  if (!failure_.empty()) lines.push_back(failure_);
-  const std::string current = notice();
-  if (!current.empty() && current != failure_) lines.push_back(current);
+  if (session_.hudMode_ == HudMode::Off) return lines;
+  if (!session_.failure_.empty()) lines.push_back(session_.failure_);
+  const std::string current = session_.notice();
+  if (!current.empty() && current != session_.failure_) lines.push_back(current);
   for (const auto& message : OdeMessages::recent()) lines.push_back(message);
   if (lines.empty()) lines.emplace_back();
   return lines;

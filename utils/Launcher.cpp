@@ -16,7 +16,7 @@
 #include "ExitCodes.h"
 #include "FormatValue.h"
 #include "SceneRegistry.h"
-#include "TestMain.h"
+#include "SceneRunner.h"
 
 namespace {
 

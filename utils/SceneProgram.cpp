@@ -1,7 +1,7 @@
 // The main() of every test program: it runs the one scene CMake names in
 // ODELAB_SCENE_ENTRY (odelab_scene_test4 for test4), so the program links
 // that scene alone.
-#include "TestMain.h"
+#include "SceneRunner.h"
 
 odelab::SceneEntry ODELAB_SCENE_ENTRY();
 

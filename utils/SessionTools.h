@@ -20,9 +20,9 @@ namespace odelab {
 // (pause, scale, budget), rewind, the mouse drag, the run log, the notice
 // and error on screen, the view toggles with their contact markers and live
 // plot, and the requests the frame loop answers (quit, next scene,
-// screenshot). Headless runs carry it too, idle. AbstractWindow feeds it
-// from its step and its keys; the front end reads it through
-// AbstractWindow::session().
+// screenshot). Headless runs carry it too, idle. AbstractWindow, whose
+// member it is, feeds it from its step and its keys (a friend); the front
+// end reads it through AbstractWindow::session().
 // A scene the launcher offers: "test4" and its one-line description.
 struct SceneChoice {
   std::string name, description;
@@ -70,7 +70,8 @@ class SessionTools {
   void setGivenSceneOptions(std::vector<LineOption> options) { givenSceneOptions_ = std::move(options); }
   const double* dragTarget() const { return drag_.target(); }
 
- protected:
+ private:
+  friend class AbstractWindow;
   TimeControl time_;
   Rewind rewind_;
   MouseDrag drag_;

@@ -12,17 +12,24 @@
 #include "BodyStateWatch.h"
 #include "DebugMarkers.h"
 #include "DragSpring.h"
+#include "SceneView.h"
 #include "SpaceKind.h"
 
 namespace odelab {
 
 // One run of the ODE world: the world, its collision space, contact group
 // and step threading, the scene's objects, the step counters and the test
-// for a state that blew up. AbstractWindow builds and steps it; the front
-// end and checks read it through AbstractWindow::run(). Fields are protected
-// so the step loop, which lives with the hooks it calls, names them directly.
+// for a state that blew up. It creates and destroys the world (create(),
+// destroy()); AbstractWindow, whose member it is, steps it (the step loop
+// lives with the scene hooks it calls, so it writes the counters: a
+// friend); the front end and checks read it through AbstractWindow::run().
 class WorldRun {
  public:
+  WorldRun() = default;
+  ~WorldRun() = default;  // AbstractWindow's destructor has torn the world down
+  WorldRun(const WorldRun&) = delete;
+  WorldRun& operator=(const WorldRun&) = delete;
+
   dWorldID world() const { return world_; }
   dSpaceID space() const { return space_; }
   dJointGroupID contactGroup() const { return contactGroup_; }
@@ -43,20 +50,23 @@ class WorldRun {
   std::vector<JointMarker> jointMarkers() const { return collectJointMarkers(objects_); }
   PickHit pickAt(const double origin[3], const double direction[3]) const;
 
- protected:
-  WorldRun() = default;
-  ~WorldRun() = default;  // AbstractWindow's destructor has torn the world down
-  WorldRun(const WorldRun&) = delete;
-  WorldRun& operator=(const WorldRun&) = delete;
-
-  void destroyWorld();     // objects first, then contact group, space and world
-  void freeThreading();    // after destroyWorld(), before dCloseODE()
+  // A new world seeded from `seed` (every random choice of a run derives
+  // from --seed), with its own step threading, an empty contact group and
+  // no space yet (setSpaceKind), the counters at zero.
+  void create(unsigned seed);
+  void destroy();          // objects first, then contact group, space and world
+  void freeThreading();    // after destroy(), before dCloseODE()
+  // Moves every geom into a new space of that kind (a quadtree covers `bounds`).
+  void setSpaceKind(SpaceKind kind, const SceneBounds& bounds);
   // The cheap test behind stateProblem(), inline: it runs after every step.
   bool stateSuspicious() const { return watch_.suspicious(objects_); }
   std::string stateProblem() const;
   std::mt19937& random() { return random_; }
   // Measure every step's wall time (lastStepWallSeconds()); off by default.
   void timeSteps() { timeSteps_ = true; }
+
+ private:
+  friend class AbstractWindow;
 
   std::vector<std::unique_ptr<AbstractObject>> objects_;
   BodyStateWatch watch_;  // stateSuspicious()'s view of the bodies

@@ -20,7 +20,7 @@
 
 #include "Metrics.h"
 #include "SceneRegistry.h"
-#include "TestMain.h"
+#include "SceneRunner.h"
 
 namespace {
 

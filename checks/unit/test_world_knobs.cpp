@@ -2,9 +2,12 @@
 
 #include <cmath>
 #include <set>
+#include <deque>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
-#include "SceneSettings.h"
+#include "Tuning.h"
 #include "WorldKnobs.h"
 
 using namespace odelab;
@@ -12,12 +15,16 @@ using namespace odelab;
 namespace {
 
 // The world settings as a scene holds them: the knobs point into its settings.
-struct World : SceneSettings {
-  World() : SceneSettings(WorldSettings{}) {
-    for (Knob& knob : worldKnobs(settings_, increment_)) knobs_.push_back(std::move(knob));
+struct World {
+  Tuning tuning{WorldSettings{}};
+  F2Increment f2;
+  World() {
+    for (Knob& knob : worldKnobs(tuning.settings(), f2)) tuning.knobs().push_back(std::move(knob));
   }
+  WorldSettings& settings() { return tuning.settings(); }
+  const std::deque<Knob>& knobs() const { return tuning.knobs(); }
   Knob& knob(const std::string& name) {
-    for (Knob& k : knobs_)
+    for (Knob& k : tuning.knobs())
       if (k.name == name) return k;
     throw std::logic_error("no knob " + name);
   }
@@ -25,7 +32,9 @@ struct World : SceneSettings {
     Knob& k = knob(name);
     k.set(k.next(direction));
   }
-  F2Increment& increment() { return increment_; }
+  F2Increment& increment() { return f2; }
+  std::string settingsInForce() const { return tuning.settingsInForce(); }
+  std::vector<const Knob*> inReportOrder() const { return tuning.inReportOrder(); }
 };
 
 }  // namespace

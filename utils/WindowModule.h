@@ -13,7 +13,7 @@ namespace odelab {
 // headless run never maps SDL, OpenGL, GLEW, ImGui or the font libraries;
 // elsewhere (Windows, the browser) it is linked in and this is a table of
 // its two functions.
-struct WindowEntry {
+struct WindowModule {
   int (*run)(AbstractWindow& scene, const RunOptions& options, const std::function<int(int)>& finish);
   int (*runSwitching)(AbstractWindow& first, const RunOptions& options,
                       const std::function<AbstractWindow&(int direction)>& next,
@@ -22,6 +22,6 @@ struct WindowEntry {
 
 // The window side, loaded on the first call where it is a module; null
 // after printing an error that names the module and why it did not load.
-const WindowEntry* windowEntry();
+const WindowModule* windowModule();
 
 }  // namespace odelab

@@ -15,10 +15,13 @@ namespace odelab {
 // What a run is tuned by, as one list of knobs (utils/Knob.h): the world
 // settings (utils/WorldKnobs.cpp) with F2's increment, the contact choices
 // of a scene with contacts, and the scene's own. Keys, panel and command
-// line change them through AbstractWindow, which records each change; the
-// front end and the runner read them through AbstractWindow::tuning().
-class SceneSettings {
+// line change them through AbstractWindow, whose member it is and which
+// records each change (a friend); the front end and the runner read them
+// through AbstractWindow::tuning().
+class Tuning {
  public:
+  explicit Tuning(WorldSettings defaults) : settings_(defaults) {}
+
   WorldSettings& settings() { return settings_; }
   const WorldSettings& settings() const { return settings_; }
   // Every knob, world settings first; the runner adds their options (utils/CommandLine.h).
@@ -34,9 +37,8 @@ class SceneSettings {
   // as declared: the order of output headers.
   std::vector<const Knob*> inReportOrder() const;
 
- protected:
-  explicit SceneSettings(WorldSettings defaults) : settings_(defaults) {}
-
+ private:
+  friend class AbstractWindow;
   WorldSettings settings_;
   F2Increment increment_;
   std::deque<Knob> knobs_;  // a deque keeps each knob in place as more are declared

@@ -1,4 +1,4 @@
-#include "TestMain.h"
+#include "SceneRunner.h"
 
 #include <cstdlib>
 #include <exception>
@@ -14,7 +14,7 @@
 #include "OpenScene.h"
 #include "SceneVisits.h"
 #include "StopSignal.h"
-#include "WindowEntry.h"
+#include "WindowModule.h"
 
 namespace odelab {
 
@@ -64,7 +64,7 @@ int run(OpenScene& current, const RunOptions& options, SceneSwitching* switching
   // The window builds the scene itself once the window, shaders, font and
   // --events script are ready, so a missing resource leaves no output file.
   // The options by value: in a browser the callback runs after this call.
-  const WindowEntry* window = windowEntry();
+  const WindowModule* window = windowModule();
   if (!window) return exit_code::MISSING_RESOURCE;
   if (!switching)
     return window->run(first, options, [&current, options](int status) {

@@ -1,4 +1,4 @@
-// windowEntry() where the window side is a module (Linux): it is looked for
+// windowModule() where the window side is a module (Linux): it is looked for
 // beside the program (the build tree) and then where an install puts it,
 // seen from the program's folder (ODELAB_MODULE_FROM_BINARY, from CMake), as
 // /proc/self/exe names the program; loaded once, kept to the end.
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "Platform.h"
-#include "WindowEntry.h"
+#include "WindowModule.h"
 
 namespace odelab {
 
@@ -21,15 +21,15 @@ std::string folderOf(const std::string& path) {
   return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
 }
 
-const WindowEntry* load() {
+const WindowModule* load() {
   const std::string folder = folderOf(platform::executablePath());
   std::string tried, why;
   for (const std::string& path : {folder + "/" + MODULE_NAME, folder + "/" ODELAB_MODULE_FROM_BINARY "/" + MODULE_NAME}) {
     // RTLD_NOW: a symbol the module cannot find is reported here, not in
     // the middle of a frame.
     if (void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
-      using Entry = const WindowEntry* (*)();
-      if (const auto entry = reinterpret_cast<Entry>(dlsym(module, "odelab_window_entry"))) return entry();
+      using Entry = const WindowModule* (*)();
+      if (const auto entry = reinterpret_cast<Entry>(dlsym(module, "odelab_window_module"))) return entry();
       why = dlerror();
       tried = path;
       break;
@@ -45,8 +45,8 @@ const WindowEntry* load() {
 
 }  // namespace
 
-const WindowEntry* windowEntry() {
-  static const WindowEntry* const entry = load();
+const WindowModule* windowModule() {
+  static const WindowModule* const entry = load();
   return entry;
 }
 

@@ -26,14 +26,14 @@ void AbstractWindow::rebindKey(SDL_Keycode key, std::string keyName, std::string
 }
 
 Knob& AbstractWindow::declare(Knob declared) {
-  knobs_.push_back(std::move(declared));
-  Knob& knob = knobs_.back();  // a deque keeps it in place as more are declared
+  tuning_.knobs_.push_back(std::move(declared));
+  Knob& knob = tuning_.knobs_.back();  // a deque keeps it in place as more are declared
   // (A knob read and written through functions, the solver, points into
   // the world settings, which a run's start restores.)
   if (knob.count)
-    rewind_.keep(*knob.count);
+    session_.rewind_.keep(*knob.count);
   else if (knob.value)
-    rewind_.keep(*knob.value);
+    session_.rewind_.keep(*knob.value);
   Knob* stepped = &knob;
   if (knob.key != SDLK_UNKNOWN)
     keys_.bind({knob.key, knob.keyName, knob.keyHelp,
@@ -49,11 +49,11 @@ Knob& AbstractWindow::declare(Knob declared) {
 void AbstractWindow::stepKnob(Knob& knob, int direction) {
   const double before = knob.get();
   changeKnob(knob, knob.next(direction), "key");
-  if (knob.get() != before || rewind_.replaying()) return;
+  if (knob.get() != before || session_.rewind_.replaying()) return;
   const char* end = knob.ladder.empty() ? (direction > 0 ? " (the top of its range)" : " (the bottom of its range)")
                     : direction > 0     ? " (the ladder's top)"
                                         : " (the ladder's bottom)";
-  notify(timeStamp(simulatedTime_) + ": " + knob.label + " stays " + knob.words() + end);
+  notify(timeStamp(run_.simulatedTime_) + ": " + knob.label + " stays " + knob.words() + end);
 }
 
 void AbstractWindow::changeKnob(Knob& knob, double value, const char* source) {
@@ -66,30 +66,30 @@ void AbstractWindow::changeKnob(Knob& knob, double value, const char* source) {
     return;
   }
   if (knob.rebuilds) reset();  // a new value is a new experiment
-  if (!rewind_.replaying())
-    notify(timeStamp(simulatedTime_) + ": " + change + (knob.rebuilds ? "; scene rebuilt" : ""));
+  if (!session_.rewind_.replaying())
+    notify(timeStamp(run_.simulatedTime_) + ": " + change + (knob.rebuilds ? "; scene rebuilt" : ""));
   onKnobChanged(knob);
 }
 
 bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
   const KeyBinding* binding = keys_.find(key);
   if (!binding) return false;
-  if (!binding->recorded || rewind_.replaying()) {
+  if (!binding->recorded || session_.rewind_.replaying()) {
     binding->action(shift ? -1 : +1);
     return true;
   }
   // A recorded key goes on the timeline, unless it began a new run (R).
-  const long long epochBefore = rewind_.epoch();
+  const long long epochBefore = session_.rewind_.epoch();
   const std::string name = (shift ? "Shift+" : "") + binding->keyName;
   const std::string description = binding->description;
   binding->action(shift ? -1 : +1);
-  if (rewind_.epoch() == epochBefore) {
+  if (session_.rewind_.epoch() == epochBefore) {
     TimelineEvent event;
-    event.step = steps_;
+    event.step = run_.steps_;
     event.kind = TimelineEvent::Kind::Key;
     event.key = key;
     event.shift = shift;
-    rewind_.record(event);
+    session_.rewind_.record(event);
   }
   // A knob's key logs the change it made (changeKnob); others their description.
   if (!binding->logsItself) logAction(name + ": " + description);
@@ -98,9 +98,9 @@ bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
 
 
 void AbstractWindow::changeKnob(int index, double value) {
-  if (index < 0 || index >= static_cast<int>(knobs_.size())) return;
+  if (index < 0 || index >= static_cast<int>(tuning_.knobs_.size())) return;
   TimelineEvent event;
-  event.step = steps_;
+  event.step = run_.steps_;
   event.kind = TimelineEvent::Kind::Knob;
   event.index = index;
   event.value = value;
@@ -109,9 +109,9 @@ void AbstractWindow::changeKnob(int index, double value) {
 
 void AbstractWindow::recordAndApply(const TimelineEvent& event) {
   // An input that rebuilt the scene began a new run: nothing to record.
-  const long long epochBefore = rewind_.epoch();
+  const long long epochBefore = session_.rewind_.epoch();
   applyEvent(event);
-  if (rewind_.epoch() == epochBefore) rewind_.record(event);
+  if (session_.rewind_.epoch() == epochBefore) session_.rewind_.record(event);
 }
 
 void AbstractWindow::applyEvent(const TimelineEvent& event) {
@@ -121,10 +121,10 @@ void AbstractWindow::applyEvent(const TimelineEvent& event) {
       break;
     case TimelineEvent::Kind::Drag:
     case TimelineEvent::Kind::Release:
-      drag_.apply(event, static_cast<int>(objects_.size()));
+      session_.drag_.apply(event, static_cast<int>(run_.objects_.size()));
       break;
     case TimelineEvent::Kind::Knob:
-      changeKnob(knobs_[static_cast<size_t>(event.index)], event.value, "panel");
+      changeKnob(tuning_.knobs_[static_cast<size_t>(event.index)], event.value, "panel");
       break;
   }
 }
@@ -132,27 +132,27 @@ void AbstractWindow::applyEvent(const TimelineEvent& event) {
 void AbstractWindow::logAction(const std::string& text) {
   // The run log exists for windowed sessions, where a person acts; a replay
   // repeats what is logged already.
-  if (options_.headless || rewind_.replaying()) return;
-  const std::string error = runLog_.write(simulatedTime_, steps_, text);
+  if (options_.headless || session_.rewind_.replaying()) return;
+  const std::string error = session_.runLog_.write(run_.simulatedTime_, run_.steps_, text);
   if (!error.empty()) notify(error);
 }
 
 void AbstractWindow::bindSharedKeys() {
   bindKey(SDLK_r, "R", "reset the scene to its initial state", [this](int) {
     // Named with the moment it left, as every change the run log records.
-    const std::string at = timeStamp(simulatedTime_);
+    const std::string at = timeStamp(run_.simulatedTime_);
     reset();
     notify(at + ": scene reset");
   });
   bindViewKey(SDLK_F1, "F1", "HUD: compact / full / off", [this](int) {
-    hudMode_ = hudMode_ == HudMode::Compact ? HudMode::Full
-               : hudMode_ == HudMode::Full  ? HudMode::Off
+    session_.hudMode_ = session_.hudMode_ == HudMode::Compact ? HudMode::Full
+               : session_.hudMode_ == HudMode::Full  ? HudMode::Off
                                             : HudMode::Compact;
   });
   keys_.bind({SDLK_F2, "F2", "choose the increment used by F3 / F4 (1e-6 ... 0.1)",
               [this](int d) {
-                increment_.cycle(d);
-                const std::string change = "F2 increment " + formatValue(increment_.value());
+                tuning_.increment_.cycle(d);
+                const std::string change = "F2 increment " + formatValue(tuning_.increment_.value());
                 logAction(change);
                 applySettings(change);
               },
@@ -161,86 +161,86 @@ void AbstractWindow::bindSharedKeys() {
 
 void AbstractWindow::offerSceneSwitch(std::vector<SceneChoice> scenes, int current) {
   const std::string list = scenes.front().name + " ... " + scenes.back().name + " (odelab --list)";
-  sceneChoices_ = std::move(scenes);
-  currentScene_ = current;
-  bindViewKey(SDLK_PAGEDOWN, "PageDown", "next scene of " + list, [this](int) { requestSceneSwitch(+1); });
-  bindViewKey(SDLK_PAGEUP, "PageUp", "previous scene", [this](int) { requestSceneSwitch(-1); });
+  session_.sceneChoices_ = std::move(scenes);
+  session_.currentScene_ = current;
+  bindViewKey(SDLK_PAGEDOWN, "PageDown", "next scene of " + list, [this](int) { session_.requestSceneSwitch(+1); });
+  bindViewKey(SDLK_PAGEUP, "PageUp", "previous scene", [this](int) { session_.requestSceneSwitch(-1); });
 }
 
 void AbstractWindow::beginDrag(const PickHit& hit, const double target[3]) {
   TimelineEvent event;
-  if (!MouseDrag::beginEvent(objects_, hit, target, steps_, event)) return;
+  if (!MouseDrag::beginEvent(run_.objects_, hit, target, run_.steps_, event)) return;
   recordAndApply(event);
-  marks_.set("drag_start_distance", drag_.gap(objects_));
+  session_.marks_.set("drag_start_distance", session_.drag_.gap(run_.objects_));
   logAction("drag " + std::to_string(hit.objectIndex));
 }
 
 void AbstractWindow::moveDrag(const double target[3]) {
   TimelineEvent event;
-  if (!drag_.moveEvent(target, steps_, event)) return;
+  if (!session_.drag_.moveEvent(target, run_.steps_, event)) return;
   recordAndApply(event);
   // The gap the spring now has to close (the renderer's beginDrag targets
   // the grabbed point itself, so the gap opens with the first move).
-  marks_.set("drag_start_distance", drag_.gap(objects_));
+  session_.marks_.set("drag_start_distance", session_.drag_.gap(run_.objects_));
 }
 
 void AbstractWindow::endDrag() {
   TimelineEvent event;
-  if (!drag_.endEvent(steps_, event)) return;
-  marks_.set("drag_end_distance", drag_.gap(objects_));
+  if (!session_.drag_.endEvent(run_.steps_, event)) return;
+  session_.marks_.set("drag_end_distance", session_.drag_.gap(run_.objects_));
   recordAndApply(event);
   logAction("release");
 }
 
 const AbstractObject* AbstractWindow::draggedObject() const {
-  return drag_.active() ? objects_[drag_.index()].get() : nullptr;
+  return session_.drag_.active() ? run_.objects_[session_.drag_.index()].get() : nullptr;
 }
 
 void AbstractWindow::bindTimeAndViewKeys() {
-  bindViewKey(SDLK_p, "P", "pause / resume", [this](int) { time_.setPaused(!time_.paused()); });
+  bindViewKey(SDLK_p, "P", "pause / resume", [this](int) { session_.time_.setPaused(!session_.time_.paused()); });
   bindViewKey(SDLK_o, "O", "advance exactly one step (pauses first)", [this](int) {
-    time_.setPaused(true);
+    session_.time_.setPaused(true);
     try {
-      if (!stepOnce()) recoverFrom(blowUpReason_);
+      if (!stepOnce()) recoverFrom(run_.blowUpReason_);
     } catch (const OdeError& error) {
-      stepThreading_ = nullptr;  // see advanceFrame()
+      run_.stepThreading_ = nullptr;  // see advanceFrame()
       recoverFrom(std::string("ODE error: ") + error.what());
     }
   });
-  bindViewKey(SDLK_MINUS, "-", "slower: halve the time scale (down to 1/32)", [this](int) { time_.slower(); });
+  bindViewKey(SDLK_MINUS, "-", "slower: halve the time scale (down to 1/32)", [this](int) { session_.time_.slower(); });
   bindViewKey(SDLK_EQUALS, "=", "faster: double the time scale (up to 8x, as far as the machine keeps up)",
-              [this](int) { time_.faster(); });
+              [this](int) { session_.time_.faster(); });
   bindViewKey(SDLK_COMMA, ",", "rewind to the previous snapshot (every 0.25 s of simulated time) and pause", [this](int) {
-    const long long target = std::max(0LL, rewind_.timeline().previousSnapshot(steps_));
-    const std::string at = timeStamp(simulatedTime_);
+    const long long target = std::max(0LL, session_.rewind_.timeline().previousSnapshot(run_.steps_));
+    const std::string at = timeStamp(run_.simulatedTime_);
     replayTo(target);
-    notify(at + ": rewound to " + timeStamp(simulatedTime_));
+    notify(at + ": rewound to " + timeStamp(run_.simulatedTime_));
   });
   bindViewKey(SDLK_PERIOD, ".", "forward to the next snapshot or the furthest step reached, and pause", [this](int) {
-    const long long target = rewind_.timeline().nextSnapshot(steps_);
-    time_.setPaused(true);
+    const long long target = session_.rewind_.timeline().nextSnapshot(run_.steps_);
+    session_.time_.setPaused(true);
     if (target < 0) {
       notify("no later snapshot: press P to run on");
       return;
     }
-    const std::string at = timeStamp(simulatedTime_);
-    while (steps_ < target && stepOnce()) {
+    const std::string at = timeStamp(run_.simulatedTime_);
+    while (run_.steps_ < target && stepOnce()) {
     }
-    notify(at + ": forward to " + timeStamp(simulatedTime_));
+    notify(at + ": forward to " + timeStamp(run_.simulatedTime_));
   });
-  bindViewKey(SDLK_RETURN, "Enter", "dismiss the error message", [this](int) { dismissFailure(); });
-  bindViewKey(SDLK_h, "H", "help: this key list on / off", [this](int) { viewFlags_.help = !viewFlags_.help; });
+  bindViewKey(SDLK_RETURN, "Enter", "dismiss the error message", [this](int) { session_.dismissFailure(); });
+  bindViewKey(SDLK_h, "H", "help: this key list on / off", [this](int) { session_.viewFlags_.help = !session_.viewFlags_.help; });
   bindViewKey(SDLK_l, "L", "live plot of the scene's measurement on / off",
-              [this](int) { viewFlags_.plot = !viewFlags_.plot; });
+              [this](int) { session_.viewFlags_.plot = !session_.viewFlags_.plot; });
   bindViewKey(SDLK_c, "C", "contact points and normals on / off", [this](int) {
-    viewFlags_.contacts = !viewFlags_.contacts;
-    contactMarkers_.clear();
+    session_.viewFlags_.contacts = !session_.viewFlags_.contacts;
+    session_.contactMarkers_.clear();
   });
-  bindViewKey(SDLK_j, "J", "joint anchors and axes on / off", [this](int) { viewFlags_.joints = !viewFlags_.joints; });
-  bindViewKey(SDLK_x, "X", "bounding boxes on / off", [this](int) { viewFlags_.boxes = !viewFlags_.boxes; });
-  bindViewKey(SDLK_v, "V", "wireframe on / off", [this](int) { viewFlags_.wireframe = !viewFlags_.wireframe; });
+  bindViewKey(SDLK_j, "J", "joint anchors and axes on / off", [this](int) { session_.viewFlags_.joints = !session_.viewFlags_.joints; });
+  bindViewKey(SDLK_x, "X", "bounding boxes on / off", [this](int) { session_.viewFlags_.boxes = !session_.viewFlags_.boxes; });
+  bindViewKey(SDLK_v, "V", "wireframe on / off", [this](int) { session_.viewFlags_.wireframe = !session_.viewFlags_.wireframe; });
   bindViewKey(SDLK_F12, "F12", "save a screenshot (PNG named with the test and the simulated time) in --out-dir",
-              [this](int) { screenshotRequested_ = true; });
+              [this](int) { session_.screenshotRequested_ = true; });
 }
 
 std::vector<std::string> AbstractWindow::helpLines() const {

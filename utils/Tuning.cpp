@@ -1,10 +1,10 @@
-#include "SceneSettings.h"
+#include "Tuning.h"
 
 #include <algorithm>
 
 namespace odelab {
 
-std::vector<const Knob*> SceneSettings::inReportOrder() const {
+std::vector<const Knob*> Tuning::inReportOrder() const {
   std::vector<const Knob*> order;
   for (const Knob& knob : knobs_) order.push_back(&knob);
   std::stable_sort(order.begin(), order.end(), [](const Knob* a, const Knob* b) {
@@ -14,7 +14,7 @@ std::vector<const Knob*> SceneSettings::inReportOrder() const {
   return order;
 }
 
-std::string SceneSettings::settingsInForce() const {
+std::string Tuning::settingsInForce() const {
   std::string text;
   for (const Knob* knob : inReportOrder()) {
     if (knob->inMessage.empty()) continue;
