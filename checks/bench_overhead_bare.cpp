@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "StateHash.h"
+#include "check_cli.h"
 #include "WorldSettings.h"
 #include "shared/SceneConstants.h"
 
@@ -58,12 +59,13 @@ dBodyID addBall(dWorldID world, dSpaceID space, double radius, double mass, doub
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string name = argc == 3 ? argv[1] : "";
-  if (name != "test1" && name != "test9") {
-    std::fprintf(stderr, "usage: bench_overhead_bare test1|test9 SECONDS\n");
-    return 2;
-  }
-  const double seconds = std::atof(argv[2]);
+  std::string name;
+  double seconds = 0;
+  CLI::App app{"The bare ODE loop of test1's or test9's scene, with no framework around it (bench_overhead.sh).",
+               "bench_overhead_bare"};
+  app.add_option("scene", name, "the scene whose world is stepped")->required()->check(CLI::IsMember({"test1", "test9"}));
+  app.add_option("seconds", seconds, "simulated seconds to step")->required()->check(CLI::Range(0.0, 1e9));
+  if (auto status = checks::parse(app, argc, argv)) return *status;
   dInitODE2(0);
   dRandSetSeed(1);  // the programs' default --seed
   odelab::WorldSettings settings;  // step 0.001, QuickStep 20 iterations, SOR 1.3, as both scenes

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <functional>
 
+#include "check_cli.h"
 #include "shared/SweptCollision.h"
 
 namespace {
@@ -122,12 +123,12 @@ void benchmark(long calls) {
 
 int main(int argc, char** argv) {
   long calls = 200000;
-  char* end = nullptr;
-  if (argc == 2) calls = std::strtol(argv[1], &end, 10);
-  if (argc > 2 || (argc == 2 && (end == argv[1] || *end != '\0' || calls <= 0))) {
-    std::fprintf(stderr, "usage: bench_swept_collision [calls]  (calls: a positive whole number, default 200000)\n");
-    return 2;
-  }
+  CLI::App app{"What the swept test of --ccd costs a call beside an ODE step of test10's world; prints figures.",
+               "bench_swept_collision"};
+  app.add_option("calls", calls, "calls timed per kind of step (default 200000)")
+      ->transform(checks::decimal())
+      ->check(CLI::Range(1L, 1000000000L));
+  if (auto status = checks::parse(app, argc, argv)) return *status;
   dInitODE2(0);
   benchmark(calls);  // its world is gone before ODE is closed
   dCloseODE();

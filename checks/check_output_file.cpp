@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "check_cli.h"
+
 namespace {
 
 std::vector<std::string> split(const std::string& text, char separator) {
@@ -47,28 +49,24 @@ struct Expected {
   bool complete = false;  // the file must end with "# complete: ..."
 };
 
-bool parseArguments(int argc, char** argv, Expected& e) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--columns" && hasValue) e.columns = split(argv[++i], ',');
-    else if (arg == "--interval" && hasValue) e.interval = std::atof(argv[++i]);
-    else if (arg == "--rows" && hasValue) e.rows = std::atol(argv[++i]);
-    else if (arg == "--complete") e.complete = true;
-    else if (e.file.empty() && arg.rfind("--", 0) != 0) e.file = arg;
-    else return false;
-  }
-  return !e.file.empty() && !e.columns.empty() && e.interval > 0 && e.rows >= 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   Expected expected;
-  if (!parseArguments(argc, argv, expected)) {
-    std::cerr << "usage: check_output_file FILE --columns A,B,... --interval SECONDS --rows N\n";
-    return 2;
-  }
+  CLI::App app{"Checks an output file of test2 / test8 (Test2_output.txt, Test8_output.txt): its header, its "
+               "columns, N rows at the interval, and how it ends. Exit 0 when all holds, 1 otherwise.",
+               "check_output_file"};
+  app.add_option("file", expected.file, "the output file")->required();
+  app.add_option("--columns", expected.columns, "the column names, in order: NAME,NAME,...")
+      ->required()
+      ->delimiter(',')
+      ->allow_extra_args(false);  // one comma-separated value: FILE may follow it
+  app.add_option("--interval", expected.interval, "row i is at time i x SECONDS")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  app.add_option("--rows", expected.rows, "exactly N rows")->required()->transform(checks::decimal())->check(CLI::NonNegativeNumber);
+  app.add_flag("--complete", expected.complete, "the file must end with \"# complete: ...\"");
+  if (auto status = checks::parse(app, argc, argv)) return *status;
   std::ifstream in(expected.file);
   if (!in) {
     std::cout << "FAIL: cannot read " << expected.file << '\n';

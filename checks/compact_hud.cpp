@@ -5,20 +5,25 @@
 // can hold the compact HUD to what it must say.
 #include <ode/ode.h>
 
-#include <cstdlib>
 #include <iostream>
+#include <string>
 
 #include "RunOptions.h"
+#include "check_cli.h"
 #include "SceneRegistry.h"
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::cerr << "usage: compact_hud SCENE SECONDS\n";
-    return 2;
-  }
-  const odelab::SceneEntry* entry = odelab::findScene(argv[1]);
+  std::string name;
+  double seconds = 0;
+  CLI::App app{"Prints the lines a scene's window HUD shows (compact) after SECONDS of simulated time, without a "
+               "window.",
+               "compact_hud"};
+  app.add_option("scene", name, "the scene, as its program is named (test0 ...)")->required();
+  app.add_option("seconds", seconds, "simulated seconds to step first")->required()->check(CLI::Range(0.0, 1e6));
+  if (auto status = checks::parse(app, argc, argv)) return *status;
+  const odelab::SceneEntry* entry = odelab::findScene(name);
   if (!entry) {
-    std::cerr << "compact_hud: no scene '" << argv[1] << "'\n";
+    std::cerr << "compact_hud: error: no scene '" << name << "'\n";
     return 2;
   }
   dInitODE2(0);
@@ -27,7 +32,6 @@ int main(int argc, char** argv) {
     odelab::RunOptions options;
     options.headless = true;  // no window: nothing here may wait for one
     scene->initialize(options);
-    const double seconds = std::atof(argv[2]);
     while (scene->run().simulatedTime() < seconds)
       if (!scene->stepOnce()) break;
     for (const std::string& line : scene->hudLines()) std::cout << line << '\n';

@@ -1,7 +1,7 @@
 // Runs one test program and checks its metrics against stated bounds, so
 // every CTest scene check reads as a physical claim:
 //
-//   expect_metrics [--status N] [--stdout-contains TEXT] NAME<OP>BOUND ... -- PROGRAM ARGS...
+//   expect_metrics [--status N] [--stdout-contains TEXT]... NAME<OP>BOUND ... -- PROGRAM ARGS...
 //
 // OP is one of < <= > >= ==. BOUND is a number, or another metric of the
 // same run written @NAME, optionally with one arithmetic step: @NAME+2,
@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +29,8 @@
 #include <vector>
 
 #include "Metrics.h"
+#include "check_cli.h"
+#include "metrics_file.h"
 
 namespace {
 
@@ -133,32 +136,37 @@ int runProgram(const std::vector<std::string>& args, std::string& output) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<Expectation> expectations;
-  std::vector<std::string> program;
+  // Everything after the first "--" is the program's own command line,
+  // passed on untouched: CLI11 reads only what comes before it.
+  int separator = 1;
+  while (separator < argc && std::string(argv[separator]) != "--") ++separator;
+  std::vector<std::string> program(argv + std::min(separator + 1, argc), argv + argc);
+
+  std::vector<std::string> texts;
   std::vector<std::string> mustContain;
   int expectedStatus = 0;
-  int i = 1;
-  for (; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--") break;
-    if (arg == "--status" && i + 1 < argc) {
-      expectedStatus = std::atoi(argv[++i]);
-    } else if (arg == "--stdout-contains" && i + 1 < argc) {
-      mustContain.emplace_back(argv[++i]);
-    } else {
-      Expectation e;
-      if (!parseExpectation(arg, e)) {
-        std::cerr << "expect_metrics: cannot read expectation '" << arg << "'\n";
-        return 2;
-      }
-      expectations.push_back(e);
-    }
-  }
-  for (++i; i < argc; ++i) program.emplace_back(argv[i]);
-  if (program.empty()) {
-    std::cerr << "expect_metrics: no program after --\n";
-    return 2;
-  }
+  CLI::App app{"Runs PROGRAM ARGS... with --metrics-json FILE appended and checks its exit status and metrics "
+               "against NAME<OP>BOUND expectations (OP: < <= > >= ==; BOUND: a number or @NAME, optionally "
+               "followed by +N, -N or *N).",
+               "expect_metrics"};
+  app.footer("The command line ends with -- PROGRAM ARGS...: everything after -- is the program's own.");
+  app.add_option("--status", expectedStatus, "the exit status the program must end with (default 0)")
+      ->transform(checks::decimal())
+      ->check(CLI::Range(0, 255));
+  app.add_option("--stdout-contains", mustContain, "text the program's standard output must contain")
+      ->allow_extra_args(false);  // one TEXT each time, as before: what follows is an expectation
+  app.add_option("expectations", texts, "NAME<OP>BOUND, e.g. steps>0 or mark_b_steps==@mark_a_steps+1");
+  std::vector<Expectation> expectations;
+  std::vector<char*> ours(argv, argv + separator);
+  if (auto status = checks::parse(app, static_cast<int>(ours.size()), ours.data(), [&] {
+        for (const auto& text : texts) {
+          Expectation e;
+          if (!parseExpectation(text, e)) throw CLI::ValidationError("cannot read expectation '" + text + "'");
+          expectations.push_back(e);
+        }
+        if (program.empty()) throw CLI::ValidationError("no program after --");
+      }))
+    return *status;
 
   const std::string json = "expect_metrics_" + std::to_string(getpid()) + ".json";
   std::remove(json.c_str());
@@ -176,23 +184,21 @@ int main(int argc, char** argv) {
       std::cout << "FAIL: output lacks '" << text << "'\n";
       ok = false;
     }
-  std::ifstream in(json);
+  const bool written = std::ifstream(json).good();
   if (expectedStatus == 2) {
     // A usage error must leave nothing behind.
-    if (in) {
+    if (written) {
       std::cout << "FAIL: a metrics file was written although the options were refused\n";
       ok = false;
     }
-  } else if (!in) {
+  } else if (!written) {
     if (!expectations.empty()) {
       std::cout << "FAIL: no metrics file written\n";
       ok = false;
     }
   } else {
-    std::stringstream text;
-    text << in.rdbuf();
     try {
-      const odelab::Metrics metrics = odelab::parseMetricsJson(text.str());
+      const odelab::Metrics metrics = checks::readMetricsFile(json);
       for (auto e : expectations) {
         if (!resolveBound(metrics, e)) {
           std::cout << "FAIL: " << e.name << ": the bound's metric " << e.boundMetric << " was not reported\n";

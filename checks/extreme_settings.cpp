@@ -1,18 +1,17 @@
-// The extreme-settings grid: runs every test program headless across a
-// covering set of world settings and checks that each run ends cleanly.
+// Runs test programs headless at extreme world settings (the grid of
+// checks/extreme_grid.h) and checks that each run ends cleanly:
 //
-//   extreme_settings [--jobs N] [--timeout S] [--step-budget N] [--max-seconds S]
-//                    [--work-dir DIR] [--only PROGRAM] [--strict-ode-errors] [--list] PROGRAM_PATH...
+//   extreme_settings [--batch K --batches B] [--step-budget N] [--max-seconds S]
+//                    [--work-dir DIR] [--strict-ode-errors] [--list] PROGRAM_PATH...
 //
-// Settings: step 1e-5, 1e-4, 1e-3, 1e-2, 0.1 s; ERP 0, 0.5, 1; CFM 0, 1e-3, 1;
-// iterations 1, 20, 1000; solver quick, step. Their full product (270 per
-// program) is too slow for CI, so each program gets a pairwise covering set
-// (15 rows in which every value of every parameter meets every value of every
-// other; checked below when the program starts) plus the extreme corners
-// listed in CORNERS. A run lasts min(--max-seconds, --step-budget x step)
-// simulated seconds (defaults 3 s and 10000 steps: 0.1 s at step 1e-5, 1 s
-// at 1e-4, 3 s from 1e-3 up), so its cost is bounded in steps. Defaults:
-// 2 jobs, a 120 s timeout per run.
+// Batch K of B is every grid setting whose index i has i mod B = K, for
+// every PROGRAM_PATH (default: batch 0 of 1, the whole grid). The runs go one
+// after another: checks/hardening.cmake registers one CTest row per program
+// and batch, so `ctest -j` runs them side by side and each row's TIMEOUT
+// catches a hang (a run's process dies with this one, see start()). A run
+// lasts min(--max-seconds, --step-budget x step) simulated seconds (defaults
+// 3 s and 10000 steps: 0.1 s at step 1e-5, 1 s at 1e-4, 3 s from 1e-3 up),
+// so its cost is bounded in steps.
 //
 // Each run's exit status is classified:
 //   0  ok          the metrics JSON parses and says non_finite = 0
@@ -20,20 +19,22 @@
 //                  settings of the run, and the metrics say non_finite = 1
 //   4  ODE error   allowed: a clean, named exit; its "error: ... ODE" message is printed
 //                  (with --strict-ode-errors it must also name the run's settings)
-//   anything else, a signal, or no end within --timeout (a hang): FAILED.
-// A table lists every run; the status is 1 when any run FAILED.
-#include <signal.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
+//   anything else, or a signal: FAILED.
+// A table lists every run; the status is 1 when any run FAILED, 2 on bad
+// input (an empty batch too: the grid has fewer settings than B).
 #include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -41,68 +42,17 @@
 #include <iostream>
 #include <map>
 #include <regex>
-#include <set>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
-#include "Metrics.h"
+#include "check_cli.h"
+#include "extreme_grid.h"
+#include "metrics_file.h"
 
 namespace {
 
-const std::vector<double> STEPS{1e-5, 1e-4, 1e-3, 1e-2, 0.1};
-const std::vector<double> ERPS{0.0, 0.5, 1.0};
-const std::vector<double> CFMS{0.0, 1e-3, 1.0};
-const std::vector<int> ITERATIONS{1, 20, 1000};
-const std::vector<std::string> SOLVERS{"quick", "step"};
-
-struct Settings {
-  double step, erp, cfm;
-  int iterations;
-  std::string solver;
-  std::string label;  // "pairwise" or what the corner stands for
-};
-
-// The corners that a pairwise set may miss: each end of the step range with
-// the settings that stress it most.
-const std::vector<Settings> CORNERS{
-    {1e-5, 1.0, 0.0, 1000, "quick", "corner: smallest step, most iterations, rigid"},
-    {1e-5, 0.0, 0.0, 1, "quick", "corner: smallest step, no correction, one iteration"},
-    {1e-5, 0.0, 1.0, 20, "step", "corner: smallest step, softest, dWorldStep"},
-    {0.1, 1.0, 0.0, 20, "quick", "corner: largest step, ERP 1, CFM 0"},
-    {0.1, 1.0, 0.0, 20, "step", "corner: largest step, ERP 1, CFM 0, dWorldStep"},
-    {0.1, 0.0, 0.0, 1, "quick", "corner: largest step, no correction, one iteration"},
-    {0.1, 1.0, 1.0, 1000, "quick", "corner: largest step, softest, most iterations"},
-    {0.1, 0.0, 1.0, 1, "step", "corner: largest step, softest, dWorldStep"},
-};
-
-// Rows (i, j), i over the 5 steps and j over the 3 ERPs: CFM (i+j) mod 3,
-// iterations (j+2i) mod 3, solver (i+j) mod 2.
-std::vector<Settings> pairwiseRows() {
-  std::vector<Settings> rows;
-  for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 3; ++j)
-      rows.push_back({STEPS[i], ERPS[j], CFMS[(i + j) % 3], ITERATIONS[(j + 2 * i) % 3], SOLVERS[(i + j) % 2],
-                      "pairwise"});
-  return rows;
-}
-
-// True when every pair of values of every two parameters occurs in `rows`.
-bool coversEveryPair(const std::vector<Settings>& rows) {
-  auto levels = [](const Settings& s) {
-    return std::vector<std::string>{std::to_string(s.step), std::to_string(s.erp), std::to_string(s.cfm),
-                                    std::to_string(s.iterations), s.solver};
-  };
-  const std::vector<size_t> sizes{STEPS.size(), ERPS.size(), CFMS.size(), ITERATIONS.size(), SOLVERS.size()};
-  for (size_t a = 0; a < sizes.size(); ++a)
-    for (size_t b = a + 1; b < sizes.size(); ++b) {
-      std::set<std::pair<std::string, std::string>> seen;
-      for (const auto& row : rows) seen.insert({levels(row)[a], levels(row)[b]});
-      if (seen.size() != sizes[a] * sizes[b]) return false;
-    }
-  return true;
-}
+using extreme::Settings;
 
 std::string number(double value) {
   std::ostringstream out;
@@ -122,10 +72,7 @@ struct Run {
   double seconds = 0;
   std::vector<std::string> args;
   std::string dir;
-  pid_t pid = -1;
-  std::chrono::steady_clock::time_point started;
   double wall = 0;
-  bool timedOut = false;
   int rawStatus = 0;
   // results
   std::string result;  // ok, blew up, ODE error, FAILED
@@ -150,7 +97,9 @@ std::string commandLine(const Run& run) {
   return text;
 }
 
-void start(Run& run, const std::string& workDir) {
+// Runs it to its end in a folder of its own under workDir, standard output
+// and error into files there.
+void runToEnd(Run& run, const std::string& workDir) {
   std::string pattern = workDir + "/" + run.name + "_XXXXXX";
   std::vector<char> buffer(pattern.begin(), pattern.end());
   buffer.push_back('\0');
@@ -160,10 +109,16 @@ void start(Run& run, const std::string& workDir) {
   }
   run.dir = buffer.data();
   run.args.insert(run.args.end(), {"--out-dir", run.dir, "--metrics-json", run.dir + "/metrics.json"});
-  run.started = std::chrono::steady_clock::now();
-  run.pid = fork();
-  if (run.pid == 0) {
-    setpgid(0, 0);  // its own group, so a timeout kills everything it started
+  const auto started = std::chrono::steady_clock::now();
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) {
+#ifdef __linux__
+    // CTest ends a row past its TIMEOUT by killing this process only; the
+    // run must not go on spinning without it.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);  // already gone before the line above
+#endif
     const int out = open((run.dir + "/stdout.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int err = open((run.dir + "/stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(out, STDOUT_FILENO);
@@ -175,6 +130,13 @@ void start(Run& run, const std::string& workDir) {
     std::perror(argv[0]);
     _exit(127);
   }
+  (void)parent;
+  if (pid < 0) {
+    std::perror("extreme_settings: fork");
+    std::exit(2);
+  }
+  waitpid(pid, &run.rawStatus, 0);
+  run.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 std::string readFile(const std::string& path) {
@@ -216,19 +178,15 @@ void classify(Run& run, bool strictOdeErrors) {
     run.failed = true;
     run.detail = why;
   };
-  if (run.timedOut) return fail("hang: no end within the timeout, killed");
   if (WIFSIGNALED(run.rawStatus))
     return fail(std::string("crash: signal ") + std::to_string(WTERMSIG(run.rawStatus)) + " (" +
                 strsignal(WTERMSIG(run.rawStatus)) + ")");
   const int status = WEXITSTATUS(run.rawStatus);
   odelab::Metrics metrics;
   bool haveMetrics = false;
-  try {
-    const std::string json = readFile(run.dir + "/metrics.json");
-    if (!json.empty()) {
-      metrics = odelab::parseMetricsJson(json);
-      haveMetrics = true;
-    }
+  try {  // none, an empty file or a malformed one: no metrics
+    metrics = checks::readMetricsFile(run.dir + "/metrics.json");
+    haveMetrics = true;
   } catch (const std::exception&) {
   }
   if (status == 0) {
@@ -270,156 +228,133 @@ void removeTree(const std::string& dir) {
   rmdir(dir.c_str());
 }
 
-int usage() {
-  std::cerr << "usage: extreme_settings [--jobs N] [--timeout S] [--step-budget N] [--max-seconds S]\n"
-               "                        [--work-dir DIR] [--only PROGRAM] [--strict-ode-errors] [--list] PROGRAM_PATH...\n";
-  return 2;
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-  int jobs = 2;
-  double timeout = 120;
-  double stepBudget = 10000;
-  double maxSeconds = 3;
-  std::string workDir = ".";
-  std::set<std::string> only;
-  bool listOnly = false;
-  bool strictOdeErrors = false;
-  std::vector<std::string> programs;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--jobs" && hasValue) jobs = std::atoi(argv[++i]);
-    else if (arg == "--timeout" && hasValue) timeout = std::atof(argv[++i]);
-    else if (arg == "--step-budget" && hasValue) stepBudget = std::atof(argv[++i]);
-    else if (arg == "--max-seconds" && hasValue) maxSeconds = std::atof(argv[++i]);
-    else if (arg == "--work-dir" && hasValue) workDir = argv[++i];
-    else if (arg == "--only" && hasValue) only.insert(argv[++i]);
-    else if (arg == "--list") listOnly = true;
-    else if (arg == "--strict-ode-errors") strictOdeErrors = true;
-    else if (arg.rfind("--", 0) == 0) return usage();
-    else programs.push_back(arg);
-  }
-  if (programs.empty() || jobs < 1 || !(timeout > 0) || !(stepBudget >= 1) || !(maxSeconds > 0)) return usage();
-
-  const std::vector<Settings> pairwise = pairwiseRows();
-  if (!coversEveryPair(pairwise)) {
-    std::cerr << "extreme_settings: the pairwise rows do not cover every pair of values\n";
-    return 2;
-  }
-  std::vector<Settings> cases = pairwise;
-  for (const auto& corner : CORNERS) {
-    bool present = false;
-    for (auto& c : cases)
-      if (c.step == corner.step && c.erp == corner.erp && c.cfm == corner.cfm && c.iterations == corner.iterations &&
-          c.solver == corner.solver) {
-        c.label = corner.label;
-        present = true;
-      }
-    if (!present) cases.push_back(corner);
-  }
-
-  std::deque<Run> queue;
-  for (const auto& program : programs) {
-    const std::string name = baseName(program);
-    if (!only.empty() && !only.count(name)) continue;
-    for (const auto& s : cases) {
-      Run run;
-      run.program = program;
-      run.name = name;
-      run.settings = s;
-      run.seconds = std::min(maxSeconds, stepBudget * s.step);
-      run.args = {"--headless",   "--seconds", number(run.seconds), "--step",   number(s.step),
-                  "--erp",        number(s.erp), "--cfm",           number(s.cfm), "--iterations",
-                  std::to_string(s.iterations), "--solver", s.solver};
-      for (auto& a : sceneArgs(name, run.seconds)) run.args.push_back(a);
-      queue.push_back(run);
-    }
-  }
-  if (listOnly) {
-    for (const auto& run : queue) std::cout << commandLine(run) << "    # " << run.settings.label << '\n';
-    return 0;
-  }
-  std::cout << "extreme settings: " << queue.size() << " runs (" << cases.size() << " settings x "
-            << queue.size() / std::max<size_t>(1, cases.size()) << " programs: " << pairwise.size()
-            << " pairwise + " << cases.size() - pairwise.size() << " corners), " << jobs << " at a time, "
-            << "each min(" << number(maxSeconds) << " s, " << number(stepBudget) << " steps), timeout "
-            << number(timeout) << " s\n";
-
-  const auto gridStart = std::chrono::steady_clock::now();
-  std::vector<Run> done;
-  std::vector<Run> running;
-  while (!queue.empty() || !running.empty()) {
-    while (static_cast<int>(running.size()) < jobs && !queue.empty()) {
-      running.push_back(queue.front());
-      queue.pop_front();
-      start(running.back(), workDir);
-    }
-    bool finishedOne = false;
-    for (size_t k = 0; k < running.size();) {
-      Run& run = running[k];
-      int status = 0;
-      const pid_t got = waitpid(run.pid, &status, WNOHANG);
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.started).count();
-      if (got == 0 && elapsed > timeout) {
-        kill(-run.pid, SIGKILL);
-        kill(run.pid, SIGKILL);
-        waitpid(run.pid, &status, 0);
-        run.timedOut = true;
-      } else if (got == 0) {
-        ++k;
-        continue;
-      }
-      run.rawStatus = status;
-      run.wall = elapsed;
-      classify(run, strictOdeErrors);
-      if (!run.failed) removeTree(run.dir);
-      done.push_back(run);
-      running.erase(running.begin() + static_cast<long>(k));
-      finishedOne = true;
-    }
-    if (!finishedOne) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  const double gridWall = std::chrono::duration<double>(std::chrono::steady_clock::now() - gridStart).count();
-
-  // The table, in program order, then the summary.
+void printTable(const std::vector<Run>& done) {
   std::cout << std::left << std::setw(7) << "program" << ' ' << std::setw(7) << "step" << ' ' << std::setw(4) << "ERP"
             << ' ' << std::setw(6) << "CFM" << ' ' << std::setw(5) << "iter" << ' ' << std::setw(6) << "solver" << ' '
             << std::setw(6) << "sim s" << ' ' << std::setw(7) << "wall s" << ' ' << std::setw(10) << "result"
             << " detail\n";
+  for (const auto& run : done) {
+    const Settings& s = run.settings;
+    std::ostringstream wall;
+    wall << std::fixed << std::setprecision(2) << run.wall;
+    std::cout << std::left << std::setw(7) << run.name << ' ' << std::setw(7) << number(s.step) << ' '
+              << std::setw(4) << number(s.erp) << ' ' << std::setw(6) << number(s.cfm) << ' ' << std::setw(5)
+              << s.iterations << ' ' << std::setw(6) << s.solver << ' ' << std::setw(6) << number(run.seconds)
+              << ' ' << std::setw(7) << wall.str() << ' ' << std::setw(10) << run.result << ' ' << run.detail;
+    if (s.label != "pairwise") std::cout << "  [" << s.label << "]";
+    std::cout << '\n';
+    if (run.result != "ok") std::cout << "        replay: " << commandLine(run) << '\n';
+    if (run.failed) std::cout << "        kept for inspection: " << run.dir << '\n';
+  }
+}
+
+void printSummary(const std::vector<Run>& done, double gridWall) {
   std::map<std::string, std::map<std::string, int>> counts;
-  std::vector<std::string> programOrder;
-  for (const auto& program : programs) programOrder.push_back(baseName(program));
+  std::vector<std::string> order;
   int failures = 0;
-  for (const auto& name : programOrder)
-    for (const auto& run : done) {
-      if (run.name != name) continue;
-      const Settings& s = run.settings;
-      std::ostringstream wall;
-      wall << std::fixed << std::setprecision(2) << run.wall;
-      std::cout << std::left << std::setw(7) << run.name << ' ' << std::setw(7) << number(s.step) << ' '
-                << std::setw(4) << number(s.erp) << ' ' << std::setw(6) << number(s.cfm) << ' ' << std::setw(5)
-                << s.iterations << ' ' << std::setw(6) << s.solver << ' ' << std::setw(6) << number(run.seconds)
-                << ' ' << std::setw(7) << wall.str() << ' ' << std::setw(10) << run.result << ' ' << run.detail;
-      if (s.label != "pairwise") std::cout << "  [" << s.label << "]";
-      std::cout << '\n';
-      if (run.result != "ok") std::cout << "        replay: " << commandLine(run) << '\n';
-      if (run.failed) std::cout << "        kept for inspection: " << run.dir << '\n';
-      ++counts[run.name][run.result];
-      failures += run.failed ? 1 : 0;
-    }
+  for (const auto& run : done) {
+    if (!counts.count(run.name)) order.push_back(run.name);
+    ++counts[run.name][run.result];
+    failures += run.failed ? 1 : 0;
+  }
   std::cout << "\nsummary (runs per program):\n"
             << std::left << std::setw(8) << "program" << std::setw(5) << "ok" << std::setw(9) << "blew up"
             << std::setw(11) << "ODE error" << "FAILED\n";
-  for (const auto& name : programOrder) {
-    if (!counts.count(name)) continue;
+  for (const auto& name : order) {
     auto& c = counts[name];
     std::cout << std::setw(8) << name << std::setw(5) << c["ok"] << std::setw(9) << c["blew up"] << std::setw(11)
               << c["ODE error"] << c["FAILED"] << '\n';
   }
   std::cout << std::fixed << std::setprecision(1) << done.size() << " runs in " << gridWall << " s wall; "
             << failures << " FAILED\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int batch = 0;
+  int batches = 1;
+  double stepBudget = 10000;
+  double maxSeconds = 3;
+  std::string workDir = ".";
+  bool listOnly = false;
+  bool strictOdeErrors = false;
+  std::vector<std::string> programs;
+  CLI::App app{"Runs test programs headless at extreme ERP, CFM, step, iterations and solver settings (a pairwise "
+               "covering set plus corners) and checks that every run ends cleanly: 0, or a named blow-up (3) or "
+               "ODE error (4).",
+               "extreme_settings"};
+  app.add_option("--batch", batch, "run batch K: the grid settings whose index i has i mod B = K")
+      ->transform(checks::decimal())
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--batches", batches, "split the grid's settings into B batches")
+      ->transform(checks::decimal())
+      ->check(CLI::PositiveNumber);
+  app.add_option("--step-budget", stepBudget, "a run's most steps: it lasts min(--max-seconds, N x step)")
+      ->check(CLI::Range(1.0, 1e12));
+  app.add_option("--max-seconds", maxSeconds, "a run's most simulated seconds")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--work-dir", workDir, "each run's folder goes here (kept when the run FAILED)")
+      ->check(CLI::ExistingDirectory);
+  app.add_flag("--strict-ode-errors", strictOdeErrors, "an ODE error (exit 4) must also name the run's settings");
+  app.add_flag("--list", listOnly, "print the batch's command lines and exit");
+  app.add_option("programs", programs, "the test programs to run (their file names say which scene)")->required();
+  if (auto status = checks::parse(app, argc, argv, [&] {
+        if (batch >= batches)
+          throw CLI::ValidationError("--batch", std::to_string(batch) + " is not below --batches " +
+                                                    std::to_string(batches));
+      }))
+    return *status;
+
+  std::vector<Settings> cases;
+  try {
+    cases = extreme::gridSettings();
+  } catch (const std::logic_error& error) {
+    std::cerr << "extreme_settings: " << error.what() << '\n';
+    return 2;
+  }
+  std::vector<size_t> chosen;
+  for (size_t i = static_cast<size_t>(batch); i < cases.size(); i += static_cast<size_t>(batches)) chosen.push_back(i);
+  if (chosen.empty()) {
+    // A batch with nothing to run would pass while checking nothing.
+    std::cerr << "extreme_settings: error: batch " << batch << " of " << batches << " holds no setting: the grid has "
+              << cases.size() << " (set the batches in checks/hardening.cmake to at most that)\n";
+    return 2;
+  }
+
+  std::vector<Run> runs;
+  for (const auto& program : programs)
+    for (size_t index : chosen) {
+      Run run;
+      run.program = program;
+      run.name = baseName(program);
+      run.settings = cases[index];
+      const Settings& s = run.settings;
+      run.seconds = std::min(maxSeconds, stepBudget * s.step);
+      run.args = {"--headless",   "--seconds", number(run.seconds), "--step",   number(s.step),
+                  "--erp",        number(s.erp), "--cfm",           number(s.cfm), "--iterations",
+                  std::to_string(s.iterations), "--solver", s.solver};
+      for (auto& a : sceneArgs(run.name, run.seconds)) run.args.push_back(a);
+      runs.push_back(run);
+    }
+  if (listOnly) {
+    for (const auto& run : runs) std::cout << commandLine(run) << "    # " << run.settings.label << '\n';
+    return 0;
+  }
+  std::cout << "extreme settings: " << runs.size() << " runs (" << chosen.size() << " of the grid's " << cases.size()
+            << " settings, batch " << batch << " of " << batches << ", x " << programs.size()
+            << " programs), each min(" << number(maxSeconds) << " s, " << number(stepBudget) << " steps)\n";
+
+  const auto gridStart = std::chrono::steady_clock::now();
+  int failures = 0;
+  for (auto& run : runs) {
+    runToEnd(run, workDir);
+    classify(run, strictOdeErrors);
+    if (!run.failed) removeTree(run.dir);
+    failures += run.failed ? 1 : 0;
+  }
+  const double gridWall = std::chrono::duration<double>(std::chrono::steady_clock::now() - gridStart).count();
+  printTable(runs);
+  printSummary(runs, gridWall);
   return failures ? 1 : 0;
 }

@@ -11,13 +11,14 @@
 // (mark_fuzz_end_* in its metrics) and exit with status 0 on the final Esc.
 #include <SDL2/SDL.h>
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include "check_cli.h"
 
 namespace {
 
@@ -185,7 +186,8 @@ class ScriptWriter {
 int main(int argc, char** argv) {
   Options options;
   CLI::App app{"Writes a seeded random --events script: keys, modifiers, mouse motion, clicks, wheel, resizes; "
-               "then 'mark fuzz_end' and Esc."};
+               "then 'mark fuzz_end' and Esc.",
+               "fuzz_events"};
   app.add_option("--seed", options.seed, "the generator's seed; the same seed gives the same script")->required();
   app.add_option("--events", options.events, "how many random events")->check(CLI::Range(1, 10000000));
   app.add_option("--per-frame", options.perFrame, "events per frame on average (0 to twice this each frame)")
@@ -193,7 +195,7 @@ int main(int argc, char** argv) {
   app.add_option("--width", options.width, "the window's width at the start, in pixels")->check(CLI::Range(1, 8192));
   app.add_option("--height", options.height, "the window's height at the start, in pixels")->check(CLI::Range(1, 8192));
   app.add_option("--out", options.out, "write the script here rather than to standard output");
-  CLI11_PARSE(app, argc, argv);
+  if (auto status = checks::parse(app, argc, argv)) return *status;  // bad input: 2, as every check tool
 
   // SDL fills its keymap when the video subsystem starts; the dummy driver
   // needs no display.

@@ -11,23 +11,32 @@
 # 0/1e-3/1, iterations 1/20/1000, solver quick/step: a pairwise covering set
 # (15 settings in which every value of every parameter meets every value of
 # every other parameter) plus 6 extreme corners, 21 settings x 11 programs =
-# 231 runs of min(3 s, 10000 steps) simulated time each. No run may crash
-# (a signal) or hang (no end within 120 s); a blow-up must end with status 3
-# and a message naming the run's very settings, an ODE error with status 4
-# and ODE's message; any other end fails. The table lists every run.
+# 231 runs of min(3 s, 10000 steps) simulated time each (checks/extreme_grid.h).
+# No run may crash (a signal) or hang; a blow-up must end with status 3 and a
+# message naming the run's very settings, an ODE error with status 4 and
+# ODE's message naming them too; any other end fails.
+#
+# One CTest row per program and setting, extreme_settings_grid_<test>_<K>:
+# `ctest -j` runs them side by side, and a row with no end within its
+# TIMEOUT is a hang. The runner takes setting K of _grid_batches round
+# robin (--batch K --batches B), so a grid that grows still runs every
+# setting (a row then holds two), and one that shrinks below B fails the
+# empty row instead of checking less unnoticed.
 add_executable(extreme_settings extreme_settings.cpp)
-target_link_libraries(extreme_settings PRIVATE odelab_physics odelab_warnings)
-set(_grid_programs)
-foreach(_program IN LISTS ODELAB_PROGRAMS)
-  list(APPEND _grid_programs $<TARGET_FILE:${_program}>)
-endforeach()
+target_link_libraries(extreme_settings PRIVATE odelab_physics nlohmann_json::nlohmann_json odelab_warnings)
+set(_grid_batches 21)
+math(EXPR _grid_last "${_grid_batches} - 1")
 set(_grid_dir ${CMAKE_CURRENT_BINARY_DIR}/hardening/extreme_settings)
 file(MAKE_DIRECTORY ${_grid_dir})
-add_test(NAME extreme_settings_grid
-         COMMAND extreme_settings --jobs 2 --timeout 120 --step-budget 10000 --max-seconds 3 --strict-ode-errors
-                 --work-dir ${_grid_dir} ${_grid_programs})
-# It runs two programs at a time, so CTest counts it as two.
-set_tests_properties(extreme_settings_grid PROPERTIES PROCESSORS 2 TIMEOUT 1200 LABELS hardening)
+foreach(_program IN LISTS ODELAB_PROGRAMS)
+  foreach(_batch RANGE ${_grid_last})
+    set(_row extreme_settings_grid_${_program}_${_batch})
+    add_test(NAME ${_row}
+             COMMAND extreme_settings --batch ${_batch} --batches ${_grid_batches} --step-budget 10000
+                     --max-seconds 3 --strict-ode-errors --work-dir ${_grid_dir} $<TARGET_FILE:${_program}>)
+    set_tests_properties(${_row} PROPERTIES TIMEOUT 120 LABELS hardening)
+  endforeach()
+endforeach()
 
 # ---- shader folders and fonts that are wrong inside ------------------------------
 # Framework code, so test0 stands for all: one shader missing, one that does

@@ -11,6 +11,7 @@
 // usage error. Prints what it measured either way. The windowed checks use
 // it to see an overlay appear (the help panel: a large part of the middle
 // changes) where nothing else moves (the scene is paused).
+#include "check_cli.h"
 #include "stb_image_once.h"
 
 #include <algorithm>
@@ -26,46 +27,36 @@ struct Image {
   ~Image() { stbi_image_free(pixels); }
 };
 
-bool load(const char* path, Image& image) {
+bool load(const std::string& path, Image& image) {
   int channels = 0;
-  image.pixels = stbi_load(path, &image.width, &image.height, &channels, 3);
-  if (!image.pixels) std::printf("FAIL: cannot read %s as an image: %s\n", path, stbi_failure_reason());
+  image.pixels = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
+  if (!image.pixels) std::printf("FAIL: cannot read %s as an image: %s\n", path.c_str(), stbi_failure_reason());
   return image.pixels != nullptr;
-}
-
-int usage(const char* program) {
-  std::fprintf(stderr,
-               "usage: %s A.png B.png [--region X0,Y0,X1,Y1] [--threshold T] [--min-changed F] [--max-changed F]\n",
-               program);
-  return 2;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3) return usage(argv[0]);
+  std::string pathA, pathB;
   double region[4] = {0, 0, 1, 1};
   int threshold = 24;
   double minChanged = -1.0, maxChanged = 2.0;
-  for (int i = 3; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (i + 1 >= argc) return usage(argv[0]);
-    const char* value = argv[++i];
-    if (arg == "--region") {
-      if (std::sscanf(value, "%lf,%lf,%lf,%lf", &region[0], &region[1], &region[2], &region[3]) != 4)
-        return usage(argv[0]);
-    } else if (arg == "--threshold") {
-      threshold = std::atoi(value);
-    } else if (arg == "--min-changed") {
-      minChanged = std::atof(value);
-    } else if (arg == "--max-changed") {
-      maxChanged = std::atof(value);
-    } else {
-      return usage(argv[0]);
-    }
-  }
+  CLI::App app{"Measures how much of a region differs between two PNGs of one size; exit 0 when the changed "
+               "fraction is within the bounds, 1 when not.",
+               "png_compare"};
+  app.add_option("image_a", pathA, "the first PNG")->required();
+  app.add_option("image_b", pathB, "the second PNG")->required();
+  checks::addRegion(app, region, "the region compared, in fractions of the image (default: all of it)");
+  app.add_option("--threshold", threshold, "a pixel has changed when a channel differs by more than T (of 255)")
+      ->transform(checks::decimal())
+      ->check(CLI::Range(0, 255));
+  app.add_option("--min-changed", minChanged, "the changed fraction of the region must be at least F")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--max-changed", maxChanged, "the changed fraction of the region must be at most F")
+      ->check(CLI::Range(0.0, 1.0));
+  if (auto status = checks::parse(app, argc, argv)) return *status;
   Image a, b;
-  if (!load(argv[1], a) || !load(argv[2], b)) return 1;
+  if (!load(pathA, a) || !load(pathB, b)) return 1;
   if (a.width != b.width || a.height != b.height) {
     std::printf("FAIL: sizes differ: %dx%d and %dx%d\n", a.width, a.height, b.width, b.height);
     return 1;

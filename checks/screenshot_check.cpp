@@ -30,6 +30,7 @@
 //     MIN_LIT_FRACTION of its pixels lit and max(MIN_SHADOW_PIXELS,
 //     MIN_SHADOW_FRACTION of its pixels) cast-shadow pixels.
 //     Very dark and clipped pixels are skipped: their chromaticity is noise.
+#include "check_cli.h"
 #include "stb_image_once.h"
 
 #include <algorithm>
@@ -101,24 +102,6 @@ long countEnclosed(const std::vector<unsigned char>& grid, int width, int height
 }
 
 double luminanceOf(const unsigned char* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
-
-bool parseOptions(int argc, char** argv, Options& options) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--size" && i + 1 < argc) {
-      if (std::sscanf(argv[++i], "%dx%d", &options.width, &options.height) != 2) return false;
-    } else if (arg == "--region" && i + 1 < argc) {
-      double* r = options.region;
-      if (std::sscanf(argv[++i], "%lf,%lf,%lf,%lf", &r[0], &r[1], &r[2], &r[3]) != 4) return false;
-      if (!(0 <= r[0] && r[0] < r[2] && r[2] <= 1 && 0 <= r[1] && r[1] < r[3] && r[3] <= 1)) return false;
-    } else if (!arg.empty() && arg[0] != '-' && options.path.empty()) {
-      options.path = arg;
-    } else {
-      return false;
-    }
-  }
-  return !options.path.empty();
-}
 
 double percentile(std::vector<double> values, double fraction) {
   if (values.empty()) return 0.0;
@@ -199,10 +182,27 @@ bool surfaceShowsCastShadow(const std::vector<Pixel>& pixels, double chromaR, do
 
 int main(int argc, char** argv) {
   Options options;
-  if (!parseOptions(argc, argv, options)) {
-    std::fprintf(stderr, "usage: %s FILE.png [--size WxH] [--region X0,Y0,X1,Y1]\n", argv[0]);
-    return 2;
-  }
+  CLI::App app{"Checks a window screenshot: its size, not blank, and a shadow cast onto a lit surface. Exit 0 when "
+               "every check passes, 1 when one fails.",
+               "screenshot_check"};
+  app.add_option("file", options.path, "the screenshot (PNG)")->required();
+  app.add_option_function<std::string>(
+         "--size",
+         [&options](const std::string& text) {
+           char tail = 0;
+           if (std::sscanf(text.c_str(), "%dx%d%c", &options.width, &options.height, &tail) != 2 ||
+               options.width < 1 || options.height < 1)
+             throw CLI::ValidationError("--size", "'" + text + "' is not WxH");
+         },
+         "the image's expected size (default 1280x720)")
+      ->type_name("WxH");
+  checks::addRegion(app, options.region, "the region analysed, in fractions of the image (default 0,0.25,1,1)");
+  if (auto status = checks::parse(app, argc, argv, [&options] {
+        const double* r = options.region;
+        if (!(0 <= r[0] && r[0] < r[2] && r[2] <= 1 && 0 <= r[1] && r[1] < r[3] && r[3] <= 1))
+          throw CLI::ValidationError("--region", "needs 0 <= X0 < X1 <= 1 and 0 <= Y0 < Y1 <= 1");
+      }))
+    return *status;
   int width = 0, height = 0, channels = 0;
   unsigned char* data = stbi_load(options.path.c_str(), &width, &height, &channels, 3);
   if (!data) {
