@@ -18,8 +18,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$root/build}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
-# Debian packages: compiler and build tools, the libraries, the HUD font
-# (nlohmann-json3-dev for the unit check of checks/file_rules.json); for
+# Debian packages: compiler and build tools, the libraries, the HUD font; for
 # the windowed checks an X server with Mesa's software OpenGL; for the lab's
 # report (lab/odelab-report) Debian's Python with matplotlib and tqdm.
 # The peer engines (peers/, doc/peers.md): Bullet and MuJoCo (whose CMake
@@ -54,11 +53,12 @@ windows_packages=(
 web_packages=(emscripten ninja-build dpkg-dev nodejs chromium)
 command -v npm >/dev/null || web_packages+=(npm)
 
-# What `run` needs for one program in a window: no checks, peers or lab.
+# What `run` needs for one program in a window: no checks, peers or lab
+# (nlohmann-json3-dev: every program reads and writes its metrics with it).
 window_packages=(
   g++ make cmake pkg-config
   libode-dev libsdl2-dev libsdl2-ttf-dev libglew-dev libgl-dev
-  libcli11-dev libstb-dev libglm-dev libimgui-dev
+  libcli11-dev libstb-dev libglm-dev libimgui-dev nlohmann-json3-dev
   fonts-dejavu-core
 )
 

@@ -9,7 +9,9 @@
 namespace odelab {
 
 // A flat, ordered set of named numbers: what a run measured. Printed as
-// "name = value" lines and written as a flat JSON object of numbers.
+// "name = value" lines and written as a flat JSON object of numbers, one a
+// line, with the same digits: whole numbers exact, the rest to 10
+// significant digits (Metrics.cpp, formatNumber, says why).
 class Metrics {
  public:
   void set(const std::string& name, double value);  // replaces an existing entry
@@ -30,8 +32,10 @@ class Metrics {
   std::unordered_map<std::string, size_t> index_;
 };
 
-// Parses a flat JSON object of numbers (as written by Metrics::toJson); throws
-// std::runtime_error with the offending position on malformed input.
+// Parses a flat JSON object of numbers and nulls (as written by
+// Metrics::toJson; null reads as NaN); throws std::runtime_error "metrics
+// JSON: ..." with the line and column of malformed input, or naming the
+// metric whose value is not a number.
 Metrics parseMetricsJson(const std::string& text);
 
 }  // namespace odelab

@@ -15,13 +15,14 @@ say() { printf 'web: %s\n' "$*" >&2; }
 export NODE_PATH=${NODE_PATH:-/usr/share/nodejs}
 deps=$("$here/build-deps.sh" | tail -n 1)
 
-# glm, CLI11 and stb are header-only: Debian's headers are used as they are,
-# through a folder holding just them (all of /usr/include would bring
-# glibc's headers in front of Emscripten's).
+# glm, CLI11, stb and nlohmann-json are header-only: Debian's headers are
+# used as they are, through a folder holding just them (all of /usr/include
+# would bring glibc's headers in front of Emscripten's).
 headers=$build/system-headers
 mkdir -p "$headers"
-for dir in /usr/include/glm /usr/include/CLI /usr/include/stb; do
-  [ -d "$dir" ] || { say "error: $dir is missing (apt-get install libglm-dev libcli11-dev libstb-dev)"; exit 1; }
+for dir in /usr/include/glm /usr/include/CLI /usr/include/stb /usr/include/nlohmann; do
+  [ -d "$dir" ] ||
+    { say "error: $dir is missing (apt-get install libglm-dev libcli11-dev libstb-dev nlohmann-json3-dev)"; exit 1; }
   ln -sfn "$dir" "$headers/$(basename "$dir")"
 done
 font=/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf

@@ -35,7 +35,7 @@ RECIPE=1
 launcher=()
 command -v ccache >/dev/null && launcher=(ccache)
 
-packages=(ode libsdl2 freetype libsdl2-ttf glew imgui libstb glm cli11)
+packages=(ode libsdl2 freetype libsdl2-ttf glew imgui libstb glm cli11 nlohmann-json3)
 mapfile -t sources < <("$root/scripts/deps/debian-source.sh" "$cache/windows-src" "${packages[@]}")
 [ ${#sources[@]} -eq ${#packages[@]} ] || { say "error: not every source package was unpacked"; exit 1; }
 src() { # the unpacked folder of one package
@@ -119,7 +119,8 @@ log sdl2-ttf-configure sh -c "cd '$dir' && ./configure ${configure_flags[*]} --d
 log sdl2-ttf-build make -C "$dir" -j"$jobs" install
 
 # The rest are built by hand: GLEW is one C file, Dear ImGui and stb have no
-# build of their own for Windows, glm and CLI11 are headers only.
+# build of their own for Windows, glm, CLI11 and nlohmann-json are headers
+# only.
 compile_archive() { # compile_archive LIBRARY COMPILER FLAGS... -- SOURCES...
   local library=$1 compiler=$2 flags=() objects=() source object
   shift 2
@@ -171,9 +172,12 @@ compile_archive imgui "$CXX" -O2 -I"$dir" $(pkg-config --cflags sdl2) -- \
   "$dir"/backends/imgui_impl_sdl.cpp "$dir"/backends/imgui_impl_opengl3.cpp
 pc imgui "$(version_of imgui)" '-I${prefix}/include/imgui' '-L${prefix}/lib -limgui -lopengl32' sdl2
 
-say "glm, CLI11"
+say "glm, CLI11, nlohmann-json"
 cp -a "$(src glm)/glm" "$prefix/include/"
 cp -a "$(src cli11)/include/CLI" "$prefix/include/"
+# The headers as Debian's nlohmann-json3-dev installs them (not the one-file
+# single_include/ copy); no CMake package: CMakeLists.txt finds the header.
+cp -a "$(src nlohmann-json3)/include/nlohmann" "$prefix/include/"
 
 touch "$prefix/.complete"
 say "built $prefix in $(($(date +%s) - started)) s"
