@@ -58,8 +58,11 @@ void AbstractWindow::stepKnob(Knob& knob, int direction) {
 
 void AbstractWindow::changeKnob(Knob& knob, double value, const char* source) {
   const bool byKey = std::string(source) == "key";
+  const double oldErp = tuning_.settings_.erp, oldCfm = tuning_.settings_.cfm;
   const std::string change = knob.set(value);
   if (change.empty()) return;
+  if (knob.appliesToWorld)
+    run_.carryWorldErpCfmToBallJoints(oldErp, oldCfm, tuning_.settings_.erp, tuning_.settings_.cfm);
   logAction(byKey ? change : std::string(source) + ": " + change);
   if (knob.appliesToWorld) {
     applySettings(change);  // the world takes it at once; notifies, and tells the scene

@@ -94,6 +94,17 @@ void WorldRun::freeThreading() {
   stepThreading_ = nullptr;
 }
 
+void WorldRun::carryWorldErpCfmToBallJoints(double oldErp, double oldCfm, double erp, double cfm) const {
+  std::set<dJointID> joints;
+  for (const dBodyID body : bodiesOf(objects_))
+    for (int i = 0; i < dBodyGetNumJoints(body); ++i) joints.insert(dBodyGetJoint(body, i));
+  for (const dJointID joint : joints) {
+    if (dJointGetType(joint) != dJointTypeBall) continue;
+    if (dJointGetBallParam(joint, dParamERP) == oldErp) dJointSetBallParam(joint, dParamERP, erp);
+    if (dJointGetBallParam(joint, dParamCFM) == oldCfm) dJointSetBallParam(joint, dParamCFM, cfm);
+  }
+}
+
 std::string WorldRun::stateProblem() const {
   auto length = [](const dReal* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
   for (const auto& object : objects_) {
