@@ -50,15 +50,15 @@ class BoxAndSphere : public AbstractWindow {
                               .defaultPickedByScene());  // spawnInterval(): 1 s headless unless given
     declare(Knob::integer("spawn_count", "spawn count (0: no limit)", spawnLimit_, 0, 1000000000)
                 .withOption("--spawn-count", "stop spawning after N objects (0 = no limit)"));
+    declare(Knob::choice(
+                "spawn_shapes", "timed spawns", SPAWN_SHAPES, {},
+                [this] { return static_cast<int>(std::find(SPAWN_SHAPES.begin(), SPAWN_SHAPES.end(), spawnShapes_) -
+                                                 SPAWN_SHAPES.begin()); },
+                [this](int choice) { spawnShapes_ = SPAWN_SHAPES.at(static_cast<size_t>(choice)); })
+                .withOption("--spawn-shapes",
+                            "what timed spawning drops: both (alternately), box or sphere. Spheres have no rolling "
+                            "resistance in ODE and may roll off the platform"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
-  }
-
-  void addOptions(CLI::App& app) override {
-    app.add_option("--spawn-shapes", spawnShapes_,
-                   "what timed spawning drops: both (alternately), box or sphere. Spheres have no rolling "
-                   "resistance in ODE and may roll off the platform")
-        ->check(CLI::IsMember({"both", "box", "sphere"}))
-        ->capture_default_str();
   }
 
  protected:
@@ -235,6 +235,7 @@ class BoxAndSphere : public AbstractWindow {
   double spawnInterval_ = 0.0;
   const Knob* spawnKnob_ = nullptr;
   int spawnLimit_ = 0;
+  inline static const std::vector<std::string> SPAWN_SHAPES{"both", "box", "sphere"};
   std::string spawnShapes_ = "both";
 };
 
