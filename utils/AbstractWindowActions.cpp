@@ -34,6 +34,8 @@ Knob& AbstractWindow::declare(Knob declared) {
     session_.rewind_.keep(*knob.count);
   else if (knob.value)
     session_.rewind_.keep(*knob.value);
+  else if (knob.on)
+    session_.rewind_.keep(*knob.on);
   Knob* stepped = &knob;
   if (knob.key != SDLK_UNKNOWN)
     keys_.bind({knob.key, knob.keyName, knob.keyHelp,

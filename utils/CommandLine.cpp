@@ -200,6 +200,10 @@ void addKnobOptions(CLI::App& app, std::deque<Knob>& knobs) {
   for (Knob& knob : knobs) {
     if (knob.option.empty()) continue;
     Knob* target = &knob;
+    if (knob.kind == KnobKind::Switch) {  // a flag: given, it turns the switch on ("--ccd=false" too is read)
+      knob.parsed = app.add_flag(knob.option, *knob.on, knob.help);
+      continue;
+    }
     const std::string range = knob.rangeText();
     CLI::Option* option = app.add_option_function<std::string>(
         knob.option, [target](const std::string& text) { target->set(target->parse(text)); }, knob.help);
@@ -250,7 +254,10 @@ std::string settingsJson(const std::deque<Knob>& knobs) {
     entry["name"] = knob.name;
     entry["option"] = knob.option;
     entry["key"] = knob.keyName;
-    if (knob.kind == KnobKind::Choice) {
+    if (knob.kind == KnobKind::Switch) {
+      entry["default"] = knob.get() > 0;
+      entry["kind"] = "switch";
+    } else if (knob.kind == KnobKind::Choice) {
       entry["choices"] = knob.choices;
       entry["default"] = knob.words();
       entry["kind"] = "choice";

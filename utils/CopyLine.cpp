@@ -20,9 +20,17 @@ bool givenFlag(const std::vector<LineOption>& given, const std::string& flag) {
   return false;
 }
 
+// Whether the line carries `flag`: given as the scene's own option, or a switch knob's that is on.
+bool carries(const std::string& flag, const std::deque<Knob>& knobs, const std::vector<LineOption>& given) {
+  for (const Knob& knob : knobs)
+    if (knob.kind == KnobKind::Switch && knob.option == flag && knob.get() > 0) return true;
+  return givenFlag(given, flag);
+}
+
 // Whether naming the knob on a command line starts the run it is in now.
-bool named(const Knob& knob, const std::vector<LineOption>& given) {
-  if (!knob.companion.empty() && !givenFlag(given, knob.companion)) return false;
+bool named(const Knob& knob, const std::deque<Knob>& knobs, const std::vector<LineOption>& given) {
+  if (!knob.companion.empty() && !carries(knob.companion, knobs, given)) return false;
+  if (knob.kind == KnobKind::Switch) return knob.get() > 0;  // a flag names only "on"
   if (!knob.accepts(knob.get())) return false;
   const bool given_ = knob.parsed && knob.parsed->count() > 0;
   return !knob.sceneDefault || given_ || knob.get() != knob.initial;
@@ -55,7 +63,9 @@ std::vector<LineOption> givenOptions(const std::vector<const CLI::Option*>& scen
 std::vector<LineOption> tuningOptions(const std::deque<Knob>& knobs, unsigned seed, const std::vector<LineOption>& given) {
   std::vector<LineOption> line;
   for (const Knob& knob : knobs)
-    if (!knob.option.empty() && named(knob, given)) line.push_back({knob.option, knob.optionText()});
+    if (!knob.option.empty() && named(knob, knobs, given))
+      line.push_back(knob.kind == KnobKind::Switch ? LineOption{knob.option, "", true}
+                                                   : LineOption{knob.option, knob.optionText()});
   line.push_back({"--seed", std::to_string(seed)});
   line.insert(line.end(), given.begin(), given.end());
   return line;

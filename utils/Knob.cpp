@@ -46,6 +46,17 @@ Knob Knob::interval(std::string name, std::string label, double& value, double m
   return knob;
 }
 
+Knob Knob::toggle(std::string name, std::string label, bool& on) {
+  Knob knob;
+  knob.name = std::move(name);
+  knob.label = std::move(label);
+  knob.on = &on;
+  knob.max = 1;
+  knob.kind = KnobKind::Switch;
+  knob.initial = knob.get();
+  return knob;
+}
+
 Knob Knob::choice(std::string name, std::string label, std::vector<std::string> words,
                   std::vector<std::string> odeNames, std::function<int()> get, std::function<void(int)> set) {
   Knob knob;
@@ -139,6 +150,7 @@ Knob& Knob::worldSetting(std::string headerKey, std::string messageWords, int ra
 
 double Knob::get() const {
   if (read) return read();
+  if (on) return *on ? 1.0 : 0.0;
   return count ? *count : *value;
 }
 
@@ -146,9 +158,11 @@ std::string Knob::set(double newValue) {
   if (std::isnan(newValue)) return {};
   const double from = get();
   double to = offAtZero && newValue <= 0 ? 0.0 : std::min(max, std::max(min, newValue));
-  if (kind == KnobKind::Choice || count) to = std::round(to);
+  if (kind == KnobKind::Choice || kind == KnobKind::Switch || count) to = std::round(to);
   if (write)
     write(to);
+  else if (on)
+    *on = to > 0;
   else if (count)
     *count = static_cast<int>(to);
   else
@@ -160,6 +174,7 @@ std::string Knob::set(double newValue) {
 
 double Knob::next(int direction) const {
   if (stepper) return stepper(get(), direction);
+  if (kind == KnobKind::Switch) return get() > 0 ? 0.0 : 1.0;
   if (kind == KnobKind::Choice) {
     const int n = static_cast<int>(choices.size());
     return (static_cast<int>(get()) + (direction >= 0 ? 1 : n - 1)) % n;
@@ -172,17 +187,19 @@ bool Knob::accepts(double candidate) const {
   // Infinity only where the range reaches it (max is infinity).
   if (std::isnan(candidate) || candidate == -INF) return false;
   if (offAtZero && candidate == 0) return true;
-  if ((kind == KnobKind::Integer || kind == KnobKind::Choice) && candidate != std::floor(candidate)) return false;
+  if (kind != KnobKind::Real && kind != KnobKind::Interval && candidate != std::floor(candidate)) return false;
   return candidate >= min && candidate <= max;
 }
 
 std::string Knob::words(double v) const {
+  if (kind == KnobKind::Switch) return v > 0 ? "on" : "off";
   if (kind == KnobKind::Choice) return choices.at(static_cast<size_t>(v));
   if (std::isinf(v)) return "infinite";
   return formatValue(v);
 }
 
 std::string Knob::rangeText() const {
+  if (kind == KnobKind::Switch) return "off, or on with the flag";
   if (kind == KnobKind::Choice) {
     std::string text;
     for (size_t i = 0; i < choices.size(); ++i)
@@ -197,12 +214,13 @@ std::string Knob::rangeText() const {
 std::string Knob::optionText() const {
   // The shortest text that reads back as the same double, which is what the
   // option's parser does with it; counts are whole; infinity as "inf".
-  if (kind == KnobKind::Choice) return words();
+  if (kind == KnobKind::Choice || kind == KnobKind::Switch) return words();
   return std::isinf(get()) ? "inf" : shortestNumber(get());
 }
 
 std::string Knob::headerText() const {
   const double v = get();
+  if (kind == KnobKind::Switch) return words();
   if (kind == KnobKind::Choice) {
     const auto i = static_cast<size_t>(v);
     return choices.at(i) + (i < choiceNames.size() ? " (" + choiceNames[i] + ")" : "");

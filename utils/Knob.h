@@ -14,8 +14,9 @@ namespace odelab {
 
 // What a knob's number is: any value in its range, a whole number, a span
 // of simulated time that has to hold at least one step (a row, a spawn, a
-// throw per step at most), or one of a few named choices (its index).
-enum class KnobKind { Real, Integer, Interval, Choice };
+// throw per step at most), one of a few named choices (its index), or a
+// switch (1 on, 0 off; its option is a flag, given to turn it on).
+enum class KnobKind { Real, Integer, Interval, Choice, Switch };
 
 // Where the panel shows a knob, under one header each.
 enum class KnobGroup { World, Contacts, Scene };
@@ -37,6 +38,7 @@ struct Knob {
   // a writer of its index.
   double* value = nullptr;
   int* count = nullptr;
+  bool* on = nullptr;  // Switch
   std::function<double()> read;
   std::function<void(double)> write;
   double min = 0, max = 0;  // max is infinity where the option takes "inf" (mu)
@@ -77,6 +79,7 @@ struct Knob {
   static Knob real(std::string name, std::string label, std::string unit, double& value, double min, double max);
   static Knob integer(std::string name, std::string label, int& value, int min, int max);
   static Knob interval(std::string name, std::string label, double& value, double min, double max);
+  static Knob toggle(std::string name, std::string label, bool& on);
   static Knob choice(std::string name, std::string label, std::vector<std::string> words,
                      std::vector<std::string> odeNames, std::function<int()> get, std::function<void(int)> set);
 

@@ -31,8 +31,6 @@ import subprocess
 import sys
 import tempfile
 
-# The contact choices' knobs take the contact choices' own options.
-CONTACT_OPTIONS = {"mu": "--mu", "max_contacts": "--max-contacts"}
 
 
 def run(program, args, folder, timeout=300):
@@ -78,11 +76,17 @@ def check_names(program, args):
     if name != os.path.basename(program):
         failures.append(f"the line starts with {name!r}, not the program's name")
     for entry in json.loads(listing.stdout):
-        option = entry["option"] or CONTACT_OPTIONS.get(entry["name"], "")
+        option = entry["option"]
         if not option:
             failures.append(f"{entry['name']}: listed without an option the line could name")
             continue
         value = entry["default"]
+        if entry["kind"] == "switch":  # a flag, on the line only while on
+            if value and option not in options:
+                failures.append(f"{entry['name']}: on, but {option} is not on the line")
+            elif not value and option in options:
+                failures.append(f"{entry['name']}: off, but {option} is on the line")
+            continue
         if option not in options:
             given = option in args or any(arg.startswith(option + "=") for arg in args)
             if entry.get("only_with") and entry["only_with"] not in options:

@@ -61,6 +61,8 @@ def main():
         option = entry["option"]
         if not option:
             continue  # a panel-only knob
+        if entry["kind"] == "switch":
+            continue  # a flag: no bounds (settings_listing.py checks it turns on)
         if entry["kind"] == "choice":
             for choice in entry["choices"]:
                 status, _, stderr = run(program, [option, choice])

@@ -14,8 +14,9 @@ For every program and every setting it lists:
   naming the option: just below min, just above a finite max, and inf
   where max is finite (where max is "inf", inf is taken);
 - the kind is the option's: a whole number takes no fraction, a real one does.
-Choices: the default is one of them. Only parsing is run (--list-settings
-exits before any simulation).
+Choices: the default is one of them. Switches: the default is true or
+false, and the flag alone lists it back as true. Only parsing is run
+(--list-settings exits before any simulation).
 """
 import json
 import math
@@ -23,7 +24,7 @@ import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
-KINDS = {"integer", "real", "interval", "choice"}
+KINDS = {"integer", "real", "interval", "choice", "switch"}
 
 
 def run(program, args):
@@ -89,6 +90,15 @@ def check_entry(program, entry, step_min, help_text):
         fail(f"{option} is not in --help")
     if kind not in KINDS:
         return failures + [f"{name}: kind {kind!r} is none of {sorted(KINDS)}"]
+    if kind == "switch":
+        if not isinstance(entry["default"], bool):
+            fail(f"a switch's default {entry['default']!r} is not true or false")
+        status, out, err = run(program, [option])
+        if status != 0:
+            fail(f"{option}: status {status}: {err.strip()}")
+        elif next(e for e in json.loads(out) if e["name"] == name)["default"] is not True:
+            fail(f"{option} given, the switch is not listed as on")
+        return failures
     if kind == "choice":
         if entry["default"] not in entry["choices"]:
             fail(f"default {entry['default']!r} is none of {entry['choices']}")

@@ -93,11 +93,25 @@ class MaximumVelocity : public AbstractWindow {
                             "launch each cube turning at this rate (rad/s) about a random axis (from --seed): a limit "
                             "of --ccd, whose step model is a constant turn"));
     // T (tunnelling): C is the shared key for the contact markers.
-    bindKey(SDLK_t, "T",
-            "continuous collision for fast bodies on / off (--ccd): sweep each fast body's step against "
-            "the static geometry",
-            [this](int) { toggleCcd(); });
-    keepAcrossRewind(ccd_);
+    declare(Knob::toggle("ccd", "continuous collision for fast bodies", ccd_)
+                .withOption("--ccd",
+                            "continuous collision for fast bodies: before each step, a body whose points may move more "
+                            "than half its smallest half-extent in the step is swept along its motion (turning "
+                            "included) against the static geometry, moved to its first touching pose and given "
+                            "contacts for the corners on their way in, so the contacts stop it (window: T); off: the "
+                            "thesis's behaviour")
+                .withKey(SDLK_t, "T",
+                         "continuous collision for fast bodies on / off (--ccd): sweep each fast body's step against "
+                         "the static geometry"));
+    declare(Knob::toggle("phase_jitter", "launch phase jitter", phaseJitter_)
+                .withOption("--phase-jitter",
+                            "start each launch up to one step's travel behind [-4, 3, 0] (uniform, from --seed), so "
+                            "the cube meets the wall at a random phase of the step; off: the thesis's fixed launch "
+                            "point"));
+    declare(Knob::toggle("random_orientation", "launch at a random orientation", randomOrientation_)
+                .withOption("--random-orientation",
+                            "launch each cube turned to a uniformly random orientation (from --seed), so it meets the "
+                            "wall with a corner or an edge first; off: unturned, face on (the thesis's)"));
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
   }
 
@@ -105,17 +119,6 @@ class MaximumVelocity : public AbstractWindow {
     app.add_flag("--find-max-velocity", findMaxVelocity_,
              "headless: scan launch velocities from 1 m/s, every 1 m/s up to 1000 m/s and every 0.1% above, "
              "for the highest velocity at which every launch so far was stopped");
-    app.add_flag("--phase-jitter", phaseJitter_,
-             "start each launch up to one step's travel behind [-4, 3, 0] (uniform, from --seed), so the "
-             "cube meets the wall at a random phase of the step; off: the thesis's fixed launch point");
-    app.add_flag("--random-orientation", randomOrientation_,
-             "launch each cube turned to a uniformly random orientation (from --seed), so it meets the wall "
-             "with a corner or an edge first; off: unturned, face on (the thesis's)");
-    app.add_flag("--ccd", ccd_,
-             "continuous collision for fast bodies: before each step, a body whose points may move more than "
-             "half its smallest half-extent in the step is swept along its motion (turning included) against "
-             "the static geometry, moved to its first touching pose and given contacts for the corners on "
-             "their way in, so the contacts stop it (window: T); off: the thesis's behaviour");
   }
 
  protected:
@@ -229,10 +232,6 @@ class MaximumVelocity : public AbstractWindow {
     return std::max(F5_FINE_STEP, velocity + direction * (coarse ? F5_COARSE_STEP : F5_FINE_STEP));
   }
 
-  void toggleCcd() {
-    ccd_ = !ccd_;
-    notify(std::string("continuous collision for fast bodies ") + (ccd_ ? "on" : "off"));
-  }
 
   void launch(double velocity) {
     Box& cube = add<Box>(world(), space(), CUBE_SIDE, CUBE_SIDE, CUBE_SIDE, CUBE_MASS);

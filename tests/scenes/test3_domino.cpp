@@ -81,12 +81,11 @@ class Domino : public AbstractWindow {
                             "auto-disable linear (m/s) and angular (rad/s) velocity threshold (default the "
                             "thesis's 0.1; ODE's own is 0.01)")
                 .rebuildsScene());
+    declare(Knob::toggle("no_auto_disable", "auto-disable off", noAutoDisable_)
+                .withOption("--no-auto-disable",
+                            "keep every body active (the thesis: very slow) instead of auto-disable with thresholds 0.1")
+                .rebuildsScene());
     useContactChoices(DEFAULT_MU);
-  }
-
-  void addOptions(CLI::App& app) override {
-    app.add_flag("--no-auto-disable", noAutoDisable_,
-             "keep every body active (the thesis: very slow) instead of auto-disable with thresholds 0.1");
   }
 
  protected:

@@ -74,8 +74,6 @@ class ManyCollisions : public AbstractWindow {
            "collision space: simple, hash (dHashSpaceCreate), sap (sweep and prune) or quadtree")
         ->check(CLI::IsMember({"simple", "hash", "sap", "quadtree"}))
         ->default_str("simple");
-    app.add_flag("--auto-disable", autoDisable_,
-             "let ODE disable resting plates (default off: the thesis found it freezes plates in the air)");
   }
 
  protected:
@@ -214,6 +212,10 @@ class ManyCollisions : public AbstractWindow {
                             "drop a plate every S simulated seconds (default: 0.3 headless; in the window the "
                             "first plate at once, then N)")
                 .defaultPickedByScene());
+    declare(Knob::toggle("auto_disable", "auto-disable", autoDisable_)
+                .withOption("--auto-disable",
+                            "let ODE disable resting plates (default off: the thesis found it freezes plates in the air)")
+                .rebuildsScene());
     declare(Knob::real("auto_disable_linear", "auto-disable linear threshold", "m/s", disableLinear_, 0.0, 1e6)
                                .withOption("--auto-disable-linear",
                                            "auto-disable linear velocity threshold, m/s (default ODE's 0.01; the "

@@ -355,6 +355,16 @@ void ControlPanel::knobs(AbstractWindow& scene) {
 }
 
 void ControlPanel::knobRow(AbstractWindow& scene, int index, const Knob& knob) {
+  if (knob.kind == KnobKind::Switch) {
+    const std::string effect = knob.effectText();
+    bool on = knob.get() > 0;
+    const std::string label = knob.label + (knob.keyName.empty() ? "" : "   " + knob.keyName) +
+                              (effect.empty() ? "" : "; " + effect);
+    if (ImGui::Checkbox(label.c_str(), &on)) scene.changeKnob(index, on ? 1 : 0);
+    if (ImGui::IsItemHovered() && !knob.help.empty())
+      ImGui::SetTooltip("%s\n%s", knob.option.c_str(), knob.help.c_str());
+    return;
+  }
   if (knob.kind == KnobKind::Choice) {
     ImGui::TextUnformatted((knob.label + (knob.keyName.empty() ? "" : "   " + knob.keyName)).c_str());
     int choice = static_cast<int>(knob.get());
