@@ -352,7 +352,9 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
   const std::vector<const Knob*> knobs = tuning_.inReportOrder();
   auto next = knobs.begin();
   for (; next != knobs.end() && (*next)->appliesToWorld; ++next) description.push_back({(*next)->headerKey(), (*next)->headerText()});
-  description.push_back({"space", spaceKindName(run_.spaceKind_)});
+  // Where a scene tunes the collision space with a knob (test5), the knob's line says it.
+  const bool spaceKnob = std::any_of(knobs.begin(), knobs.end(), [](const Knob* k) { return k->headerKey() == "space"; });
+  if (!spaceKnob) description.push_back({"space", spaceKindName(run_.spaceKind_)});
   description.push_back({"seed", std::to_string(options_.seed)});
   // The run length asked for; the file's last line says whether it was reached.
   description.push_back({"run_seconds_asked", options_.seconds > 0 ? formatValue(options_.seconds)

@@ -55,8 +55,18 @@ class ManyCollisions : public AbstractWindow {
   ManyCollisions() : AbstractWindow(settingsForThisScene()) {
     bindKey(SDLK_n, "N", "drop a plate [5, 0.05, 5] at height 6 (or 1 m above the stack once it nears 6 m)",
             [this](int) { spawnPlate(); });
-    bindKey(SDLK_q, "Q", "next collision space: simple -> hash -> sap -> quadtree (Shift: back)",
-            [this](int direction) { cycleSpace(direction); });
+    // Read where it is in force: --space before the world is made, the
+    // world's space after (Q changes it at once, and it persists across R).
+    declare(Knob::choice(
+                "space", "collision space", {"simple", "hash", "sap", "quadtree"},
+                {"dSimpleSpaceCreate", "dHashSpaceCreate", "dSweepAndPruneSpaceCreate", "dQuadTreeSpaceCreate"},
+                [this] { return static_cast<int>(world() ? spaceKind() : requestedSpace_); },
+                [this](int choice) {
+                  requestedSpace_ = static_cast<SpaceKind>(choice);
+                  if (world()) setSpaceKind(requestedSpace_);
+                })
+                .withOption("--space", "collision space: simple, hash (dHashSpaceCreate), sap (sweep and prune) or quadtree")
+                .withKey(SDLK_q, "Q", "next collision space: simple -> hash -> sap -> quadtree (Shift: back)"));
     declareKnobs();
     useContactChoices(dInfinity);  // the thesis names no friction here: never slides
     timeSteps();                   // ms_per_step and the collide cost read each step's wall time
@@ -66,14 +76,6 @@ class ManyCollisions : public AbstractWindow {
   // freed; the base destroys the world only after this destructor.
   ~ManyCollisions() override {
     if (world()) dWorldSetStepThreadingImplementation(world(), nullptr, nullptr);
-  }
-
-  void addOptions(CLI::App& app) override {
-    app.add_option_function<std::string>(
-           "--space", [this](const std::string& text) { parseSpaceKind(text, requestedSpace_); },
-           "collision space: simple, hash (dHashSpaceCreate), sap (sweep and prune) or quadtree")
-        ->check(CLI::IsMember({"simple", "hash", "sap", "quadtree"}))
-        ->default_str("simple");
   }
 
  protected:
@@ -89,7 +91,7 @@ class ManyCollisions : public AbstractWindow {
       if (!islandThreads_) islandThreads_ = std::make_unique<IslandThreads>(threads_);
       islandThreads_->attach(world());
     }
-    if (!spaceChosen_) {  // --space once; later Q presses persist across R
+    if (!spaceChosen_) {  // --space once; later changes (Q, the panel) persist across R
       setSpaceKind(requestedSpace_);
       spaceChosen_ = true;
     }
@@ -261,18 +263,6 @@ class ManyCollisions : public AbstractWindow {
     const float shade = 0.55f + 0.4f * static_cast<float>(plates_.size() % 5) / 4.0f;
     plate.color = Color{shade, 0.75f * shade, 0.35f};
     plates_.add(&plate, simulatedTime());
-  }
-
-  void cycleSpace(int direction) {
-    static const SpaceKind order[] = {SpaceKind::Simple, SpaceKind::Hash, SpaceKind::SweepAndPrune,
-                                      SpaceKind::QuadTree};
-    const int count = 4;
-    int index = 0;
-    while (order[index] != spaceKind()) ++index;
-    const SpaceKind next = order[(index + count + direction) % count];
-    const std::string before = spaceKindName(spaceKind());
-    setSpaceKind(next);
-    notify("collision space " + before + " -> " + spaceKindName(next));
   }
 
   PlateStack plates_;
