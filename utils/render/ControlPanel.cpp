@@ -360,8 +360,13 @@ void ControlPanel::knobRow(AbstractWindow& scene, int index, const Knob& knob) {
     bool on = knob.get() > 0;
     const std::string label = knob.label + (knob.keyName.empty() ? "" : "   " + knob.keyName) +
                               (effect.empty() ? "" : "; " + effect);
-    if (ImGui::Checkbox(label.c_str(), &on)) scene.changeKnob(index, on ? 1 : 0);
-    if (ImGui::IsItemHovered() && !knob.help.empty())
+    // The box, then its label wrapped beside it: a checkbox's own label does
+    // not wrap, and a long one would run past the panel's edge.
+    if (ImGui::Checkbox(("##" + knob.name).c_str(), &on)) scene.changeKnob(index, on ? 1 : 0);
+    const bool hovered = ImGui::IsItemHovered();
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", label.c_str());
+    if ((hovered || ImGui::IsItemHovered()) && !knob.help.empty())
       ImGui::SetTooltip("%s\n%s", knob.option.c_str(), knob.help.c_str());
     return;
   }
