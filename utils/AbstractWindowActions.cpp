@@ -1,6 +1,8 @@
-// AbstractWindow, input: the key table and its dispatch, the panel's
-// changes, the timeline of recorded inputs, the time and view keys, and the
-// mouse drag. Keys, panel and replay meet in applyEvent().
+// AbstractWindow, actions: what a person does and how it is recorded. The
+// knobs' declaration and their one change path, the key table and its
+// dispatch, the panel's changes, the timeline of recorded inputs, the time
+// and view keys, and the mouse drag. Keys, panel and replay meet in
+// applyEvent().
 #include <algorithm>
 
 #include "AbstractWindow.h"
@@ -28,14 +30,15 @@ void AbstractWindow::rebindKey(SDL_Keycode key, std::string keyName, std::string
 Knob& AbstractWindow::declare(Knob declared) {
   tuning_.knobs_.push_back(std::move(declared));
   Knob& knob = tuning_.knobs_.back();  // a deque keeps it in place as more are declared
-  // (A knob read and written through functions, the solver, points into
-  // the world settings, which a run's start restores.)
+  // Rewind puts back its value at the run's start before a replay.
   if (knob.count)
     session_.rewind_.keep(*knob.count);
   else if (knob.value)
     session_.rewind_.keep(*knob.value);
   else if (knob.on)
     session_.rewind_.keep(*knob.on);
+  else if (knob.read && knob.write)
+    session_.rewind_.keepThrough(knob.read, knob.write);
   Knob* stepped = &knob;
   if (knob.key != SDLK_UNKNOWN)
     keys_.bind({knob.key, knob.keyName, knob.keyHelp,

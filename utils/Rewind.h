@@ -36,6 +36,13 @@ class Rewind {
     kept_.push_back({[&value, saved] { *saved = value; }, [&value, saved] { value = *saved; }});
   }
 
+  // The same for a value read and written through functions (a choice
+  // knob: test0's spawn shapes, test5's space, the solver).
+  void keepThrough(std::function<double()> get, std::function<void(double)> set) {
+    auto saved = std::make_shared<double>(get());
+    kept_.push_back({[get, saved] { *saved = get(); }, [set, saved] { set(*saved); }});
+  }
+
   // A new run (the first, or after R): the timeline starts empty.
   void begin(const RunStart& start);
   // Before a replay: the start's values, kept values put back, cursor at 0.

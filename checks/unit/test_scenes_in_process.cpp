@@ -183,6 +183,34 @@ TEST_P(SceneInProcess, EveryKnobReachesEveryReport) {
   scene->shutdown();
 }
 
+// Rewind rebuilds a state by replaying the run's recorded inputs from its
+// start: every knob a person changes mid-run (each to its key's next value;
+// not those that rebuild the scene, which start a new run) is put back to
+// its start value and replayed, so the replay ends in the very state.
+TEST_P(SceneInProcess, ARewindReplaysEveryKnobChange) {
+  const SceneEntry& entry = entryNamed(GetParam());
+  ScratchFolder folder(GetParam());
+  std::unique_ptr<AbstractWindow> scene = made(entry, folder.path);
+  for (int i = 0; i < 50; ++i) scene->stepOnce();
+  const auto& knobs = scene->tuning().knobs();
+  int changed = 0;
+  for (int i = 0; i < static_cast<int>(knobs.size()); ++i) {
+    const Knob& knob = knobs[static_cast<size_t>(i)];
+    if (knob.rebuilds || knob.headlessOnly) continue;
+    const double before = knob.get();
+    scene->changeKnob(i, knob.next(+1));
+    if (knob.get() != before) ++changed;
+  }
+  EXPECT_GT(changed, 0);
+  for (int i = 0; i < 100; ++i) scene->stepOnce();
+  const std::uint64_t hash = scene->run().stateHash();
+  const long long steps = scene->run().steps();
+  scene->replayTo(steps);
+  EXPECT_EQ(scene->run().steps(), steps);
+  EXPECT_EQ(scene->run().stateHash(), hash) << changed << " knobs changed at step 50";
+  scene->shutdown();
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryScene, SceneInProcess, testing::ValuesIn(sceneNames()),
                          [](const testing::TestParamInfo<std::string>& info) { return info.param; });
 
