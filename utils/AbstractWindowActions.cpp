@@ -66,7 +66,8 @@ void AbstractWindow::changeKnob(Knob& knob, double value, const char* source) {
   const double oldErp = tuning_.settings_.erp, oldCfm = tuning_.settings_.cfm;
   const std::string change = knob.set(value);
   if (change.empty()) return;
-  if (knob.appliesToWorld)
+  // Only an ERP or CFM change walks the joints; gravity, the step or the solver do not.
+  if (tuning_.settings_.erp != oldErp || tuning_.settings_.cfm != oldCfm)
     run_.carryWorldErpCfmToBallJoints(oldErp, oldCfm, tuning_.settings_.erp, tuning_.settings_.cfm);
   logAction(byKey ? change : std::string(source) + ": " + change);
   if (knob.appliesToWorld) {
