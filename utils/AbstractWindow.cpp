@@ -103,6 +103,7 @@ void AbstractWindow::createWorld() {
   session_.rewind_.worldRebuilt();
   configureWorld();
   buildScene();
+  startEngine();
 }
 
 void AbstractWindow::setSpaceKind(SpaceKind kind) { run_.setSpaceKind(kind, bounds()); }
@@ -162,27 +163,35 @@ bool AbstractWindow::stepOnce() {
   }
   run_.contactsThisStep_ = 0;
   beforeStep();
-  try {
-    // Collision is timed only for the window's frame profile: a headless run
-    // pays no clock reads.
-    const auto collideStart = run_.profileCollision_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    dSpaceCollide(run_.space_, this, &AbstractWindow::nearCallback);
-    if (run_.profileCollision_)
-      run_.collideWallSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - collideStart).count();
-    if (tuning_.settings_.solver == Solver::QuickStep)
-      dWorldQuickStep(run_.world_, tuning_.settings_.step);
-    else
-      dWorldStep(run_.world_, tuning_.settings_.step);
-  } catch (const OdeError& error) {
-    // ODE's own checks often see a blow-up before run_.stateProblem() does (a NaN
-    // quaternion fails dxNormalize4): report it with the time and settings.
-    throw OdeError(std::string(error.what()) + momentAndSettings());
+  if (engine_.active()) {
+    // Another engine steps the world; ODE's bodies take its states.
+    if (!stepEngine()) return false;
+  } else {
+    try {
+      // Collision is timed only for the window's frame profile: a headless run
+      // pays no clock reads.
+      const auto collideStart = run_.profileCollision_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+      dSpaceCollide(run_.space_, this, &AbstractWindow::nearCallback);
+      if (run_.profileCollision_)
+        run_.collideWallSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - collideStart).count();
+      if (tuning_.settings_.solver == Solver::QuickStep)
+        dWorldQuickStep(run_.world_, tuning_.settings_.step);
+      else
+        dWorldStep(run_.world_, tuning_.settings_.step);
+    } catch (const OdeError& error) {
+      // ODE's own checks often see a blow-up before run_.stateProblem() does (a NaN
+      // quaternion fails dxNormalize4): report it with the time and settings.
+      throw OdeError(std::string(error.what()) + momentAndSettings());
+    }
+    dJointGroupEmpty(run_.contactGroup_);
   }
-  dJointGroupEmpty(run_.contactGroup_);
   run_.contactsLastStep_ = run_.contactsThisStep_;
   run_.simulatedTime_ += tuning_.settings_.step;
   ++run_.steps_;
-  if (run_.timeSteps_) run_.lastStepWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // On another engine, what the engine's own calls took (not the edits and states passed to it).
+  if (run_.timeSteps_)
+    run_.lastStepWallSeconds_ = engine_.active() ? run_.engineStepWallSeconds_
+                                                 : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   afterStep();
   if (attended) {
     session_.rewind_.afterStep(run_.simulatedTime_, run_.steps_);
@@ -335,6 +344,15 @@ Metrics AbstractWindow::metrics() const {
   }
   m.set("non_finite", run_.blowUpReason_.empty() ? 0 : 1);
   m.set("state_hash", static_cast<double>(run_.stateHash()));
+  if (engine_.active()) {
+    // The engine's own collision and step calls, not the edits and states
+    // passed to it: the cost to set beside ODE's.
+    m.set("engine_wall_seconds", engine_.engineWallSeconds());
+    m.set("engine_cpu_seconds", engine_.engineCpuSeconds());
+    m.set("translation_note_count", static_cast<double>(engine_.translationNotes().size()));
+    m.setTexts("engine", {engine_.engineName(), options_.engineBest ? "best" : "default"});
+    m.setTexts("translation_notes", engine_.translationNotes());
+  }
   // Every knob in force at the end, under one prefix (infinity as -1).
   for (const Knob& knob : tuning_.knobs_) m.set("knob_" + knob.name, knob.metricValue());
   addMetrics(m);
@@ -356,6 +374,11 @@ std::vector<std::pair<std::string, std::string>> AbstractWindow::settingsDescrip
   const bool spaceKnob = std::any_of(knobs.begin(), knobs.end(), [](const Knob* k) { return k->headerKey() == "space"; });
   if (!spaceKnob) description.push_back({"space", spaceKindName(run_.spaceKind_)});
   description.push_back({"seed", std::to_string(options_.seed)});
+  // On another engine, which: a file says what made its figures. (The
+  // header is written as the scene is built, before the engine has said
+  // what it could not express: those notes go to stderr and the metrics.)
+  if (options_.engine != "ode")
+    description.push_back({"engine", options_.engine + (options_.engineBest ? " (best settings)" : " (default settings)")});
   // The run length asked for; the file's last line says whether it was reached.
   description.push_back({"run_seconds_asked", options_.seconds > 0 ? formatValue(options_.seconds)
                                               : options_.headless  ? formatValue(defaultHeadlessSeconds())

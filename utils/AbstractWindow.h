@@ -11,6 +11,7 @@
 #include "Tuning.h"
 #include "SessionTools.h"
 #include "WorldRun.h"
+#include "world/EngineLink.h"
 
 namespace CLI {
 class App;
@@ -97,6 +98,10 @@ class AbstractWindow {
   void mark(const std::string& label);  // step, time and state hash as metrics mark_<label>_*
   void applySettings(const std::string& change);  // settings() to the world now; reports `change`
   void setSpaceKind(SpaceKind kind);  // moves every geom into a new space of that kind
+  // The world as built and as it is now, as data (doc/world-format.md): --export-world.
+  world::World describeWorld();
+  // The engine stepping the scene (--engine); inactive for ODE.
+  const world::EngineLink& engine() const { return engine_; }
 
  protected:
   // ---- what scenes read and use --------------------------------------------
@@ -183,6 +188,10 @@ class AbstractWindow {
   void changeKnob(Knob& knob, double value, const char* source);
   void stepKnob(Knob& knob, int direction);
   void recoverFrom(const std::string& failure);
+  world::SurfaceOf surfaceOf();
+  void startEngine();       // after every (re)build, when --engine names another engine
+  bool stepEngine();        // instead of collide and ODE's step; false: the engine's state is not finite
+  void engineSettingsChanged();
 
   WorldRun run_;
   Tuning tuning_;
@@ -192,6 +201,7 @@ class AbstractWindow {
   RunOptions options_;
   Camera camera_;
   KeyTable keys_;
+  world::EngineLink engine_;
 };
 
 }  // namespace odelab

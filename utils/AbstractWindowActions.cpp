@@ -70,6 +70,7 @@ void AbstractWindow::changeKnob(Knob& knob, double value, const char* source) {
   if (tuning_.settings_.erp != oldErp || tuning_.settings_.cfm != oldCfm)
     run_.carryWorldErpCfmToBallJoints(oldErp, oldCfm, tuning_.settings_.erp, tuning_.settings_.cfm);
   logAction(byKey ? change : std::string(source) + ": " + change);
+  engineSettingsChanged();
   if (knob.appliesToWorld) {
     applySettings(change);  // the world takes it at once; notifies, and tells the scene
     return;

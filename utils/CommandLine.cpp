@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include "world/EngineCatalog.h"
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -69,6 +71,31 @@ bool isRecordedFrameName(const std::string& path) {
 }
 
 }  // namespace
+
+void requireAvailableEngine(const std::string& name) {
+  std::string names;
+  for (const world::EngineInfo& engine : world::knownEngines()) {
+    if (engine.name == name) {
+      if (!engine.available) throw UsageError("--engine " + name + ": not available here: " + engine.missing);
+      return;
+    }
+    names += (names.empty() ? "" : ", ") + engine.name;
+  }
+  throw UsageError("--engine " + name + ": no such engine; the engines are " + names + " (--list-engines)");
+}
+
+std::string enginesText() {
+  std::ostringstream out;
+  for (const world::EngineInfo& engine : world::knownEngines()) {
+    out << engine.name << ": " << (engine.available ? "available" : "not available");
+    if (!engine.version.empty()) out << ", version " << engine.version;
+    if (!engine.precision.empty()) out << ", " << engine.precision;
+    out << '\n';
+    if (!engine.available) out << "  missing: " << engine.missing << '\n';
+    if (!engine.bestSettings.empty()) out << "  best settings: " << engine.bestSettings << '\n';
+  }
+  return out.str();
+}
 
 void requireReplaceableFile(const char* option, const std::string& file) {
   if (file.empty()) return;

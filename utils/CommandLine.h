@@ -50,6 +50,12 @@ void checkKnobs(const CLI::App& app, const std::deque<Knob>& knobs, double step)
 // choices, default, kind, unit, panel group, header key, metric name).
 std::string settingsJson(const std::deque<Knob>& knobs);
 
+// --engine NAME: a known engine available here, or UsageError naming it,
+// why it is missing and how to install it.
+void requireAvailableEngine(const std::string& name);
+// --list-engines: one block per engine.
+std::string enginesText();
+
 // Makes every option that takes a value refuse an empty one ("--seed=").
 // Call after every option is added.
 // Also makes every whole-number option (type INT or UINT) decimal only:

@@ -17,6 +17,9 @@
 #include "FormatValue.h"
 #include "SceneRegistry.h"
 #include "SceneRunner.h"
+#include "world/WorldFileScene.h"
+#include "world/WorldJson.h"
+#include "Adapters.h"
 
 namespace {
 
@@ -24,6 +27,7 @@ constexpr const char* USAGE =
     "usage: odelab [window options]        (opens on test1; Page Down / Page Up or the panel's list switch scenes)\n"
     "       odelab --list\n"
     "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n"
+    "       odelab --world FILE [options]  a world file (doc/world-format.md; testN --export-world writes one)\n"
     "In the window, every scene shown reports in --metrics-json as visit<N>.<scene>.<metric> once the\n"
     "window has switched, --record numbers frames over the whole window, and --seconds must be at\n"
     "least one step of every scene.\n";
@@ -99,9 +103,25 @@ int usageError(const std::string& message) {
   return odelab::exit_code::USAGE;
 }
 
+// --world FILE: the file read and checked whole before anything runs.
+int runWorldFile(const std::string& path, std::vector<char*>& arguments) {
+  std::unique_ptr<odelab::world::WorldFileScene> scene;
+  try {
+    scene = std::make_unique<odelab::world::WorldFileScene>(odelab::world::readWorldFile(path));
+  } catch (const odelab::world::WorldFileError& error) {
+    std::cerr << "error: --world: " << error.what() << '\n';
+    return odelab::exit_code::USAGE;
+  }
+  scene->identify("world", scene->fileTitle(path));
+  return odelab::runScene(std::move(scene), "A world file (doc/world-format.md) run in ODE or, with --engine, another engine.",
+                          static_cast<int>(arguments.size()), arguments.data());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The engines other than ODE that --engine may name (peers/engines).
+  odelab::world::installEngineCatalog(odelab::engines::catalog());
   const std::string first = argc > 1 ? argv[1] : "";
   if (first == "--help" || first == "-h") {
     std::cout << USAGE;
@@ -112,9 +132,9 @@ int main(int argc, char** argv) {
       std::cout << scene.name << '\t' << scene.description << '\n';
     return odelab::exit_code::OK;
   }
-  // --scene NAME or --scene=NAME anywhere; every other argument is the scene's.
-  std::string name;
-  bool named = false;
+  // --scene NAME or --scene=NAME anywhere, or --world FILE; every other argument is the scene's.
+  std::string name, worldFile;
+  bool named = false, worldGiven = false;
   std::vector<char*> arguments{argv[0]};  // the scene's program sees its own arguments only
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
@@ -122,9 +142,17 @@ int main(int argc, char** argv) {
       if (named) return usageError("--scene: given twice");
       named = true;
       name = argument == "--scene" ? argv[++i] : argument.substr(std::strlen("--scene="));
+    } else if (argument.rfind("--world=", 0) == 0 || (argument == "--world" && i + 1 < argc)) {
+      if (worldGiven) return usageError("--world: given twice");
+      worldGiven = true;
+      worldFile = argument == "--world" ? argv[++i] : argument.substr(std::strlen("--world="));
     } else {
       arguments.push_back(argv[i]);
     }
+  }
+  if (worldGiven) {
+    if (named) return usageError("--world: a world file is the scene; leave out --scene");
+    return runWorldFile(worldFile, arguments);
   }
   // No --scene: the window starts with a scene in motion (firstWindowScene).
   const odelab::SceneEntry* scene = named ? odelab::findScene(name) : &firstWindowScene();

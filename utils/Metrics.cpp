@@ -20,6 +20,15 @@ void Metrics::set(const std::string& name, double value) {
     entries_[found->second].second = value;
 }
 
+void Metrics::setTexts(const std::string& name, std::vector<std::string> texts) {
+  for (auto& entry : texts_)
+    if (entry.first == name) {
+      entry.second = std::move(texts);
+      return;
+    }
+  texts_.emplace_back(name, std::move(texts));
+}
+
 bool Metrics::has(const std::string& name) const { return index_.count(name) != 0; }
 
 double Metrics::get(const std::string& name) const {
@@ -63,10 +72,24 @@ class FlatObjectReader : public nlohmann::json_sax<nlohmann::json> {
   bool number_unsigned(number_unsigned_t number) override { return metric(static_cast<double>(number)); }
   bool number_float(number_float_t number, const string_t&) override { return metric(number); }
   bool boolean(bool) override { return refuse("a boolean"); }
-  bool string(string_t&) override { return refuse("a string"); }
+  bool string(string_t& text) override {
+    if (!inArray_) return refuse("a string");
+    texts_.push_back(text);
+    return true;
+  }
   bool binary(binary_t&) override { return refuse("binary data"); }
-  bool start_array(std::size_t) override { return refuse("an array"); }
-  bool end_array() override { return true; }  // never reached: start_array refused
+  // Only an array of strings, in the object (a list of sentences).
+  bool start_array(std::size_t) override {
+    if (!opened_ || inArray_) return refuse("an array");
+    inArray_ = true;
+    texts_.clear();
+    return true;
+  }
+  bool end_array() override {
+    inArray_ = false;
+    metrics_.setTexts(name_, texts_);
+    return true;
+  }
   bool start_object(std::size_t) override {
     if (opened_) return refuse("an object");
     opened_ = true;
@@ -88,22 +111,27 @@ class FlatObjectReader : public nlohmann::json_sax<nlohmann::json> {
  private:
   bool metric(double value) {
     if (!opened_) return refuse("a number");
+    if (inArray_) return refuse("an array with a number");
     metrics_.set(name_, value);
     return true;
   }
   [[noreturn]] bool refuse(const char* found) {
     if (!opened_) throw std::runtime_error(std::string("metrics JSON: expected an object, found ") + found);
-    throw std::runtime_error("metrics JSON: \"" + name_ + "\" is " + found + ", not a number or null");
+    throw std::runtime_error("metrics JSON: \"" + name_ + "\" is " + found + ", not a number, null or list of strings");
   }
 
   Metrics& metrics_;
   bool opened_ = false;  // the one object has begun
+  bool inArray_ = false;
+  std::vector<std::string> texts_;
   std::string name_;     // the name of the value being read
 };
 }  // namespace
 
 void Metrics::print(std::ostream& out) const {
   for (const auto& [name, value] : entries_) out << name << " = " << formatNumber(value) << '\n';
+  for (const auto& [name, texts] : texts_)
+    for (const std::string& text : texts) out << name << ": " << text << '\n';
 }
 
 std::string Metrics::toJson() const {
@@ -115,6 +143,12 @@ std::string Metrics::toJson() const {
     const std::string name =
         nlohmann::json(entries_[i].first).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     json += (i ? ",\n  " : "\n  ") + name + ": " + jsonNumber(entries_[i].second);
+  }
+  for (size_t i = 0; i < texts_.size(); ++i) {
+    const nlohmann::json name(texts_[i].first), list(texts_[i].second);
+    json += (entries_.empty() && i == 0 ? "\n  " : ",\n  ") +
+            name.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + ": " +
+            list.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   }
   json += "\n}\n";
   return json;

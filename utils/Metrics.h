@@ -8,7 +8,8 @@
 
 namespace odelab {
 
-// A flat, ordered set of named numbers: what a run measured. Printed as
+// A flat, ordered set of named numbers (and a few named lists of sentences,
+// such as an engine's translation notes): what a run measured. Printed as
 // "name = value" lines and written as a flat JSON object of numbers, one a
 // line, with the same digits: whole numbers exact, the rest to 10
 // significant digits (Metrics.cpp, formatNumber, says why).
@@ -18,6 +19,9 @@ class Metrics {
   bool has(const std::string& name) const;
   double get(const std::string& name) const;  // NaN when absent
   const std::vector<std::pair<std::string, double>>& entries() const { return entries_; }
+  // A list of sentences, written after the numbers as a JSON array of strings.
+  void setTexts(const std::string& name, std::vector<std::string> texts);
+  const std::vector<std::pair<std::string, std::vector<std::string>>>& texts() const { return texts_; }
 
   void print(std::ostream& out) const;
   std::string toJson() const;
@@ -28,11 +32,12 @@ class Metrics {
 
  private:
   std::vector<std::pair<std::string, double>> entries_;
+  std::vector<std::pair<std::string, std::vector<std::string>>> texts_;
   // name -> position in entries_: 100,000 marks in a session stay fast.
   std::unordered_map<std::string, size_t> index_;
 };
 
-// Parses a flat JSON object of numbers and nulls (as written by
+// Parses a flat JSON object of numbers, nulls and arrays of strings (as written by
 // Metrics::toJson; null reads as NaN); throws std::runtime_error "metrics
 // JSON: ..." with the line and column of malformed input, or naming the
 // metric whose value is not a number.

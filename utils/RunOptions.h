@@ -31,6 +31,10 @@ struct RunOptions {
   int textSize = 0;      // HUD text height in pixels; 0: follows the window height
   HudMode hud = HudMode::Compact;
   bool panel = true;  // the on-screen control panel (Tab)
+  // The engine that steps the scene (doc/peers.md): "ode", or one of
+  // utils/world/EngineCatalog's, at its defaults or its best settings.
+  std::string engine = "ode";
+  bool engineBest = false;
 };
 
 }  // namespace odelab

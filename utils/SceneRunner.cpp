@@ -1,6 +1,9 @@
 #include "SceneRunner.h"
 
 #include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <random>
 #include <exception>
 #include <iostream>
 #include <stdexcept>
@@ -14,7 +17,10 @@
 #include "OpenScene.h"
 #include "SceneVisits.h"
 #include "StopSignal.h"
+#include "SafeFile.h"
 #include "WindowModule.h"
+#include "world/EngineCatalog.h"
+#include "world/WorldJson.h"
 
 namespace odelab {
 
@@ -87,6 +93,39 @@ int run(OpenScene& current, const RunOptions& options, SceneSwitching* switching
       [&](int status) { return afterWindow(current, visits, options, status); });
 }
 
+// --export-world: the scene as built, as data, and nothing run. The scene
+// is built headless with its output files in a folder of its own, removed
+// afterwards, so that exporting never touches a run's files.
+class ExportWorld {
+ public:
+  explicit ExportWorld(std::string path) : path_(std::move(path)) {}
+  ~ExportWorld() {
+    std::error_code ignored;
+    if (!folder_.empty()) std::filesystem::remove_all(folder_, ignored);
+  }
+  int operator()(AbstractWindow& scene, RunOptions options) {
+    // A new folder: create_directory says false when the name is taken.
+    std::random_device random;
+    const std::filesystem::path temp = std::filesystem::temp_directory_path();
+    for (int attempt = 0; attempt < 100 && folder_.empty(); ++attempt) {
+      const std::filesystem::path folder = temp / ("odelab-export-" + std::to_string(random()));
+      if (std::filesystem::create_directory(folder)) folder_ = folder.string();
+    }
+    if (folder_.empty()) throw std::runtime_error("--export-world: cannot make a temporary folder in " + temp.string());
+    options.headless = true;
+    options.outDir = folder_;
+    options.metricsJson.clear();
+    scene.initialize(options);
+    writeFileAtomically(path_, world::worldToJson(scene.describeWorld()));
+    std::cout << "world written: " << path_ << '\n';
+    return exit_code::OK;
+  }
+
+ private:
+  std::string path_;
+  std::string folder_;
+};
+
 }  // namespace
 
 int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* switching) {
@@ -118,6 +157,24 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   bool listSettings = false;
   app.add_flag("--list-settings", listSettings,
                "print every knob (world settings, contact choices, the scene's) as JSON (name, option, key, range, default, unit, group, header, metric) and exit");
+  bool listEngines = false;
+  app.add_flag("--list-engines", listEngines,
+               "print every engine --engine takes: whether it is here, its version and precision, what its best "
+               "settings change, and how to install a missing one; then exit");
+  app.add_option("--engine", options.engine,
+                 "the engine that steps the scene: ode (the reference), bullet, mujoco, havok, jolt or rapier; the "
+                 "scene's own code measures it (doc/peers.md)")
+      ->capture_default_str();
+  std::string engineSetting = "default";
+  app.add_option("--engine-setting", engineSetting,
+                 "default: the engine as it comes, with the scene's physics translated; best: its documented "
+                 "settings for accuracy (--list-engines says which)")
+      ->check(CLI::IsMember({"default", "best"}))
+      ->capture_default_str();
+  std::string exportWorld;
+  app.add_option("--export-world", exportWorld,
+                 "write the world as built (bodies, geoms, joints, every pair's contact surface, the settings) "
+                 "to FILE as JSON (doc/world-format.md) and exit; odelab --world FILE runs it");
   bool printCommandLine = false;
   app.add_flag("--print-command-line", printCommandLine,
                "at the run's end print \"command line: \" and the command line that starts it again with every "
@@ -133,6 +190,12 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
     cli::refuseUnwritableOutputs(options, outputs);
     cli::refuseRunShorterThanStep(options, scene.tuning().settings().step);
     cli::checkKnobs(app, scene.tuning().knobs(), scene.tuning().settings().step);
+    options.engineBest = engineSetting == "best";
+    if (options.engine != "ode") cli::requireAvailableEngine(options.engine);
+    if (!exportWorld.empty()) {
+      if (options.engine != "ode") throw UsageError("--export-world: the world is ODE's as built; leave out --engine");
+      cli::requireReplaceableFile("--export-world", exportWorld);
+    }
     scene.setRunOptions(options);
     scene.checkOptions();
     // The scenes a window may switch to get the same options: checked now,
@@ -146,7 +209,13 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
     std::cout << cli::settingsJson(scene.tuning().knobs());
     return exit_code::OK;
   }
+  if (listEngines) {
+    std::cout << cli::enginesText();
+    return exit_code::OK;
+  }
   installStopSignalHandlers();
+  std::optional<ExportWorld> exporter;  // its folder goes after the scene has closed its files
+  if (!exportWorld.empty()) exporter.emplace(exportWorld);
   OdeLibrary ode;
   if (!dCheckConfiguration("ODE_double_precision")) {
     std::cerr << "error: this ODE library is not built in double precision\n";
@@ -159,7 +228,16 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
     if (current.isOpen()) markCutShort(current.scene(), why);
   };
   try {
-    status = run(current, options, switching);
+    if (exporter)
+      status = (*exporter)(scene, options);
+    else
+      status = run(current, options, switching);
+  } catch (const world::EngineError& error) {
+    // An engine that cannot build the scene refuses it before any step; one
+    // that fails while stepping ends the run as a blow-up does (stepOnce).
+    std::cerr << "error: " << error.what() << '\n';
+    markOpenScene(error.what());
+    status = exit_code::USAGE;
   } catch (const OdeError& error) {
     // ODE's state is not to be trusted after its own error: tearing the
     // world down can raise another one from a destructor. Leave without

@@ -89,6 +89,7 @@ class WorldRun {
   int contactsThisStep_ = 0;
   double lastStepWallSeconds_ = 0.0;
   double collideWallSeconds_ = 0.0;
+  double engineStepWallSeconds_ = 0.0;  // --engine: the engine's own calls in the last step
   bool profileCollision_ = false;
   bool timeSteps_ = false;
   bool unattended_ = false;  // inside runFor(): no input, rewind or plot, so stepOnce() skips them

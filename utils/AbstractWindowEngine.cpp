@@ -1,0 +1,67 @@
+// The scene as data, and the scene on another engine (--engine): the parts
+// of AbstractWindow that reach utils/world.
+#include <cmath>
+#include <iostream>
+
+#include "AbstractWindow.h"
+#include "FormatValue.h"
+#include "world/EngineCatalog.h"
+
+namespace odelab {
+
+world::SurfaceOf AbstractWindow::surfaceOf() {
+  return [this](dGeomID a, dGeomID b, dSurfaceParameters& surface) { setContactSurface(a, b, surface); };
+}
+
+world::World AbstractWindow::describeWorld() {
+  world::World described;
+  described.scene = programName_;
+  described.title = title_;
+  described.time = run_.simulatedTime_;
+  described.settings = world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_));
+  world::OdeIndex index;
+  world::describeNewObjects(run_.objects_, surfaceOf(), described, index);
+  return described;
+}
+
+void AbstractWindow::startEngine() {
+  if (options_.engine == "ode") return;
+  const world::EngineSetting setting = options_.engineBest ? world::EngineSetting::Best : world::EngineSetting::Default;
+  const bool first = !engine_.active();
+  try {
+    engine_.start(world::makeEngine(options_.engine, setting), options_.engine, setting,
+                  world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_)),
+                  run_.objects_, surfaceOf());
+  } catch (const world::EngineError& error) {
+    throw world::EngineError("engine " + options_.engine + ": " + error.what());
+  }
+  // Said once a run, on stderr, before any figure: what this engine could not express.
+  if (first)
+    for (const std::string& note : engine_.translationNotes())
+      std::cerr << programName_ << " on " << options_.engine << ": translation note: " << note << '\n';
+}
+
+bool AbstractWindow::stepEngine() {
+  const size_t notesBefore = engine_.translationNotes().size();
+  try {
+    engine_.sendEdits(run_.objects_, surfaceOf());
+    run_.engineStepWallSeconds_ = engine_.step();
+  } catch (const world::EngineError& error) {
+    run_.blowUpReason_ = "engine " + options_.engine + " failed: " + error.what() + momentAndSettings();
+    return false;
+  }
+  const std::vector<std::string>& notes = engine_.translationNotes();
+  for (size_t i = notesBefore; i < notes.size(); ++i)
+    std::cerr << programName_ << " on " << options_.engine << ": translation note: " << notes[i] << '\n';
+  const int contacts = engine_.contactCount();
+  run_.contactsThisStep_ = contacts < 0 ? 0 : contacts;
+  return true;
+}
+
+void AbstractWindow::engineSettingsChanged() {
+  if (!engine_.active()) return;
+  engine_.changeSettings(world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_)),
+                         surfaceOf());
+}
+
+}  // namespace odelab

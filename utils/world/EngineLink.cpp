@@ -1,0 +1,126 @@
+#include "EngineLink.h"
+
+#include <set>
+
+namespace odelab::world {
+
+namespace {
+
+bool same(const BodyState& a, const BodyState& b) {
+  return a.position == b.position && a.orientation == b.orientation && a.linearVelocity == b.linearVelocity &&
+         a.angularVelocity == b.angularVelocity && a.enabled == b.enabled;
+}
+
+bool nonZero(const dReal* v) { return v[0] != 0 || v[1] != 0 || v[2] != 0; }
+
+}  // namespace
+
+BodyState EngineLink::odeState(dBodyID body) const {
+  BodyState s;
+  const dReal* p = dBodyGetPosition(body);
+  const dReal* q = dBodyGetQuaternion(body);
+  const dReal* v = dBodyGetLinearVel(body);
+  const dReal* w = dBodyGetAngularVel(body);
+  s.position = {p[0], p[1], p[2]};
+  s.orientation = {q[0], q[1], q[2], q[3]};
+  s.linearVelocity = {v[0], v[1], v[2]};
+  s.angularVelocity = {w[0], w[1], w[2]};
+  s.enabled = dBodyIsEnabled(body) != 0;
+  return s;
+}
+
+void EngineLink::start(std::unique_ptr<Engine> engine, const std::string& name, EngineSetting setting, Settings settings,
+                       const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf) {
+  engine_ = std::move(engine);
+  name_ = name;
+  setting_ = setting;
+  world_ = World{};
+  index_ = OdeIndex{};
+  world_.settings = std::move(settings);
+  describeNewObjects(objects, surfaceOf, world_, index_);
+  engine_->build(world_);
+  written_.clear();
+  for (const dBodyID body : index_.bodies) written_.push_back(odeState(body));
+  bodyChanges_ = AbstractObject::bodyChanges();
+}
+
+void EngineLink::sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf) {
+  if (AbstractObject::bodyChanges() != bodyChanges_) {
+    bodyChanges_ = AbstractObject::bodyChanges();
+    // Removed first: a new body may take a removed one's address.
+    std::set<dBodyID> liveBodies;
+    std::set<dGeomID> liveGeoms;
+    for (const auto& object : objects) {
+      liveGeoms.insert(object->getGeom());
+      if (const dBodyID body = object->getBody()) liveBodies.insert(body);
+    }
+    for (size_t i = 0; i < index_.bodies.size(); ++i) {
+      const dBodyID body = index_.bodies[i];
+      if (!body || liveBodies.count(body)) continue;
+      engine_->remove(static_cast<int>(i));
+      world_.bodies[i].removed = true;
+      index_.bodyIndex.erase(body);
+      index_.bodies[i] = nullptr;
+    }
+    for (size_t i = 0; i < index_.geoms.size(); ++i)
+      if (index_.geoms[i] && !liveGeoms.count(index_.geoms[i])) {
+        index_.geomIndex.erase(index_.geoms[i]);
+        index_.geoms[i] = nullptr;
+      }
+    const int firstBody = static_cast<int>(world_.bodies.size());
+    const int firstGeom = static_cast<int>(world_.geoms.size());
+    const int firstJoint = static_cast<int>(world_.joints.size());
+    describeNewObjects(objects, surfaceOf, world_, index_);
+    if (static_cast<int>(world_.geoms.size()) > firstGeom) {
+      engine_->add(world_, firstBody, firstGeom, firstJoint);
+      for (size_t i = static_cast<size_t>(firstBody); i < index_.bodies.size(); ++i)
+        written_.push_back(odeState(index_.bodies[i]));
+    }
+  }
+  for (size_t i = 0; i < index_.bodies.size(); ++i) {
+    const dBodyID body = index_.bodies[i];
+    if (!body) continue;
+    const BodyState now = odeState(body);
+    if (!same(now, written_[i])) {
+      engine_->setState(static_cast<int>(i), now);
+      written_[i] = now;
+    }
+    const dReal* force = dBodyGetForce(body);
+    const dReal* torque = dBodyGetTorque(body);
+    if (nonZero(force) || nonZero(torque)) {
+      engine_->applyForce(static_cast<int>(i), {force[0], force[1], force[2]}, {torque[0], torque[1], torque[2]});
+      // ODE clears a body's forces when it steps; here it does not step.
+      dBodySetForce(body, 0, 0, 0);
+      dBodySetTorque(body, 0, 0, 0);
+    }
+  }
+}
+
+void EngineLink::changeSettings(const Settings& settings, const SurfaceOf& surfaceOf) {
+  world_.settings = settings;
+  describeSurfaces(surfaceOf, world_, index_);
+  engine_->changeSettings(world_);
+}
+
+double EngineLink::step() {
+  const double before = engine_->engineWallSeconds();
+  engine_->step();
+  for (size_t i = 0; i < index_.bodies.size(); ++i)
+    if (index_.bodies[i]) writeBack(static_cast<int>(i), engine_->state(static_cast<int>(i)));
+  return engine_->engineWallSeconds() - before;
+}
+
+void EngineLink::writeBack(int i, const BodyState& s) {
+  const dBodyID body = index_.bodies[static_cast<size_t>(i)];
+  dBodySetPosition(body, s.position[0], s.position[1], s.position[2]);
+  const dQuaternion q = {s.orientation[0], s.orientation[1], s.orientation[2], s.orientation[3]};
+  dBodySetQuaternion(body, q);
+  dBodySetLinearVel(body, s.linearVelocity[0], s.linearVelocity[1], s.linearVelocity[2]);
+  dBodySetAngularVel(body, s.angularVelocity[0], s.angularVelocity[1], s.angularVelocity[2]);
+  if (s.enabled && !dBodyIsEnabled(body)) dBodyEnable(body);
+  if (!s.enabled && dBodyIsEnabled(body)) dBodyDisable(body);
+  // As ODE holds it (it normalises the quaternion): the next comparison is exact.
+  written_[static_cast<size_t>(i)] = odeState(body);
+}
+
+}  // namespace odelab::world

@@ -1,0 +1,56 @@
+#pragma once
+
+// A scene run on another engine (--engine): the engine steps, ODE does not.
+// Before each step the link turns what the scene did to its ODE bodies since
+// the last one (objects made or removed, a body moved, launched or pushed)
+// into the engine's edits; after it, the engine's body states are written
+// into the ODE bodies, so the scene's own measurements, HUD and files read
+// the engine's world as they read ODE's.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "AbstractObject.h"
+#include "Engine.h"
+#include "WorldFromOde.h"
+
+namespace odelab::world {
+
+class EngineLink {
+ public:
+  bool active() const { return engine_ != nullptr; }
+  const std::string& engineName() const { return name_; }
+  EngineSetting setting() const { return setting_; }
+
+  // Builds the scene's world, as ODE holds it now, in `engine`.
+  void start(std::unique_ptr<Engine> engine, const std::string& name, EngineSetting setting, Settings settings,
+             const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf);
+  void stop() { engine_.reset(); }
+  // The scene's changes since the last step, as edits.
+  void sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf);
+  // New settings or surfaces (a knob changed).
+  void changeSettings(const Settings& settings, const SurfaceOf& surfaceOf);
+  // One engine step; its states written into the ODE bodies. Returns the
+  // engine's own wall seconds for it.
+  double step();
+  int contactCount() const { return engine_->contactCount(); }
+  const std::vector<std::string>& translationNotes() const { return engine_->translationNotes(); }
+  double engineWallSeconds() const { return engine_->engineWallSeconds(); }
+  double engineCpuSeconds() const { return engine_->engineCpuSeconds(); }
+  const World& world() const { return world_; }
+
+ private:
+  void writeBack(int body, const BodyState& state);
+  BodyState odeState(dBodyID body) const;
+
+  std::unique_ptr<Engine> engine_;
+  std::string name_;
+  EngineSetting setting_ = EngineSetting::Default;
+  World world_;
+  OdeIndex index_;
+  std::vector<BodyState> written_;  // per body: what was last written into its ODE body
+  std::uint64_t bodyChanges_ = 0;
+};
+
+}  // namespace odelab::world

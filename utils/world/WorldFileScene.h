@@ -1,0 +1,40 @@
+#pragma once
+
+// A world file (doc/world-format.md) as a scene: `odelab --world FILE` runs
+// it in the window or headless, with the framework's HUD, keys, panel,
+// metrics and state hash, as a test program runs its own scene. A file that
+// testN --export-world wrote gives testN's run again, to the state hash.
+
+#include <unordered_map>
+
+#include "AbstractWindow.h"
+#include "WorldDescription.h"
+
+namespace odelab::world {
+
+class WorldFileScene : public AbstractWindow {
+ public:
+  // Throws WorldFileError when the file holds what this program cannot run
+  // or draw (a capsule, gravity off the y axis), before anything is built.
+  explicit WorldFileScene(World world);
+  SceneBounds bounds() const override;
+  // The window's title: the file's own, or its exporting program's, or the file name.
+  std::string fileTitle(const std::string& path) const;
+
+ protected:
+  void configureWorld() override;
+  void buildScene() override;
+  void setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface) override;
+  void addHudLines(std::vector<std::string>& lines) const override;
+
+ private:
+  void buildBody(int index, AbstractObject& owner);
+  void buildJoint(const Joint& joint);
+
+  World world_;
+  double fileMu_;  // the default surface's friction: the mu knob overrides every surface once moved from it
+  std::unordered_map<dGeomID, int> geomIndex_;
+  std::vector<AbstractObject*> bodyOwner_;  // per body: the object whose body it is
+};
+
+}  // namespace odelab::world

@@ -1,0 +1,497 @@
+#include "WorldJson.h"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "SafeFile.h"
+
+namespace odelab::world {
+
+using nlohmann::json;
+
+namespace {
+
+// JSON has no infinity: an unbounded value is the string "infinity" (or "-infinity").
+json number(double value) {
+  if (std::isinf(value)) return value > 0 ? "infinity" : "-infinity";
+  return value;
+}
+
+json vec(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
+json quat(const Quat& q) { return json::array({q[0], q[1], q[2], q[3]}); }
+
+const std::map<ShapeKind, const char*> SHAPES = {{ShapeKind::Box, "box"},
+                                                 {ShapeKind::Sphere, "sphere"},
+                                                 {ShapeKind::Plane, "plane"},
+                                                 {ShapeKind::Capsule, "capsule"},
+                                                 {ShapeKind::Cylinder, "cylinder"}};
+const std::map<JointKind, const char*> JOINTS = {
+    {JointKind::Ball, "ball"}, {JointKind::Hinge, "hinge"}, {JointKind::Slider, "slider"}, {JointKind::Fixed, "fixed"}};
+
+// Reads one JSON object, field by field, naming the path of whatever is wrong
+// ("geoms[2].size[1]") and refusing fields it does not know (a typo would
+// otherwise be a default silently taken).
+class Reader {
+ public:
+  Reader(const json& object, std::string path) : object_(object), path_(std::move(path)) {
+    if (!object_.is_object()) fail(path_, "must be an object");
+  }
+  ~Reader() noexcept(false) {
+    if (std::uncaught_exceptions()) return;
+    for (const auto& item : object_.items())
+      if (!used_.count(item.key()))
+        fail(path_ + "." + item.key(), "is not a field of this format (doc/world-format.md lists them)");
+  }
+
+  bool has(const char* key) const { return object_.contains(key); }
+  std::string at(const char* key) const { return path_ + "." + key; }
+
+  double real(const char* key, double fallback, double low, double high, bool required = false) {
+    const json* value = find(key, required);
+    return value ? realValue(*value, at(key), low, high) : fallback;
+  }
+  int integer(const char* key, int fallback, int low, int high, bool required = false) {
+    const json* value = find(key, required);
+    if (!value) return fallback;
+    if (!value->is_number_integer()) fail(at(key), "must be a whole number");
+    const long long v = value->get<long long>();
+    if (v < low || v > high) fail(at(key), "must be in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " + std::to_string(v));
+    return static_cast<int>(v);
+  }
+  bool flag(const char* key, bool fallback) {
+    const json* value = find(key, false);
+    if (!value) return fallback;
+    if (!value->is_boolean()) fail(at(key), "must be true or false");
+    return value->get<bool>();
+  }
+  std::string text(const char* key, const std::string& fallback, bool required = false) {
+    const json* value = find(key, required);
+    if (!value) return fallback;
+    if (!value->is_string()) fail(at(key), "must be a string");
+    return value->get<std::string>();
+  }
+  template <size_t N>
+  std::array<double, N> reals(const char* key, const std::array<double, N>& fallback, bool required = false) {
+    const json* value = find(key, required);
+    if (!value) return fallback;
+    if (!value->is_array() || value->size() != N) fail(at(key), "must be an array of " + std::to_string(N) + " numbers");
+    std::array<double, N> out{};
+    for (size_t i = 0; i < N; ++i)
+      out[i] = realValue((*value)[i], at(key) + "[" + std::to_string(i) + "]", -INFINITE, INFINITE);
+    return out;
+  }
+  std::uint32_t bits(const char* key) {
+    const json* value = find(key, false);
+    if (!value) return 0xffffffffu;
+    if (!value->is_number_unsigned() || value->get<unsigned long long>() > 0xffffffffull)
+      fail(at(key), "must be a whole number in [0, 4294967295]");
+    return static_cast<std::uint32_t>(value->get<unsigned long long>());
+  }
+  const json* list(const char* key, bool required) {
+    const json* value = find(key, required);
+    if (value && !value->is_array()) fail(at(key), "must be an array");
+    return value;
+  }
+  const json* object(const char* key) {
+    const json* value = find(key, false);
+    return value;
+  }
+
+  [[noreturn]] static void fail(const std::string& where, const std::string& what) {
+    throw WorldFileError(where + ": " + what);
+  }
+  static double realValue(const json& value, const std::string& where, double low, double high) {
+    double v;
+    if (value.is_string() && (value == "infinity" || value == "-infinity"))
+      v = value == "infinity" ? INFINITE : -INFINITE;
+    else if (value.is_number())
+      v = value.get<double>();
+    else
+      fail(where, "must be a number (or \"infinity\")");
+    if (!(v >= low && v <= high)) {
+      std::ostringstream range;
+      range << "must be in [" << low << ", " << high << "], got " << v;
+      fail(where, range.str());
+    }
+    return v;
+  }
+
+ private:
+  const json* find(const char* key, bool required) {
+    used_.insert(key);
+    if (object_.contains(key)) return &object_.at(key);
+    if (required) fail(at(key), "is missing");
+    return nullptr;
+  }
+
+  const json& object_;
+  std::string path_;
+  std::set<std::string> used_;
+};
+
+Quat unitQuat(Reader& r, const char* key) {
+  Quat q = r.reals<4>(key, Quat{1, 0, 0, 0});
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (std::abs(n - 1.0) > 1e-6) Reader::fail(r.at(key), "must be a unit quaternion [w, x, y, z]");
+  return q;
+}
+
+template <class Kind>
+Kind named(const std::map<Kind, const char*>& names, const std::string& word, const std::string& where) {
+  std::string known;
+  for (const auto& [kind, name] : names) {
+    if (word == name) return kind;
+    known += (known.empty() ? "" : ", ") + std::string(name);
+  }
+  Reader::fail(where, "\"" + word + "\" is not one of " + known);
+}
+
+// A body named by index, or -1 for none (the static world).
+int bodyIndex(Reader& r, const char* key, int bodies) { return r.integer(key, -1, -1, bodies - 1, true); }
+
+Settings readSettings(const json& j) {
+  Reader r(j, "settings");
+  Settings s;
+  s.step = r.real("step", s.step, 1e-7, 1.0, true);
+  s.gravity = r.reals<3>("gravity", s.gravity, true);
+  s.erp = r.real("erp", s.erp, 0.0, 1.0);
+  s.cfm = r.real("cfm", s.cfm, 0.0, 1.0);
+  const std::string solver = r.text("solver", "quick");
+  if (solver != "quick" && solver != "step") Reader::fail(r.at("solver"), "\"" + solver + "\" is not one of quick, step");
+  s.quickStep = solver == "quick";
+  s.iterations = r.integer("iterations", s.iterations, 1, 100000);
+  s.sorW = r.real("sor_w", s.sorW, 0.0, 2.0);
+  s.contactMaxCorrectingVelocity = r.real("contact_max_correcting_velocity", s.contactMaxCorrectingVelocity, 0.0, INFINITE);
+  s.contactSurfaceLayer = r.real("contact_surface_layer", s.contactSurfaceLayer, 0.0, 1.0);
+  s.maxContacts = r.integer("max_contacts", s.maxContacts, 1, 64);
+  s.space = r.text("space", s.space);
+  if (s.space != "simple" && s.space != "hash" && s.space != "sap" && s.space != "quadtree")
+    Reader::fail(r.at("space"), "\"" + s.space + "\" is not one of simple, hash, sap, quadtree");
+  return s;
+}
+
+Body readBody(const json& j, const std::string& path) {
+  Reader r(j, path);
+  Body b;
+  b.mass = r.real("mass", b.mass, 1e-12, 1e15, true);
+  b.inertia = r.reals<6>("inertia", b.inertia, true);
+  if (!(b.inertia[0] > 0 && b.inertia[1] > 0 && b.inertia[2] > 0))
+    Reader::fail(r.at("inertia"), "its first three (xx, yy, zz) must be > 0");
+  b.position = r.reals<3>("position", b.position, true);
+  b.orientation = unitQuat(r, "orientation");
+  b.linearVelocity = r.reals<3>("linear_velocity", b.linearVelocity);
+  b.angularVelocity = r.reals<3>("angular_velocity", b.angularVelocity);
+  b.enabled = r.flag("enabled", true);
+  b.kinematic = r.flag("kinematic", false);
+  b.gravity = r.flag("gravity", true);
+  b.maxAngularSpeed = r.real("max_angular_speed", INFINITE, 0.0, INFINITE);
+  if (const json* a = r.object("auto_disable")) {
+    Reader ad(*a, path + ".auto_disable");
+    b.autoDisable.on = ad.flag("on", false);
+    b.autoDisable.linearThreshold = ad.real("linear_threshold", b.autoDisable.linearThreshold, 0.0, INFINITE);
+    b.autoDisable.angularThreshold = ad.real("angular_threshold", b.autoDisable.angularThreshold, 0.0, INFINITE);
+    b.autoDisable.steps = ad.integer("steps", b.autoDisable.steps, 0, 1 << 30);
+    b.autoDisable.time = ad.real("time", b.autoDisable.time, 0.0, INFINITE);
+    b.autoDisable.averageSamples = ad.integer("average_samples", b.autoDisable.averageSamples, 1, 1 << 20);
+  }
+  return b;
+}
+
+Geom readGeom(const json& j, const std::string& path, int bodies) {
+  Reader r(j, path);
+  Geom g;
+  g.shape = named(SHAPES, r.text("shape", "", true), r.at("shape"));
+  g.body = bodyIndex(r, "body", bodies);
+  switch (g.shape) {
+    case ShapeKind::Box:
+      g.size = r.reals<3>("size", g.size, true);
+      break;
+    case ShapeKind::Sphere:
+      g.size = {r.real("radius", 0, 1e-9, 1e9, true), 0, 0};
+      break;
+    case ShapeKind::Capsule:
+    case ShapeKind::Cylinder:
+      g.size = {r.real("radius", 0, 1e-9, 1e9, true), r.real("length", 0, 0, 1e9, true), 0};
+      break;
+    case ShapeKind::Plane:
+      g.plane = r.reals<4>("plane", g.plane, true);
+      if (g.body >= 0) Reader::fail(r.at("body"), "a plane is static: it has no body");
+      break;
+  }
+  if (g.shape == ShapeKind::Box)
+    for (int i = 0; i < 3; ++i)
+      if (!(g.size[i] > 0)) Reader::fail(r.at("size"), "every side must be > 0");
+  if (g.shape != ShapeKind::Plane) {
+    g.position = r.reals<3>("position", g.position);
+    g.orientation = unitQuat(r, "orientation");
+  }
+  g.category = r.bits("category");
+  g.collide = r.bits("collide");
+  return g;
+}
+
+Joint readJoint(const json& j, const std::string& path, int bodies) {
+  Reader r(j, path);
+  Joint k;
+  k.kind = named(JOINTS, r.text("type", "", true), r.at("type"));
+  k.body1 = bodyIndex(r, "body1", bodies);
+  k.body2 = bodyIndex(r, "body2", bodies);
+  if (k.body1 < 0 && k.body2 < 0) Reader::fail(path, "joins no body (body1 and body2 are both -1)");
+  if (k.body1 == k.body2) Reader::fail(path, "joins body " + std::to_string(k.body1) + " to itself");
+  if (k.kind == JointKind::Ball || k.kind == JointKind::Hinge) k.anchor = r.reals<3>("anchor", k.anchor, true);
+  if (k.kind == JointKind::Hinge || k.kind == JointKind::Slider) {
+    k.axis = r.reals<3>("axis", k.axis, true);
+    const double n = std::sqrt(k.axis[0] * k.axis[0] + k.axis[1] * k.axis[1] + k.axis[2] * k.axis[2]);
+    if (!(n > 0)) Reader::fail(r.at("axis"), "must not be zero");
+    k.lowStop = r.real("low_stop", -INFINITE, -INFINITE, INFINITE);
+    k.highStop = r.real("high_stop", INFINITE, -INFINITE, INFINITE);
+  }
+  k.erp = r.real("erp", k.erp, 0.0, 1.0);
+  k.cfm = r.real("cfm", k.cfm, 0.0, 1.0);
+  return k;
+}
+
+Surface readSurface(const json& j, const std::string& path) {
+  Reader r(j, path);
+  Surface s;
+  s.mu = r.real("mu", s.mu, 0.0, INFINITE, true);
+  s.bounce = r.has("restitution");
+  s.restitution = r.real("restitution", 0.0, 0.0, 1.0);
+  s.bounceVelocity = r.real("bounce_velocity", 0.0, 0.0, INFINITE);
+  if (!s.bounce && r.has("bounce_velocity")) Reader::fail(r.at("bounce_velocity"), "is given without restitution");
+  s.softErp = r.has("soft_erp");
+  s.softErpValue = r.real("soft_erp", 0.0, 0.0, 1.0);
+  s.softCfm = r.has("soft_cfm");
+  s.softCfmValue = r.real("soft_cfm", 0.0, 0.0, 1.0);
+  s.approx1 = r.flag("friction_pyramid", false);
+  return s;
+}
+
+json writeSurface(const Surface& s) {
+  json j = {{"mu", number(s.mu)}};
+  if (s.bounce) {
+    j["restitution"] = s.restitution;
+    j["bounce_velocity"] = s.bounceVelocity;
+  }
+  if (s.softErp) j["soft_erp"] = s.softErpValue;
+  if (s.softCfm) j["soft_cfm"] = s.softCfmValue;
+  if (s.approx1) j["friction_pyramid"] = true;
+  return j;
+}
+
+}  // namespace
+
+bool Surface::operator==(const Surface& o) const {
+  return mu == o.mu && bounce == o.bounce && restitution == o.restitution && bounceVelocity == o.bounceVelocity &&
+         softErp == o.softErp && softErpValue == o.softErpValue && softCfm == o.softCfm &&
+         softCfmValue == o.softCfmValue && approx1 == o.approx1;
+}
+
+const char* shapeName(ShapeKind kind) { return SHAPES.at(kind); }
+const char* jointName(JointKind kind) { return JOINTS.at(kind); }
+
+const Surface& World::surfaceBetween(int geom1, int geom2) const {
+  if (geom1 > geom2) std::swap(geom1, geom2);
+  for (const PairSurface& pair : pairSurfaces)
+    if (pair.geom1 == geom1 && pair.geom2 == geom2) return surfaces[pair.surface];
+  return surfaces[defaultSurface];
+}
+
+bool World::mayTouch(int geom1, int geom2) const {
+  const Geom& a = geoms[geom1];
+  const Geom& b = geoms[geom2];
+  if (a.body < 0 && b.body < 0) return false;
+  if (a.body == b.body) return false;
+  if (!((a.category & b.collide) || (b.category & a.collide))) return false;
+  if (a.body >= 0 && b.body >= 0)
+    for (const Joint& joint : joints)
+      if ((joint.body1 == a.body && joint.body2 == b.body) || (joint.body1 == b.body && joint.body2 == a.body))
+        return false;
+  return true;
+}
+
+World worldFromJson(const std::string& text) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& error) {
+    throw WorldFileError(std::string("not JSON: ") + error.what());
+  }
+  World w;
+  Reader r(root, "world");
+  const std::string format = r.text("format", "", true);
+  if (format != "odelab-world") Reader::fail(r.at("format"), "must be \"odelab-world\", got \"" + format + "\"");
+  w.version = r.integer("version", 0, 0, 1 << 30, true);
+  if (w.version != FORMAT_VERSION)
+    Reader::fail(r.at("version"), "this program reads version " + std::to_string(FORMAT_VERSION) + ", the file is version " +
+                                      std::to_string(w.version));
+  w.scene = r.text("scene", "");
+  w.title = r.text("title", "");
+  w.time = r.real("time", 0.0, 0.0, INFINITE);
+  const json* settings = r.object("settings");
+  if (!settings) Reader::fail(r.at("settings"), "is missing");
+  w.settings = readSettings(*settings);
+  if (const json* bodies = r.list("bodies", false))
+    for (size_t i = 0; i < bodies->size(); ++i) w.bodies.push_back(readBody((*bodies)[i], "bodies[" + std::to_string(i) + "]"));
+  const int bodyCount = static_cast<int>(w.bodies.size());
+  const json* geoms = r.list("geoms", true);
+  for (size_t i = 0; i < geoms->size(); ++i)
+    w.geoms.push_back(readGeom((*geoms)[i], "geoms[" + std::to_string(i) + "]", bodyCount));
+  if (const json* joints = r.list("joints", false))
+    for (size_t i = 0; i < joints->size(); ++i)
+      w.joints.push_back(readJoint((*joints)[i], "joints[" + std::to_string(i) + "]", bodyCount));
+  const json* surfaces = r.list("surfaces", true);
+  if (surfaces->empty()) Reader::fail(r.at("surfaces"), "needs at least one surface");
+  for (size_t i = 0; i < surfaces->size(); ++i)
+    w.surfaces.push_back(readSurface((*surfaces)[i], "surfaces[" + std::to_string(i) + "]"));
+  const int surfaceCount = static_cast<int>(w.surfaces.size());
+  w.defaultSurface = r.integer("default_surface", 0, 0, surfaceCount - 1);
+  const int geomCount = static_cast<int>(w.geoms.size());
+  if (const json* pairs = r.list("pair_surfaces", false))
+    for (size_t i = 0; i < pairs->size(); ++i) {
+      const std::string where = "pair_surfaces[" + std::to_string(i) + "]";
+      Reader p((*pairs)[i], where);
+      const std::array<double, 2> g = p.reals<2>("geoms", {0, 0}, true);
+      PairSurface pair;
+      for (int k = 0; k < 2; ++k)
+        if (g[k] != std::floor(g[k]) || g[k] < 0 || g[k] >= geomCount)
+          Reader::fail(p.at("geoms"), "must name two geoms by index in [0, " + std::to_string(geomCount - 1) + "]");
+      pair.geom1 = static_cast<int>(std::min(g[0], g[1]));
+      pair.geom2 = static_cast<int>(std::max(g[0], g[1]));
+      if (pair.geom1 == pair.geom2) Reader::fail(p.at("geoms"), "names one geom twice");
+      pair.surface = p.integer("surface", 0, 0, surfaceCount - 1, true);
+      w.pairSurfaces.push_back(pair);
+    }
+  for (int b = 0; b < bodyCount; ++b) {
+    bool hasGeom = false;
+    for (const Geom& g : w.geoms) hasGeom = hasGeom || g.body == b;
+    bool hasJoint = false;
+    for (const Joint& j : w.joints) hasJoint = hasJoint || j.body1 == b || j.body2 == b;
+    if (!hasGeom && !hasJoint) Reader::fail("bodies[" + std::to_string(b) + "]", "has no geom and no joint: nothing could touch or hold it");
+  }
+  return w;
+}
+
+std::string worldToJson(const World& world) {
+  // Removed bodies and their geoms and joints are left out; the rest renumbered.
+  std::vector<int> bodyIndex(world.bodies.size(), -1);
+  json bodies = json::array();
+  for (size_t i = 0; i < world.bodies.size(); ++i) {
+    const Body& b = world.bodies[i];
+    if (b.removed) continue;
+    bodyIndex[i] = static_cast<int>(bodies.size());
+    json j = {{"mass", b.mass},
+              {"inertia", json::array({b.inertia[0], b.inertia[1], b.inertia[2], b.inertia[3], b.inertia[4], b.inertia[5]})},
+              {"position", vec(b.position)},
+              {"orientation", quat(b.orientation)},
+              {"linear_velocity", vec(b.linearVelocity)},
+              {"angular_velocity", vec(b.angularVelocity)}};
+    if (!b.enabled) j["enabled"] = false;
+    if (b.kinematic) j["kinematic"] = true;
+    if (!b.gravity) j["gravity"] = false;
+    if (!std::isinf(b.maxAngularSpeed)) j["max_angular_speed"] = b.maxAngularSpeed;
+    if (b.autoDisable.on)
+      j["auto_disable"] = {{"on", true},
+                           {"linear_threshold", b.autoDisable.linearThreshold},
+                           {"angular_threshold", b.autoDisable.angularThreshold},
+                           {"steps", b.autoDisable.steps},
+                           {"time", b.autoDisable.time},
+                           {"average_samples", b.autoDisable.averageSamples}};
+    bodies.push_back(j);
+  }
+  auto bodyRef = [&](int b) { return b < 0 ? -1 : bodyIndex[b]; };
+  std::vector<int> geomIndex(world.geoms.size(), -1);
+  json geoms = json::array();
+  for (size_t i = 0; i < world.geoms.size(); ++i) {
+    const Geom& g = world.geoms[i];
+    if (g.body >= 0 && world.bodies[g.body].removed) continue;
+    geomIndex[i] = static_cast<int>(geoms.size());
+    json j = {{"shape", shapeName(g.shape)}, {"body", bodyRef(g.body)}};
+    switch (g.shape) {
+      case ShapeKind::Box: j["size"] = vec(g.size); break;
+      case ShapeKind::Sphere: j["radius"] = g.size[0]; break;
+      case ShapeKind::Capsule:
+      case ShapeKind::Cylinder:
+        j["radius"] = g.size[0];
+        j["length"] = g.size[1];
+        break;
+      case ShapeKind::Plane: j["plane"] = json::array({g.plane[0], g.plane[1], g.plane[2], g.plane[3]}); break;
+    }
+    if (g.shape != ShapeKind::Plane) {
+      j["position"] = vec(g.position);
+      j["orientation"] = quat(g.orientation);
+    }
+    if (g.category != 0xffffffffu) j["category"] = g.category;
+    if (g.collide != 0xffffffffu) j["collide"] = g.collide;
+    geoms.push_back(j);
+  }
+  json joints = json::array();
+  for (const Joint& k : world.joints) {
+    if ((k.body1 >= 0 && world.bodies[k.body1].removed) || (k.body2 >= 0 && world.bodies[k.body2].removed)) continue;
+    json j = {{"type", jointName(k.kind)}, {"body1", bodyRef(k.body1)}, {"body2", bodyRef(k.body2)}};
+    if (k.kind == JointKind::Ball || k.kind == JointKind::Hinge) j["anchor"] = vec(k.anchor);
+    if (k.kind == JointKind::Hinge || k.kind == JointKind::Slider) {
+      j["axis"] = vec(k.axis);
+      if (!std::isinf(k.lowStop)) j["low_stop"] = k.lowStop;
+      if (!std::isinf(k.highStop)) j["high_stop"] = k.highStop;
+    }
+    if (!std::isnan(k.erp)) j["erp"] = k.erp;
+    if (!std::isnan(k.cfm)) j["cfm"] = k.cfm;
+    joints.push_back(j);
+  }
+  json surfaces = json::array();
+  for (const Surface& s : world.surfaces) surfaces.push_back(writeSurface(s));
+  json pairs = json::array();
+  for (const PairSurface& p : world.pairSurfaces) {
+    if (geomIndex[p.geom1] < 0 || geomIndex[p.geom2] < 0) continue;
+    pairs.push_back({{"geoms", json::array({geomIndex[p.geom1], geomIndex[p.geom2]})}, {"surface", p.surface}});
+  }
+  const Settings& s = world.settings;
+  json settings = {{"step", s.step},
+                   {"gravity", vec(s.gravity)},
+                   {"erp", s.erp},
+                   {"cfm", s.cfm},
+                   {"solver", s.quickStep ? "quick" : "step"},
+                   {"iterations", s.iterations},
+                   {"sor_w", s.sorW},
+                   {"contact_max_correcting_velocity", number(s.contactMaxCorrectingVelocity)},
+                   {"contact_surface_layer", s.contactSurfaceLayer},
+                   {"max_contacts", s.maxContacts},
+                   {"space", s.space}};
+  json root = {{"format", "odelab-world"}, {"version", FORMAT_VERSION}};
+  if (!world.scene.empty()) root["scene"] = world.scene;
+  if (!world.title.empty()) root["title"] = world.title;
+  root["time"] = world.time;
+  root["settings"] = settings;
+  root["bodies"] = bodies;
+  root["geoms"] = geoms;
+  root["joints"] = joints;
+  root["surfaces"] = surfaces;
+  root["default_surface"] = world.defaultSurface;
+  root["pair_surfaces"] = pairs;
+  // 17 significant digits: every double comes back as the same double.
+  return root.dump(1) + "\n";
+}
+
+World readWorldFile(const std::string& path) {
+  // A world of thousands of bodies is a few MB; 64 MB leaves room and stops /dev/zero-like files.
+  constexpr std::size_t MAX_WORLD_BYTES = 64u << 20;
+  std::string text;
+  try {
+    text = readBoundedFile(path, MAX_WORLD_BYTES, "the world file");
+  } catch (const ReadRefused& error) {
+    throw WorldFileError(error.what());
+  }
+  try {
+    return worldFromJson(text);
+  } catch (const WorldFileError& error) {
+    throw WorldFileError(path + ": " + error.what());
+  }
+}
+
+}  // namespace odelab::world

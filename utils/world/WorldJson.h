@@ -1,0 +1,24 @@
+#pragma once
+
+// The world file (doc/world-format.md): JSON in, JSON out, one reader and one
+// writer for every part (the programs, the launcher, the engine adapters).
+
+#include <stdexcept>
+#include <string>
+
+#include "WorldDescription.h"
+
+namespace odelab::world {
+
+// A world file that cannot be used, with what and where: "bodies[3].mass:
+// must be > 0, got -1". Nothing has been built when it is thrown.
+class WorldFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+World worldFromJson(const std::string& text);  // throws WorldFileError
+std::string worldToJson(const World& world);   // removed bodies left out, indices renumbered
+World readWorldFile(const std::string& path);  // throws WorldFileError naming the path
+
+}  // namespace odelab::world
