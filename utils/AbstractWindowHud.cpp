@@ -56,7 +56,11 @@ std::vector<std::string> AbstractWindow::hudLines() const {
   std::vector<std::string> lines;
   if (session_.hudMode_ == HudMode::Off) return lines;
   const bool full = session_.hudMode_ == HudMode::Full;
-  lines.push_back(title_ + (full ? "" : "   (F1 more, H keys, Tab panel)"));
+  // On another engine the title says which, first thing read.
+  const std::string engine = engine_.active() ? "   on " + engine_.engineName() +
+                                                    (engine_.setting() == world::EngineSetting::Best ? " (best)" : "")
+                                              : std::string();
+  lines.push_back(title_ + engine + (full ? "" : "   (F1 more, H keys, Tab panel)"));
   lines.push_back(settingsLine(tuning_.knobs_));
   std::ostringstream s;
   char rate[96];
@@ -91,6 +95,11 @@ std::vector<std::string> AbstractWindow::hudLines() const {
     if (tuning_.contactChoicesUsed_)
       lines.push_back("contact mu " + ContactChoices::muWords(tuning_.contact_.mu) + " (F / G)   contacts per pair " +
                       std::to_string(tuning_.contact_.maxContacts));
+    if (engine_.active()) {
+      // Each engine's own words for what it could not take as ODE gave it.
+      lines.push_back(engine_.engineName() + ": " + std::to_string(engine_.translationNotes().size()) +
+                      " translation notes" + (engine_.translationNotes().empty() ? "" : " (first: " + engine_.translationNotes().front() + ")"));
+    }
     lines.insert(lines.end(), sceneLines.begin(), sceneLines.end());
     if (const AbstractObject* object = draggedObject()) {
       const dReal* v = dBodyGetLinearVel(object->getBody());

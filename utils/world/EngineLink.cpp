@@ -45,6 +45,15 @@ void EngineLink::start(std::unique_ptr<Engine> engine, const std::string& name, 
 }
 
 void EngineLink::sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf) {
+  // A body the scene made kinematic or dynamic again (test10 parks a cube
+  // that passed the wall) is another body to an engine: removed, and added
+  // anew under a new index.
+  for (size_t i = 0; i < index_.bodies.size(); ++i) {
+    const dBodyID body = index_.bodies[i];
+    if (!body || (dBodyIsKinematic(body) != 0) == world_.bodies[i].kinematic) continue;
+    forget(static_cast<int>(i));
+    bodyChanges_ = 0;  // so that the objects are looked at again below
+  }
   if (AbstractObject::bodyChanges() != bodyChanges_) {
     bodyChanges_ = AbstractObject::bodyChanges();
     // Removed first: a new body may take a removed one's address.
@@ -54,14 +63,8 @@ void EngineLink::sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& o
       liveGeoms.insert(object->getGeom());
       if (const dBodyID body = object->getBody()) liveBodies.insert(body);
     }
-    for (size_t i = 0; i < index_.bodies.size(); ++i) {
-      const dBodyID body = index_.bodies[i];
-      if (!body || liveBodies.count(body)) continue;
-      engine_->remove(static_cast<int>(i));
-      world_.bodies[i].removed = true;
-      index_.bodyIndex.erase(body);
-      index_.bodies[i] = nullptr;
-    }
+    for (size_t i = 0; i < index_.bodies.size(); ++i)
+      if (index_.bodies[i] && !liveBodies.count(index_.bodies[i])) forget(static_cast<int>(i));
     for (size_t i = 0; i < index_.geoms.size(); ++i)
       if (index_.geoms[i] && !liveGeoms.count(index_.geoms[i])) {
         index_.geomIndex.erase(index_.geoms[i]);
@@ -100,6 +103,20 @@ void EngineLink::changeSettings(const Settings& settings, const SurfaceOf& surfa
   world_.settings = settings;
   describeSurfaces(surfaceOf, world_, index_);
   engine_->changeSettings(world_);
+}
+
+void EngineLink::forget(int i) {
+  const dBodyID body = index_.bodies[static_cast<size_t>(i)];
+  engine_->remove(i);
+  world_.bodies[static_cast<size_t>(i)].removed = true;
+  index_.bodyIndex.erase(body);
+  index_.bodies[static_cast<size_t>(i)] = nullptr;
+  // Its geoms too: should the body live on (made kinematic), they are described again with it.
+  for (size_t g = 0; g < index_.geoms.size(); ++g)
+    if (index_.geoms[g] && world_.geoms[g].body == i) {
+      index_.geomIndex.erase(index_.geoms[g]);
+      index_.geoms[g] = nullptr;
+    }
 }
 
 double EngineLink::step() {

@@ -42,6 +42,7 @@ class EngineLink {
 
  private:
   void writeBack(int body, const BodyState& state);
+  void forget(int body);  // removed from the engine and the index
   BodyState odeState(dBodyID body) const;
 
   std::unique_ptr<Engine> engine_;

@@ -138,7 +138,8 @@ void describePairs(const SurfaceOf& surfaceOf, World& world, const OdeIndex& ind
   const int count = static_cast<int>(world.geoms.size());
   for (int b = std::max(from, 1); b < count; ++b)
     for (int a = 0; a < b; ++a) {
-      if (!world.mayTouch(a, b)) continue;
+      // A geom gone with its body (index null) touches nothing any more.
+      if (!index.geoms[a] || !index.geoms[b] || !world.mayTouch(a, b)) continue;
       dSurfaceParameters parameters{};
       surfaceOf(index.geoms[a], index.geoms[b], parameters);
       found.push_back({a, b, surfaceIndex(world, odelab::world::surfaceOf(parameters))});

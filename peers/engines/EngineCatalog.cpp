@@ -1,0 +1,78 @@
+#include <algorithm>
+
+#include "Adapters.h"
+
+namespace odelab::engines {
+
+namespace {
+
+// The engines other than ODE in the order --list-engines prints them, each
+// whether or not it was built, so that a missing one is named with its cure.
+const std::vector<std::string>& engineNames() {
+  static const std::vector<std::string> names{"bullet", "mujoco", "havok", "jolt", "rapier"};
+  return names;
+}
+
+[[maybe_unused]] world::EngineInfo notBuilt(const std::string& name, const std::string& why) {
+  world::EngineInfo info;
+  info.name = name;
+  info.missing = why;
+  return info;
+}
+
+#ifdef ODELAB_ENGINE_NODE
+bool isNodeEngine(const std::string& name) {
+  const std::vector<std::string> names = nodeEngineNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+#endif
+
+world::EngineInfo infoOf(const std::string& name) {
+  if (name == "bullet") {
+#ifdef ODELAB_ENGINE_BULLET
+    return bulletInfo();
+#else
+    return notBuilt(name, "this build has no Bullet: install Debian's libbullet-dev and configure again");
+#endif
+  }
+  if (name == "mujoco") {
+#ifdef ODELAB_ENGINE_MUJOCO
+    return mujocoInfo();
+#else
+    return notBuilt(name, "this build has no MuJoCo: install Debian's libmujoco-dev and libqhull-dev and configure again");
+#endif
+  }
+#ifdef ODELAB_ENGINE_NODE
+  return nodeEngineInfo(name);
+#else
+  return notBuilt(name, "this build cannot start Node.js engines (Windows and browser builds run ODE alone)");
+#endif
+}
+
+std::vector<world::EngineInfo> list() {
+  std::vector<world::EngineInfo> engines;
+  for (const std::string& name : engineNames()) engines.push_back(infoOf(name));
+  return engines;
+}
+
+std::unique_ptr<world::Engine> make(const std::string& name, world::EngineSetting setting) {
+  const world::EngineInfo info = infoOf(name);
+  if (!info.available) throw world::EngineError("engine '" + name + "' is not available here: " + info.missing);
+#ifdef ODELAB_ENGINE_BULLET
+  if (name == "bullet") return makeBullet(setting);
+#endif
+#ifdef ODELAB_ENGINE_MUJOCO
+  if (name == "mujoco") return makeMujoco(setting);
+#endif
+#ifdef ODELAB_ENGINE_NODE
+  if (isNodeEngine(name)) return makeNodeEngine(name, setting);
+#endif
+  (void)setting;
+  throw world::EngineError("engine '" + name + "' is not one of ode, bullet, mujoco, havok, jolt, rapier");
+}
+
+}  // namespace
+
+world::EngineCatalog catalog() { return {&list, &make}; }
+
+}  // namespace odelab::engines
