@@ -24,3 +24,14 @@ foreach(_program IN LISTS ODELAB_PROGRAMS)
                    ${_seconds} ${_args})
   set_tests_properties(${_program}_world_file_round_trip PROPERTIES LABELS engines TIMEOUT 300)
 endforeach()
+
+# A world file that cannot be read or run is refused before anything runs,
+# naming the path: absent, a folder, not JSON. --world is read by the
+# launcher, so the message names the file given.
+odelab_refusals(odelab refuses_unusable_world_files headless 2 NEEDLE "--world"
+                --world=/nonexistent-world.json --world=/ --world=/etc/hostname)
+# An engine that is not one, or --export-world with one: refused naming the option.
+foreach(_program IN LISTS ODELAB_PROGRAMS)
+  odelab_refusals(${_program} refuses_unknown_engines headless 2 --engine=odd "--export-world=w.json --engine=bullet"
+                  --engine-setting=better)
+endforeach()

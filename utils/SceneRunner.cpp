@@ -191,11 +191,11 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
     cli::refuseRunShorterThanStep(options, scene.tuning().settings().step);
     cli::checkKnobs(app, scene.tuning().knobs(), scene.tuning().settings().step);
     options.engineBest = engineSetting == "best";
-    if (options.engine != "ode") cli::requireAvailableEngine(options.engine);
     if (!exportWorld.empty()) {
       if (options.engine != "ode") throw UsageError("--export-world: the world is ODE's as built; leave out --engine");
       cli::requireReplaceableFile("--export-world", exportWorld);
     }
+    if (options.engine != "ode") cli::requireAvailableEngine(options.engine);
     scene.setRunOptions(options);
     scene.checkOptions();
     // The scenes a window may switch to get the same options: checked now,
