@@ -42,6 +42,7 @@ void WorldRun::create(unsigned seed) {
   steps_ = 0;
   contactsLastStep_ = 0;
   wallSeconds_ = 0.0;
+  engineWallSeconds_ = 0.0;
   blowUpReason_.clear();
 }
 

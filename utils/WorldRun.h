@@ -90,6 +90,7 @@ class WorldRun {
   double lastStepWallSeconds_ = 0.0;
   double collideWallSeconds_ = 0.0;
   double engineStepWallSeconds_ = 0.0;  // --engine: the engine's own calls in the last step
+  double engineWallSeconds_ = 0.0;      // ODE's own collision and step calls, this run
   bool profileCollision_ = false;
   bool timeSteps_ = false;
   bool unattended_ = false;  // inside runFor(): no input, rewind or plot, so stepOnce() skips them
