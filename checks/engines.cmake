@@ -35,3 +35,12 @@ foreach(_program IN LISTS ODELAB_PROGRAMS)
   odelab_refusals(${_program} refuses_unknown_engines headless 2 --engine=odd "--export-world=w.json --engine=bullet"
                   --engine-setting=better)
 endforeach()
+
+# Without Node.js: the three engines it runs are named as missing, refused
+# cleanly, and skipped (and said) by the lab (scripts/without_node.sh).
+if(ODELAB_ENGINE_NODE)
+  add_test(NAME engines_without_node_named_refused_and_skipped
+           COMMAND bash ${ODELAB_CHECK_SCRIPTS}/without_node.sh ${CMAKE_SOURCE_DIR} $<TARGET_FILE_DIR:test9>
+                   ${CMAKE_CURRENT_BINARY_DIR}/runs/without_node)
+  set_tests_properties(engines_without_node_named_refused_and_skipped PROPERTIES LABELS engines TIMEOUT 900)
+endif()

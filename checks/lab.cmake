@@ -4,9 +4,9 @@
 # repeated and stretched, doc/lab.md), then
 # lab/check_report.py checks that every CSV has its run header and rows, and that
 # every plot exists and is a valid image (PNG signature and size, SVG parses as XML).
-# The report's peers section runs bullet_lab and mujoco_lab: where either was
-# left out (peers/CMakeLists.txt names it once) the quick report is too.
-if(TARGET bullet_lab AND TARGET mujoco_lab)
+# The report's peers section runs the scenes on Bullet and MuJoCo (--engine): where either
+# was left out (peers/engines/CMakeLists.txt names it once) the quick report is too.
+if(ODELAB_ENGINE_BULLET AND ODELAB_ENGINE_MUJOCO)
   set(ODELAB_LAB_QUICK_DIR ${CMAKE_BINARY_DIR}/lab-quick)
   add_test(NAME lab_report_quick
            COMMAND ${CMAKE_SOURCE_DIR}/lab/odelab-report --quick --out ${ODELAB_LAB_QUICK_DIR}

@@ -18,7 +18,7 @@ set(ODELAB_WEB_SITE ${CMAKE_SOURCE_DIR}/build-web/site CACHE PATH "the browser b
 
 # The checks need Chromium and Node to run, and Emscripten to build the site
 # (unless it is built already): where one is missing they are left out, said
-# once here (Node once, by peers/CMakeLists.txt, where the peers are built).
+# once here (Node once, by peers/engines/CMakeLists.txt, where the engine adapters are built).
 find_program(ODELAB_NODE NAMES node nodejs)
 find_program(ODELAB_CHROMIUM NAMES chromium chromium-browser)
 find_program(ODELAB_EMCC emcc)

@@ -10,10 +10,10 @@
 #    their cache variables set to NOTFOUND (find_program looks in /usr/bin
 #    whatever PATH says, so PATH cannot hide them).
 # 1. Default configure, window packages only: status 0; Bullet, MuJoCo, Node
-#    and GoogleTest each named in exactly one line with its package; no peer
-#    target (bullet_lab, mujoco_lab, replay_lab, the web peers' launchers)
-#    and no check; then test0 (and the window module it loads) builds, and a
-#    1 s headless run ends with status 0 and its metrics.
+#    and GoogleTest each named in exactly one line with its package; no
+#    check; then test0 (and the window module it loads) builds, a 1 s
+#    headless run ends with status 0 and its metrics, and its --list-engines
+#    names Bullet and MuJoCo as not built, with their packages.
 # 2. Configure with the checks (GoogleTest visible) and every optional tool
 #    hidden: status 0; Wine, Chromium, Emscripten, Dask and Slurm each named
 #    in exactly one line with its package(s); checks registered, but none of
@@ -73,9 +73,6 @@ if cmake -S "$source_dir" -B "$work/window" -DCMAKE_BUILD_TYPE=Release "${launch
   named_once "$work/window.log" "Debian's libgtest-dev brings it" "GoogleTest"
   targets=$(cmake --build "$work/window" --target help 2>/dev/null)
   [ -n "$targets" ] || fail "cmake --build --target help listed no targets"
-  for peer in bullet_lab mujoco_lab replay_lab havok_lab jolt_lab rapier_lab odelab_peer_common; do
-    ! printf '%s\n' "$targets" | grep -qw "$peer" || fail "the peer target $peer exists"
-  done
   printf '%s\n' "$targets" | grep -qw test0 || fail "no target test0"
   tests=$(cd "$work/window" && ctest -N 2>/dev/null | sed -n 's/^Total Tests: //p')
   [ "${tests:-0}" -eq 0 ] || fail "$tests checks registered without GoogleTest"
@@ -88,6 +85,11 @@ if cmake -S "$source_dir" -B "$work/window" -DCMAKE_BUILD_TYPE=Release "${launch
     status=$?
     [ $status -eq 0 ] || fail "test0 --headless --seconds 1 ended with status $status: $(tail -n 3 "$work/run.log")"
     grep -q "^sim_seconds = 1$" "$work/run.log" || fail "test0's headless run printed no sim_seconds = 1"
+    engines=$("$work/window/tests/test0" --list-engines)
+    grep -q "^bullet: not available" <<<"$engines" && grep -q "libbullet-dev" <<<"$engines" ||
+      fail "test0 --list-engines does not name Bullet as missing with its package"
+    grep -q "^mujoco: not available" <<<"$engines" && grep -q "libmujoco-dev" <<<"$engines" ||
+      fail "test0 --list-engines does not name MuJoCo as missing with its package"
   else
     fail "building test0 failed: $(tail -n 10 "$work/build.log")"
   fi
@@ -112,7 +114,7 @@ if cmake -S "$source_dir" -B "$work/checks" -DCMAKE_BUILD_TYPE=Release "${launch
   listed=$(cd "$work/checks" && ctest -N 2>/dev/null)
   total=$(printf '%s\n' "$listed" | sed -n 's/^Total Tests: //p')
   [ "${total:-0}" -gt 0 ] || fail "no checks registered with GoogleTest visible"
-  left=$(printf '%s\n' "$listed" | grep -E "Test +#[0-9]+: (peers_|windows_|web_|lab_dask_|lab_slurm_|lab_report_quick)" |
+  left=$(printf '%s\n' "$listed" | grep -E "Test +#[0-9]+: ([a-z0-9]+_on_(havok|jolt|rapier)|engines_without_node|windows_|web_|lab_dask_|lab_slurm_|lab_report_quick)" |
          head -n 5)
   [ -z "$left" ] || fail "checks of a hidden part were registered: $left"
   echo "with the checks on: ${total:-0} checks registered, none of a hidden part"

@@ -4,11 +4,14 @@
 #include <cstdio>
 #include <sstream>
 
-#include "../Surfaces.h"
-
 namespace odelab::engines::mujoco {
 
 namespace {
+
+// No MuJoCo friction coefficient is infinite: a contact that never slides
+// (ODE's mu = dInfinity) gets 100, a friction cone of 89.4 degrees (sliding
+// only once the tangential force is 100 times the normal).
+constexpr double NO_SLIP_FRICTION = 100.0;
 
 // A number as a note says it: short.
 std::string say(double value) {
@@ -43,7 +46,7 @@ ContactParams contactOf(const world::Surface& surface, world::EngineSetting sett
                         SurfaceLosses& losses) {
   ContactParams c;
   if (std::isinf(surface.mu)) {
-    c.mu = peers::NO_SLIP_FRICTION;
+    c.mu = NO_SLIP_FRICTION;
     losses.infiniteFriction = true;
   } else if (surface.mu <= 0.0) {
     c.condim = 1;  // MuJoCo's frictionless contact
@@ -82,9 +85,9 @@ std::string span(const std::set<double>& values, const char* unit = "", bool cou
 std::vector<std::string> notesOf(const SurfaceLosses& losses, world::EngineSetting setting) {
   std::vector<std::string> notes;
   if (losses.infiniteFriction)
-    notes.push_back("infinite friction (mu = infinity) became friction " + say(peers::NO_SLIP_FRICTION) +
-                    ", a friction cone of 89.4 degrees, the value every peer engine takes for contacts that never "
-                    "slide: MuJoCo's friction is a finite coefficient");
+    notes.push_back("infinite friction (mu = infinity) became friction " + say(NO_SLIP_FRICTION) +
+                    ", a friction cone of 89.4 degrees, for contacts that never slide: MuJoCo's friction is a "
+                    "finite coefficient");
   if (!losses.forceBounds.empty())
     notes.push_back("friction mu = " + span(losses.forceBounds) +
                     " without friction_pyramid: ODE takes it as a friction force bound in newtons, MuJoCo as a "
