@@ -126,6 +126,7 @@ class AxisSystem2 : public AbstractWindow {
     energyAfterThrow_.clear();
     restSum_ = 0.0;
     restSamples_ = 0;
+    cubePassedPivot_ = false;
     throwTestCube();  // the scene starts with the first throw
   }
 
@@ -134,6 +135,7 @@ class AxisSystem2 : public AbstractWindow {
     maxJointError_ = std::max(maxJointError_, jointError_);
     pivotSpeed_ = vectorLength(dBodyGetAngularVel(pivot_->getBody()));
     maxPivotSpeed_ = std::max(maxPivotSpeed_, pivotSpeed_);
+    cubePassedPivot_ = cubePassedPivot_ || beyondPivot();
     const double energy = pairEnergy();
     if (throwCount_ == 1 && simulatedTime() >= REST_FROM_SECONDS && simulatedTime() <= REST_TO_SECONDS) {
       restSum_ += energy;
@@ -172,6 +174,9 @@ class AxisSystem2 : public AbstractWindow {
     m.set("max_angular_speed", maxPivotSpeed_);
     m.set("max_angular_speed_limit", angularLimit_.radPerSecond);
     m.set("throws", throwCount_);
+    // 1 when a throw went through the pivot instead of hitting it (a soft or
+    // missed contact): the joint figures then measure no hit.
+    m.set("cube_passed_pivot", cubePassedPivot_ ? 1 : 0);
     m.set("resting_energy_offset", restingEnergy());
     for (size_t i = 0; i < energyAfterThrow_.size(); ++i)
       m.set("energy_after_throw_" + std::to_string(i + 1), energyAfterThrow_[i]);
@@ -210,6 +215,16 @@ class AxisSystem2 : public AbstractWindow {
   }
 
   // Energy of the pivot and the big cube, zero when they hang as built.
+  // The test cube's centre beyond the pivot's along the throw (+x) by more
+  // than the two touching, while level with it: it went through.
+  bool beyondPivot() const {
+    const dReal* pivot = dBodyGetPosition(pivot_->getBody());
+    const dReal* cube = dBodyGetPosition(testCube_->getBody());
+    const double touching = (PIVOT_SIDE + TEST_CUBE_SIDE) / 2;
+    return cube[0] - pivot[0] > touching && std::fabs(cube[1] - pivot[1]) < touching &&
+           std::fabs(cube[2] - pivot[2]) < touching;
+  }
+
   double pairEnergy() const {
     return mechanicalEnergy(pivot_->getBody(), settings().gravity, PIVOT_CENTRE_Y) +
            mechanicalEnergy(big_->getBody(), settings().gravity, BIG_CENTRE_Y);
@@ -265,6 +280,7 @@ class AxisSystem2 : public AbstractWindow {
   std::array<dJointID, 2> joints_{};
   double jointError_ = 0.0, maxJointError_ = 0.0;
   double pivotSpeed_ = 0.0, maxPivotSpeed_ = 0.0;
+  bool cubePassedPivot_ = false;
   int throwCount_ = 0;
   std::vector<double> energyAfterThrow_;
   std::deque<double> recentEnergy_;  // the pair's energy at each step since the last throw, up to 1 s

@@ -1,9 +1,12 @@
 """The thesis's comparisons with Havok, against live Havok: every place the
 thesis says how Havok 6.5 did (quoting another thesis), measured with
-today's Havok (the havok peer, peers/wasm/havok_lab.js, @babylonjs/havok)
-beside this build's ODE at the same scene, step and length, and a verdict
+today's Havok (the scene's own program with --engine havok: the scene's
+world in @babylonjs/havok, measured by the scene's own code) beside this
+build's ODE at the same scene, step and length, and a verdict
 by a stated rule. Havok runs as a user gets it ("default"), except where
 the thesis speaks of Havok after its modifications ("best")."""
+
+import subprocess
 
 from .. import markdown as md
 from ..claims import Claim, q as column, slot
@@ -11,7 +14,6 @@ from ..runner import RunSpec, median
 from .base import Experiment, Outcome
 from .limit_test5 import SETTLE, SPAWN_INTERVAL
 
-HAVOK = "../peers/havok_lab"
 CLOSE = 1.5              # as thesis.py: "about X" within this factor
 THESIS_LOST = 0.50       # 5.3: Havok lost up to 50% of the energy within a minute
 THESIS_HAVOK_KG = 4000.0  # 5.5: Havok held 4000 kg; ODE twice as much
@@ -22,7 +24,20 @@ JOINT_HOLDS_M = 0.02     # test7: as thesis.py's test7 row
 
 
 def havok(scene, *args, setting="default"):
-    return RunSpec(HAVOK, ["--scene", scene, "--setting", setting, "--step", 0.001, *args])
+    return RunSpec(scene, ["--engine", "havok", "--engine-setting", setting, "--step", 0.001, *args])
+
+
+def havok_missing(ctx):
+    """Why Havok cannot run here ("" when it can): the --list-engines line of a scene's program."""
+    listing = subprocess.run([str(ctx.runner.build_dir / "test1"), "--list-engines"], capture_output=True,
+                             text=True).stdout.splitlines()
+    for i, line in enumerate(listing):
+        if line.startswith("havok: "):
+            if line.startswith("havok: available"):
+                return ""
+            after = listing[i + 1].strip() if i + 1 < len(listing) else ""
+            return after[len("missing: "):] if after.startswith("missing: ") else "not available"
+    return "this build has no havok engine"
 
 
 class ThesisHavok(Experiment):
@@ -38,11 +53,9 @@ class ThesisHavok(Experiment):
         plates = 15 if q else 60  # full: each ODE run >= 0.5 s of CPU, as a timing needs
         stack = ["--plates", plates, "--spawn-interval", SPAWN_INTERVAL,
                  "--seconds", round(plates * SPAWN_INTERVAL + SETTLE, 3)]
-        peer = ctx.runner.build_dir.parent / "peers" / "havok_lab"
-        if not peer.exists():
-            text = (f"Not run: no {peer} (the havok peer needs node and peers/wasm/node_modules at configure "
-                    "time; see doc/peers.md).")
-            return Outcome(text, [])
+        missing = havok_missing(ctx)
+        if missing:
+            return Outcome(f"Not run: Havok is not available here ({missing}).", [])
         specs = {
             "o1": RunSpec("test1", ["--erp", 0, "--cfm", 0, "--seconds", 15]),
             "h1": havok("test1", "--seconds", 15),
@@ -65,7 +78,7 @@ class ThesisHavok(Experiment):
             "h10": havok("test10", "--find-max-velocity"),
         }
         repeats = 2 if q else 5
-        timed = {"o5": ("test5", stack), "h5": (HAVOK, ["--scene", "test5", "--step", 0.001, *stack])}
+        timed = {"o5": ("test5", stack), "h5": ("test5", ["--engine", "havok", "--step", 0.001, *stack])}
         ctx.expect(len(specs) + len(timed))
         keys = list(specs)
         r = dict(zip(keys, ctx.runner.map([specs[k] for k in keys])))
@@ -76,7 +89,7 @@ class ThesisHavok(Experiment):
         ctx.advance(len(timed))
         rows = [judge(r, q, h4, plates) for judge in JUDGES]
         name = ctx.write_csv("thesis-havok", list(rows[0].keys()), rows,
-                             notes=["havok: peers/wasm/havok_lab.js (@babylonjs/havok), step 0.001 as the thesis; "
+                             notes=["havok: the scene's program with --engine havok (@babylonjs/havok), step 0.001 as the thesis; "
                                     "ode: this build's program at the same scene, step and length",
                                     f"test5's costs: {repeats} interleaved timed runs each, median [range]"])
         table = md.table(["test", "the thesis on Havok", "Havok today", "ODE today", "verdict", "measured cause",
@@ -84,7 +97,7 @@ class ThesisHavok(Experiment):
                          [[x["test"], x["thesis_says"], x["havok_measured"], x["ode_measured"], f"**{x['verdict']}**",
                            x["cause"], x["rule"]] for x in rows])
         text = f"""Every comparison with Havok 6.5 the thesis makes, measured against today's Havok (WebAssembly,
-the havok peer) beside this build's ODE at the thesis's step 0.001{" (quick: shorter runs)" if q else ""}.
+--engine havok) beside this build's ODE at the thesis's step 0.001{" (quick: shorter runs)" if q else ""}.
 {slot("counts")}
 
 {table}
@@ -109,7 +122,7 @@ def best_text(result):
 def test1(r, q, h4, plates):
     h, o = r["h1"].m("max_rebound_error"), r["o1"].m("max_rebound_error")
     return row("test1", "Havok less accurate than ODE", f"largest rebound error {h:.2g}", f"{o:.2g} (ERP 0, CFM 0)",
-               h > o, "-", "reproduced when Havok's max_rebound_error exceeds ODE's", "havok_lab --scene test1 --seconds 15")
+               h > o, "-", "reproduced when Havok's max_rebound_error exceeds ODE's", "test1 --engine havok --seconds 15")
 
 
 def test2(r, q, h4, plates):
@@ -117,7 +130,7 @@ def test2(r, q, h4, plates):
     return row("test2", "Havok lost up to 50% of the energy within a minute", f"lost {md.pct(lost, 2)} in 60 s",
                f"energy {md.pct(-ode, 2)} (ERP 0.4, CFM 0)", THESIS_LOST / CLOSE <= lost <= THESIS_LOST * CLOSE,
                f"without its default angular damping 0.1 (best setting) Havok loses {md.pct(-r['h2_best'].m('energy_drift'), 2)}",
-               f"reproduced when Havok's loss over 60 s is within {CLOSE}x of 50%", "havok_lab --scene test2 --seconds 60")
+               f"reproduced when Havok's loss over 60 s is within {CLOSE}x of 50%", "test2 --engine havok --seconds 60")
 
 
 def test4(r, q, h4, plates):
@@ -129,7 +142,7 @@ def test4(r, q, h4, plates):
                f"with its ideal step time set to the step (best setting): {kg:g} kg {best_text(r['h4_best'])}, "
                f"{2 * kg:g} kg {best_text(r['h4_2_best'])}",
                f"reproduced when Havok holds {kg:g} kg and not {2 * kg:g}, and ODE holds {2 * kg:g}",
-               f"havok_lab --scene test4 --big-mass 4000|8000 --seconds {h4}")
+               f"test4 --engine havok --big-mass 4000|8000 --seconds {h4}")
 
 
 def test5(r, q, h4, plates):
@@ -145,7 +158,7 @@ def test5(r, q, h4, plates):
               f"the runs' ranges {'overlap' if min(h) < max(o) and min(o) < max(h) else 'are apart'}; "
               f"no plate left the column by more than {PUSHED_OUT_M:g} m",
               f"reproduced when every Havok run costs less CPU per step than every ODE run and a plate is pushed "
-              f"out more than {PUSHED_OUT_M:g} m", f"havok_lab --scene test5 --plates {plates} (timed)")
+              f"out more than {PUSHED_OUT_M:g} m", f"test5 --engine havok --plates {plates} (timed)")
     if faster and offset <= PUSHED_OUT_M:
         out["verdict"] = "partly"
     return out
@@ -157,7 +170,7 @@ def test6(r, q, h4, plates):
     return row("test6", "Havok holds the axis system up",
                f"falls after {a.m('seconds_upright'):.3g} s" if fell else "holds", "see the test6 row above",
                not fell, "best setting (ideal step time h, no angular damping): "
-               + ("falls" if r["h6_best"].m("fell") else "holds"), "reproduced when Havok's fell = 0", f"havok_lab --scene test6 --seconds {10 if q else 20}")
+               + ("falls" if r["h6_best"].m("fell") else "holds"), "reproduced when Havok's fell = 0", f"test6 --engine havok --seconds {10 if q else 20}")
 
 
 def test7(r, q, h4, plates):
@@ -165,7 +178,7 @@ def test7(r, q, h4, plates):
     ok = a.rc == 0 and a.m("max_joint_error", 1) < JOINT_HOLDS_M and not a.m("cube_passed_pivot")
     return row("test7", "Havok stable after modifications", f"best setting: joint error {a.m('max_joint_error'):.2g} m",
                "see the test7 row above", ok, "-", f"as ODE's row: max_joint_error < {JOINT_HOLDS_M:g} m, a finite state, "
-               "the cube not through the pivot", "havok_lab --scene test7 --setting best")
+               "the cube not through the pivot", "test7 --engine havok --engine-setting best")
 
 
 def test9(r, q, h4, plates):
@@ -178,17 +191,17 @@ def test9(r, q, h4, plates):
                f"20th apex {ode:.2g} m off (ERP 0.2, CFM 0)", ode <= EXACT_M < min(errors.values()), "-",
                f"reproduced when ODE's 20th apex is within {EXACT_M:g} m of the start and Havok's more than that at "
                "both settings (the thesis's gain after tuning is not tested: apex_error is unsigned)",
-               "havok_lab --scene test9 --seconds 21 [--setting best]; test9 --erp 0.2 --cfm 0 --seconds 25")
+               "test9 --engine havok --seconds 21 [--engine-setting best]; test9 --erp 0.2 --cfm 0 --seconds 25")
 
 
 def test10(r, q, h4, plates):
     v = r["h10"].m("max_velocity")
     return row("test10", "Havok stopped every cube up to 350 m/s", f"{v:.4g} m/s", "see the test10 rows above",
                THESIS_HAVOK_MS / CLOSE <= v <= THESIS_HAVOK_MS * CLOSE,
-               "today's Havok keeps speculative contacts always on (the peer's first line)",
+               "today's Havok keeps speculative contacts always on (doc/peers.md)",
                f"reproduced when Havok's limit is within {CLOSE}x of {THESIS_HAVOK_MS:g} m/s (its gradual failures "
-               "above the limit are not tested: the peer's scan stops at the first)",
-               "havok_lab --scene test10 --find-max-velocity")
+               "above the limit are not tested: the scene's scan stops at the first)",
+               "test10 --engine havok --find-max-velocity")
 
 
 JUDGES = [test1, test2, test4, test5, test6, test7, test9, test10]
