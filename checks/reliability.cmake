@@ -87,23 +87,6 @@ odelab_check(test5_threaded_run_says_not_reproducible test5 LABEL hardening
 odelab_check(test5_single_thread_run_says_reproducible test5 LABEL hardening
   EXPECT threads==1 reproducible==1 ARGS --headless --seconds 0.5)
 
-# The peers read their options with the ODE programs' parser and rules
-# (utils/CommandLine): a value the rules refuse is status 2 naming the
-# option, with no metrics and nothing else left in the folder (MuJoCo's
-# MUJOCO_LOG.TXT included). They ran NaN steps and runs of no step with
-# status 0 and "perfect" metrics.
-# (Only the peers that were built: peers/CMakeLists.txt leaves out one whose library is missing.)
-foreach(_peer bullet_lab mujoco_lab)
-  if(NOT TARGET ${_peer})
-    continue()
-  endif()
-  odelab_refusals(${_peer} refuses_what_the_ode_programs_refuse headless 2
-                  --step=nan --step=inf --step=0 --step=<empty> --seconds=0 --seconds=-1 --seconds=nan
-                  --seconds=1e-9 "--seconds=1e-8 --step=1e-7" --velocity=nan --big-mass=nan --bob-mass=inf
-                  --scene=test0 --setting=maybe --metrics-json=/dev/null --metrics-json=/nonexistent/m.json
-                  --metrics-json=. --no-such-option "--step=0.001 --step=0.002")
-endforeach()
-
 # The lab's inputs and endings: a CMakeCache.txt that is a FIFO, huge,
 # binary or no cache at all; SIGTERM while a program hangs; SIGHUP while the
 # runs go on; a run leaving a FIFO or gigabytes. Each ends at once with its

@@ -154,13 +154,13 @@ case "$command" in
     # Everything the checks need, in one apt run: the programs' packages,
     # the Windows cross-build's, the browser build's.
     install_missing "${packages[@]}" "${windows_packages[@]}" "${web_packages[@]}"
-    # The web peers (peers/wasm, doc/peers.md): Havok, Jolt and Rapier from
-    # the npm registry, pinned by the lockfile; offline after this.
+    # The engines that run in Node.js (peers/wasm, doc/peers.md): Havok, Jolt
+    # and Rapier from the npm registry, pinned by the lockfile; offline after this.
     if command -v node >/dev/null && command -v npm >/dev/null; then
       (cd "$root/peers/wasm" && npm ci --no-audit --no-fund --loglevel=error) ||
-        say "npm ci failed in peers/wasm: the web peers (Havok, Jolt, Rapier) and their checks are skipped"
+        say "npm ci failed in peers/wasm: --engine havok, jolt and rapier and their checks are skipped"
     else
-      say "no node/npm: the web peers (Havok, Jolt, Rapier) and their checks are skipped"
+      say "no node/npm: --engine havok, jolt and rapier and their checks are skipped"
     fi
     build
     # The programs cross-built for Windows, which the label `windows` runs

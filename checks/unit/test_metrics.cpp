@@ -160,7 +160,7 @@ TEST(Metrics, PrintedLinesHaveTheJsonDigits) {
 }
 
 TEST(Metrics, ReadsWhatOtherWritersWrite) {
-  // Python's json.dump, the JavaScript peers (peers/wasm/src/metrics.js) and
+  // Python's json.dump and
   // older files of this writer (10 digits): exponents either case, escaped names.
   const Metrics m = odelab::parseMetricsJson(
       "{\"a\": 1.5, \"b\": -2, \"c\": 1e+20, \"d\": 1E-5, \"e\": null, \"f\\\"g\": 3, \"\\u00e9\": 4}");
@@ -204,10 +204,11 @@ TEST(Metrics, MalformedFilesAreRefusedSayingWhereAndWhy) {
   EXPECT_EQ(refusal("[1]"), "metrics JSON: expected an object, found an array");
   EXPECT_EQ(refusal("3"), "metrics JSON: expected an object, found a number");
   EXPECT_EQ(refusal("null"), "metrics JSON: expected an object, found null");
-  EXPECT_EQ(refusal("{\"a\": \"1\"}"), "metrics JSON: \"a\" is a string, not a number or null");
-  EXPECT_EQ(refusal("{\"a\": true}"), "metrics JSON: \"a\" is a boolean, not a number or null");
-  EXPECT_EQ(refusal("{\"a\": {\"b\": 1}}"), "metrics JSON: \"a\" is an object, not a number or null");
-  EXPECT_EQ(refusal("{\"a\": [1]}"), "metrics JSON: \"a\" is an array, not a number or null");
+  const std::string allowed = ", not a number, null or list of strings";
+  EXPECT_EQ(refusal("{\"a\": \"1\"}"), "metrics JSON: \"a\" is a string" + allowed);
+  EXPECT_EQ(refusal("{\"a\": true}"), "metrics JSON: \"a\" is a boolean" + allowed);
+  EXPECT_EQ(refusal("{\"a\": {\"b\": 1}}"), "metrics JSON: \"a\" is an object" + allowed);
+  EXPECT_EQ(refusal("{\"a\": [1]}"), "metrics JSON: \"a\" is an array with a number" + allowed);
   // What strtod took and JSON does not: NaN and infinity spelled out, hex,
   // a leading '+'; and anything after the object.
   for (const char* text : {"{\"a\": nan}", "{\"a\": inf}", "{\"a\": 0x10}", "{\"a\": +1}", "{\"a\": 1} x", "{\"a\": 1}{}", ""})
@@ -223,4 +224,20 @@ TEST(Metrics, ManyNamesStayFast) {
   ASSERT_EQ(back.entries().size(), 100000u);
   EXPECT_EQ(back.entries()[99999].first, "visit99999.test2.energy");
   EXPECT_EQ(back.get("visit99999.test2.energy"), 99999.5);
+}
+
+TEST(Metrics, ListsOfSentencesRoundTrip) {
+  // An engine's translation notes: sentences with quotes and non-ASCII
+  // text, written after the numbers and read back in order.
+  odelab::Metrics m;
+  m.set("steps", 3);
+  m.setTexts("translation_notes", {"mu \"infinity\" became 1e6", "float32: ~7 digits", "α"});
+  m.setTexts("engine", {"jolt", "best"});
+  const odelab::Metrics back = odelab::parseMetricsJson(m.toJson());
+  EXPECT_EQ(back.get("steps"), 3);
+  ASSERT_EQ(back.texts().size(), 2u);
+  EXPECT_EQ(back.texts()[0].second, m.texts()[0].second);
+  EXPECT_EQ(back.texts()[1].second, (std::vector<std::string>{"jolt", "best"}));
+  EXPECT_THROW(odelab::parseMetricsJson("{\"a\": [1, 2]}"), std::runtime_error);
+  EXPECT_THROW(odelab::parseMetricsJson("{\"a\": [[\"x\"]]}"), std::runtime_error);
 }
