@@ -25,6 +25,12 @@ each before committing it.
 A figure that cannot be placed is listed for a person; nothing is written
 unless --write is given (without it the changes are printed).
 
+It also regenerates doc/peers.md's generated block (between the markers of
+odelab_report/peers_notes.py, at the end of the page): the engines'
+translation notes per engine and scene, from the committed
+doc/results/peers-notes.csv; the page's text outside the markers is left as
+it is.
+
 Usage: refresh_doc_figures.py --from REV [--write] [--cite] [--only PAGE ...] [--root DIR]
 (exit 0: every failing figure placed; 1: some left for a person; 2: bad usage)"""
 
@@ -42,6 +48,9 @@ from urllib.parse import quote
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import check_docs  # noqa: E402  (the same figures, the same rules)
 from odelab_report import files  # noqa: E402  (the one writer)
+from odelab_report import peers_notes  # noqa: E402  (doc/peers.md's generated block)
+
+NOTES_PAGE = Path("doc") / "peers.md"
 
 
 def old_tables(root, rev, paths):
@@ -276,6 +285,18 @@ def refresh_page(root, doc, tables, old, held_now, code, rel, cite=False):
     return "\n".join(lines), changes, left
 
 
+def notes_block(root):
+    """(doc/peers.md's text with its generated block made from
+    doc/results/peers-notes.csv, whether that changes the page); (None,
+    False) when the page, its markers or the CSV are not there."""
+    page, source = root / NOTES_PAGE, root / "doc" / "results" / peers_notes.NOTES_CSV
+    if not page.exists() or not source.exists():
+        return None, False
+    text = page.read_text()
+    new = peers_notes.with_block(text, peers_notes.markdown(peers_notes.read_rows(source)))
+    return new, new is not None and new != text
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--from", dest="rev", required=True, help="the commit whose report the docs quote")
@@ -308,6 +329,13 @@ def main(argv):
         all_left += left
         if changes and args.write:
             files.write_atomically(doc, text)
+    if not args.only or (root / NOTES_PAGE).resolve() in {d.resolve() for d in docs}:
+        text, changed = notes_block(root)
+        if changed:
+            print(f"{NOTES_PAGE}: the translation notes block regenerated from "
+                  f"doc/results/{peers_notes.NOTES_CSV}")
+            if args.write:
+                files.write_atomically(root / NOTES_PAGE, text)
     for item in all_left:
         print("left: " + item)
     return 1 if all_left else 0

@@ -3,7 +3,8 @@ answers which ODE setting, at what cost, and whether another engine does
 better: the quantity and the setting the row is about (its definition),
 ODE's figure there, the thesis's verdict in one word, the cheapest ODE
 setting within 1% and the best other engine, costs in CPU seconds per
-simulated second. Every cell reads the row's quantity at the row's setting
+simulated second (the other engine's: its own seconds, collision and step
+calls, per simulated second). Every cell reads the row's quantity at the row's setting
 (readings.py says what each source reads); a source that reads another
 gives "n/a: <why>", never its figure. Every figure cell is a Claim
 (claims.py), read from the CSVs the experiments wrote.
@@ -116,32 +117,34 @@ PEERS_SECTION = "5"  # RESULTS.md's section of experiments/peers.py
 def peer_cell(scene, higher_better, figure="{v:k2}", step=0.001):
     """The best engine other than ODE in peers.csv at the row's step, at
     its defaults (as ODE's figure is at the thesis's settings: defaults
-    beside defaults), like with like (peer_compare.py): a run on another
-    surface than ODE's or with a figure zero by construction takes no part;
-    the cell shows the step where it is not the column's 0.001 (and the
-    friction where it acts) and the CPU
-    cost, median [range] of the timed runs; an equal figure whose cost
-    range overlaps the cheapest's is a tie."""
+    beside defaults), like with like (peer_compare.py): every engine runs
+    the scene's own world, so a run with a figure zero by construction (or
+    one marked as not on the scene's surface) takes no part; the cell shows
+    the step where it is not the column's 0.001 (and the scene's mu where
+    friction acts) and the engine's own seconds per simulated second,
+    median [range] of the timed runs; an equal figure whose cost range
+    overlaps the cheapest's is a tie."""
     f = "peers.csv"
     where = dict(scene=scene, step=step, setting="default")
     values = {"engines": q(f, "engine", "texts", **where), "vals": q(f, "value", "list", **where),
-              "costs": q(f, "cpu_s_per_sim_s", "list", **where), "lo": q(f, "cpu_s_per_sim_s_min", "list", **where),
-              "hi": q(f, "cpu_s_per_sim_s_max", "list", **where), "like": q(f, "like_ode_surface", "list", **where),
-              "made": q(f, "by_construction", "texts", **where), "frictions": q(f, "friction", "texts", **where),
+              "costs": q(f, "engine_s_per_sim_s", "list", **where),
+              "lo": q(f, "engine_s_per_sim_s_min", "list", **where),
+              "hi": q(f, "engine_s_per_sim_s_max", "list", **where), "like": q(f, "like_ode_surface", "list", **where),
+              "made": q(f, "by_construction", "texts", **where), "mus": q(f, "mu", "texts", **where),
               "others": "[i for i, e in enumerate(engines) if e != 'ode' and vals[i] is not None]",
               "fair": "[i for i in others if like[i] == 1 and not made[i] and costs[i] is not None]",
               "i": "fair[best_of([engines[j] for j in fair], [vals[j] for j in fair], [costs[j] for j in fair], "
                    f"{higher_better})] if fair else 0",
               "tied": "[j for j in fair if j != i and vals[j] == vals[i] and lo[j] <= hi[i]]",
               "name": "engines[i]", "v": "vals[i]", "c": "costs[i]", "a": "lo[i]", "b": "hi[i]",
-              # the friction, where it acts (peer_compare.FRICTION_ACTS)
-              "surface": "' mu ' + frictions[i]" if scene in FRICTION_ACTS else "''"}
+              # the scene's friction, where it acts (peer_compare.FRICTION_ACTS)
+              "surface": "' mu ' + mus[i]" if scene in FRICTION_ACTS else "''"}
     at = "" if step == 0.001 else f" @{md.num(step)}"  # the column's step: said in its header
     return [Claim(f"first.{scene}.peer.tie", f"[tie (see §{PEERS_SECTION})](#exp-peers)", values,
                   "len(fair) > 0 and len(tied) > 0"),
             Claim(f"first.{scene}.peer", "{name} " + figure + at + "{surface}, {c:k2} [{a:k2}-{b:k2}]", values,
                   "len(fair) > 0 and len(tied) == 0"),
-            Claim(f"first.{scene}.peer.friction", "n/a: friction differs", values,
+            Claim(f"first.{scene}.peer.friction", "n/a: surface differs", values,
                   "len(others) > 0 and len(fair) == 0 and any(like[j] == 0 for j in others)"),
             Claim(f"first.{scene}.peer.construction", "n/a: zero by construction", values,
                   "len(others) > 0 and len(fair) == 0 and all(made[j] for j in others)"),

@@ -1,10 +1,11 @@
 """The engines experiment's headline finding for one scene, as Claims on
 peers.csv: at the scene's comparison step, defaults beside defaults (ODE's
 one setting counts as its default), like with like as peer_compare.py
-decides it (a run on another surface than ODE's where friction acts, or a
-figure zero by construction, takes no part; an error below an engine's
-rounding counts as that rounding), the best figure, and its CPU cost as the
-median [range] of the timed runs. An equal figure whose cost range
+decides it (a figure zero by construction, or a run marked as not on the
+scene's surface, takes no part; an error below an engine's
+rounding counts as that rounding), the best figure, and its cost, the engine's own seconds (its
+collision and step calls) per simulated second, as the median [range] of
+the timed runs. An equal figure whose cost range
 overlaps the cheapest's is a tie within the timing's scatter. The text and
 rule are recomputed from peers.csv alone (check_report.py), so a headline
 cannot say more than the rows hold."""
@@ -22,9 +23,9 @@ def headline(scene, label, lower_is_better, step, float32_engines, rounding, flo
         "engines": q(f, "engine", "texts", **where),
         "settings": q(f, "setting", "texts", **where),
         "v": q(f, "value", "list", **where),
-        "cost": q(f, "cpu_s_per_sim_s", "list", **where),
-        "lo": q(f, "cpu_s_per_sim_s_min", "list", **where),
-        "hi": q(f, "cpu_s_per_sim_s_max", "list", **where),
+        "cost": q(f, "engine_s_per_sim_s", "list", **where),
+        "lo": q(f, "engine_s_per_sim_s_min", "list", **where),
+        "hi": q(f, "engine_s_per_sim_s_max", "list", **where),
         "like": q(f, "like_ode_surface", "list", **where),
         "made": q(f, "by_construction", "texts", **where),
         "odes": "[i for i in range(len(engines)) if engines[i] == 'ode']",
@@ -50,7 +51,7 @@ def headline(scene, label, lower_is_better, step, float32_engines, rounding, flo
     holds = "len(fair) > 0 and all(score[i] >= best if %r else score[i] <= best for i in fair) and " \
             "all(cost[w] <= cost[i] for i in equal)" % lower_is_better
     return [Claim(f"headline.peers.{scene}", opening + ": {name} is {how} with {figure} at {c:k2} [{a:k2}-{b:k2}] "
-                  "CPU s per simulated s.", values, holds + " and len(tied) == 0"),
+                  "engine s per simulated s.", values, holds + " and len(tied) == 0"),
             Claim(f"headline.peers.{scene}.tie", opening + ": a tie within the timing's scatter at {figure}: "
                   "{names}.", values, holds + " and len(tied) > 0"),
             Claim(f"headline.peers.{scene}.none", opening + ": no engine that compares reached a figure.", values,

@@ -88,8 +88,9 @@ def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partia
 
 FIRST_SCREEN_INTRO = """Each row: one quantity at one setting (its second cell); every cell read from this report's
 CSVs by the rule in claims.csv (lab/check_report.py recomputes them). Cost: CPU s per simulated s,
-median [min-max] over the timed repeats, this machine; other engines at their defaults, like with like
-(same step and surface; a tie within the timing's scatter says so). "n/a": why no figure."""
+median [min-max] over the timed repeats, this machine; the best other engine's: the engine's own seconds
+(its collision and step calls) per simulated s; other engines at their defaults on the scene's own world,
+like with like (same step and surface; a tie within the timing's scatter says so). "n/a": why no figure."""
 
 FIRST_SCREEN_BELOW = """Below: [what decides each figure](#what-decides-each-figure),
 [the machine](#run), [the thesis's table](#exp-thesis), [ties and costs](#exp-speed-test9) (§3),

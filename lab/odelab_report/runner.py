@@ -87,8 +87,20 @@ class RunResult:
         self.attempts = 1
 
     def m(self, name, default=None):
+        """A metric as the program wrote it: a number, or a list (of strings,
+        e.g. "engine" or "translation_notes"), or `default` when absent or null."""
         value = self.metrics.get(name)
         return default if value is None else value
+
+    def texts(self, name):
+        """A metric that lists texts (e.g. "translation_notes"), as a list of
+        strings: [] when absent; a lone string or number becomes a list of one."""
+        value = self.metrics.get(name)
+        if value is None:
+            return []
+        if isinstance(value, list):
+            return [str(v) for v in value if v is not None]
+        return [str(value)]
 
     @property
     def blew_up(self):
@@ -271,12 +283,20 @@ class Runner:
 
     def help_text(self, program):
         """`program --help`, to see which options this build has."""
+        return self.ask(program, ["--help"])
+
+    def ask(self, program, args):
+        """The standard output of `program args` run here, once per report
+        (cached): a question to the program, not a measurement (--help,
+        --list-engines)."""
+        key = (program, tuple(str(a) for a in args))
         with self._lock:
-            if program in self._help:
-                return self._help[program]
+            if key in self._help:
+                return self._help[key]
         if self._aborted:
             raise LabError("interrupted")
-        child = subprocess.Popen([str(self.build_dir / program), "--help"], stdout=subprocess.PIPE,
+        asked = " ".join((program,) + key[1])
+        child = subprocess.Popen([str(self.build_dir / program), *key[1]], stdout=subprocess.PIPE,
                                  stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, text=True,
                                  start_new_session=True)  # abort() ends its whole group
         with self._lock:
@@ -285,15 +305,34 @@ class Runner:
             text, _ = child.communicate(timeout=60)
         except subprocess.TimeoutExpired:
             kill_group(child)
-            raise LabError(f"{program} --help gave no answer within 60 s") from None
+            raise LabError(f"{asked} gave no answer within 60 s") from None
         finally:
             with self._lock:
                 self._children.discard(child)
         if self._aborted:
             raise LabError("interrupted")
         with self._lock:
-            self._help[program] = text
+            self._help[key] = text
         return text
+
+    def export_world(self, program):
+        """The world `program --export-world FILE` writes (doc/world-format.md),
+        parsed; once per report (cached)."""
+        with self._lock:
+            if (program, "world") in self._help:
+                return self._help[(program, "world")]
+        folder = Path(tempfile.mkdtemp(prefix=Path(program).name + "-world-", dir=self._tmp_root))
+        path = folder / "world.json"
+        self.ask(program, ["--export-world", str(path)])
+        try:
+            world = json.loads(read_text(path, MAX_METRICS_BYTES, "the exported world"))
+        except (OSError, ValueError, InputError) as error:
+            raise LabError(f"{program} --export-world wrote no readable world ({path}): {error}") from None
+        if not isinstance(world, dict):
+            raise LabError(f"{program} --export-world wrote a world that is not a JSON object ({path})")
+        with self._lock:
+            self._help[(program, "world")] = world
+        return world
 
     @property
     def aborted(self):

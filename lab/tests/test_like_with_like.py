@@ -1,51 +1,75 @@
 """Unit checks of like with like across engines and of timing with spread
-(peer_compare.py, timing.py, the first screen's engines cell): a run on
-another surface than ODE's or with a figure zero by construction takes no
-part; defaults beside defaults; an equal figure whose timing range overlaps
-the cheapest's is a tie; a timed run lasts long enough to time.
+(peer_compare.py, timing.py, the first screen's engines cell, the peers
+experiment's runs: every engine runs the scene's own program on the scene's
+own world): a figure zero by construction takes no part; defaults beside
+defaults; an equal figure whose engine-time range overlaps the cheapest's
+is a tie; a timed run lasts long enough to time; the engines come from
+--list-engines, the surface from --export-world, the translation notes into
+peers-notes.csv and doc/peers.md's generated block.
 Run: /usr/bin/python3 -m unittest discover -s lab/tests (CTest: lab_executor_units, lab_like_with_like)."""
 
+import json
 import shutil
 import sys
 import tempfile
+import types
 import unittest
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from odelab_report import first_screen, peer_compare, timing, timing_check  # noqa: E402
+from odelab_report import first_screen, peer_compare, peers_notes, timing, timing_check  # noqa: E402
 from odelab_report.claims import Data, Sentences  # noqa: E402
 from odelab_report import remedy_test4_claims as remedy_test4  # noqa: E402
+from odelab_report.runner import RunResult, RunSpec  # noqa: E402
+import refresh_doc_figures  # noqa: E402
 
 HEADER = "# ODE: test\n"
-COLUMNS = ("scene,engine,setting,step,quantity,value,friction,like_ode_surface,by_construction,"
-           "cpu_s_per_sim_s,cpu_s_per_sim_s_min,cpu_s_per_sim_s_max\n")
+COLUMNS = ("scene,engine,setting,step,quantity,value,mu,like_ode_surface,by_construction,"
+           "engine_s_per_sim_s,engine_s_per_sim_s_min,engine_s_per_sim_s_max\n")
 
 
-def row(engine, value, cpu, low, high, friction="100", like=1, made="", scene="test3", setting="default"):
-    return dict(scene=scene, engine=engine, setting=setting, value=value, friction=friction,
-                like_ode_surface=like, by_construction=made, cpu_median=cpu, cpu_min=low, cpu_max=high)
+def row(engine, value, cost, low, high, like=1, made="", scene="test3", setting="default"):
+    """A row as peer_compare.standings reads it: cost_* the engine seconds per simulated second."""
+    return dict(scene=scene, engine=engine, setting=setting, value=value, surface="mu infinite",
+                like_ode_surface=like, by_construction=made, cost_median=cost, cost_min=low, cost_max=high)
 
 
 class Standings(unittest.TestCase):
-    def test_an_equal_figure_inside_the_cheapest_timing_range_is_a_tie(self):
-        # test3 in the committed report: Havok 0.0880 against Bullet 0.0890 s/s, one run each.
+    def test_an_equal_figure_inside_the_cheapest_engine_time_range_is_a_tie(self):
         havok, bullet = row("havok", 1.0, 0.088, 0.085, 0.093), row("bullet", 1.0, 0.089, 0.086, 0.092)
         winners, _ = peer_compare.standings([bullet, havok], lower_is_better=False)
         self.assertEqual([r["engine"] for r in winners], ["havok", "bullet"])
 
-    def test_a_cheaper_run_outside_the_scatter_wins_alone(self):
+    def test_a_cheaper_engine_time_outside_the_scatter_wins_alone(self):
         havok, bullet = row("havok", 1.0, 0.05, 0.049, 0.051), row("bullet", 1.0, 0.089, 0.086, 0.092)
         winners, _ = peer_compare.standings([bullet, havok], lower_is_better=False)
         self.assertEqual([r["engine"] for r in winners], ["havok"])
 
-    def test_another_surface_takes_no_part(self):
-        # test4: the peers at their default friction against ODE's infinite.
-        ode = row("ode", 4000.0, 0.01, 0.01, 0.01, friction="infinite", scene="test4")
-        bullet = row("bullet", 1e6, 0.02, 0.02, 0.02, friction="engine default", like=0, scene="test4")
+    def test_the_peers_rows_compare_on_engine_time_not_process_cpu(self):
+        # jolt's process is dear (Node.js, the pipe) but its engine calls are cheap: engine time decides.
+        from odelab_report.experiments import peers
+        jolt = dict(scene="test9", engine="jolt", setting="default", value=1e-9, like_ode_surface=1,
+                    by_construction="", engine_s_per_sim_s=0.001, engine_s_per_sim_s_min=0.0009,
+                    engine_s_per_sim_s_max=0.0011, cpu_s_per_sim_s=0.2, cpu_s_per_sim_s_min=0.19,
+                    cpu_s_per_sim_s_max=0.21)
+        ode = dict(jolt, engine="ode", engine_s_per_sim_s=0.004, engine_s_per_sim_s_min=0.0039,
+                   engine_s_per_sim_s_max=0.0041, cpu_s_per_sim_s=0.005, cpu_s_per_sim_s_min=0.0049,
+                   cpu_s_per_sim_s_max=0.0051)
+        winners, _ = peer_compare.standings([peers.as_standing(ode), peers.as_standing(jolt)], lower_is_better=True,
+                                            floor_of=lambda r: peers.rounding_of(r["engine"]))
+        self.assertEqual([r["engine"] for r in winners], ["ode"])  # 1e-9 is float32 rounding on jolt: equal figures
+        winners, _ = peer_compare.standings([peers.as_standing(ode), peers.as_standing(jolt)], lower_is_better=True)
+        self.assertEqual([r["engine"] for r in winners], ["jolt"])
+        self.assertEqual(peers.cost_text(jolt), "0.001 [0.0009-0.0011]")
+        self.assertEqual(peers.cost_text(jolt, "cpu_s_per_sim_s"), "0.2 [0.19-0.21]")
+
+    def test_a_row_marked_off_the_surface_takes_no_part(self):
+        ode = row("ode", 4000.0, 0.01, 0.01, 0.01, scene="test4")
+        bullet = row("bullet", 1e6, 0.02, 0.02, 0.02, like=0, scene="test4")
         winners, excluded = peer_compare.standings([ode, bullet], lower_is_better=False)
         self.assertEqual([r["engine"] for r in winners], ["ode"])
-        self.assertIn("friction differs (engine default against ODE's infinite)", excluded[0][1])
+        self.assertIn("surface differs (mu infinite)", excluded[0][1])
 
     def test_a_figure_zero_by_construction_does_not_win(self):
         ode = row("ode", 0.0017, 0.004, 0.004, 0.004, scene="test7")
@@ -55,16 +79,208 @@ class Standings(unittest.TestCase):
         self.assertEqual([r["engine"] for r in winners], ["ode"])
         self.assertIn("generalized coordinates", excluded[0][1])
 
-    def test_the_surface_is_read_from_the_peers_settings_line(self):
-        line = "bullet test5, step 0.001 s, ...; friction 100 on every shape (test5's never-sliding contacts)"
-        self.assertEqual(peer_compare.peer_friction(line), "100")
-        self.assertTrue(peer_compare.like_surface("test5", "100"))  # the peers' no-slip, ODE's infinity
-        self.assertEqual(peer_compare.peer_friction("bullet test4, step 0.001 s: Bullet's defaults"),
-                         "engine default")
-        self.assertFalse(peer_compare.like_surface("test4", "engine default"))
-        self.assertTrue(peer_compare.like_surface("test9", "engine default"))  # head-on: friction does not act
-        self.assertTrue(peer_compare.like_surface("test3", "1"))
-        self.assertFalse(peer_compare.like_surface("test3", "100"))
+    def test_by_construction_from_the_adapters_note_the_table_as_fallback(self):
+        note = ("joints are MuJoCo joints in generalized coordinates (a body's freedom relative to its parent "
+                "body): they cannot come apart, so their error is 0 where ODE's is not")
+        self.assertEqual(peer_compare.by_construction("mujoco", "test8", [note]), f"zero by construction ({note})")
+        self.assertEqual(peer_compare.by_construction("bullet", "test7", []), "")
+        self.assertEqual(peer_compare.by_construction("mujoco", "test7", []),
+                         peer_compare.BY_CONSTRUCTION[("mujoco", "test7")])
+        self.assertEqual(peer_compare.by_construction("mujoco", "test2", [note]), "")  # not a joint's error
+
+
+WORLD_TEST9 = {"format": "odelab-world", "surfaces": [
+    {"mu": "infinity", "restitution": 1.0, "bounce_velocity": 0.01}], "default_surface": 0, "pair_surfaces": []}
+WORLD_TEST1 = {"surfaces": [{"mu": "infinity", "restitution": 0.0, "bounce_velocity": 0.01},
+                            {"mu": "infinity", "restitution": 0.5, "bounce_velocity": 0.01}],
+               "pair_surfaces": [{"geoms": [0, 2], "surface": 1}, {"geoms": [0, 3], "surface": 1}]}
+
+
+class Surfaces(unittest.TestCase):
+    """The scene's surface in words, from its --export-world file."""
+
+    def test_surface_words_from_a_world_file(self):
+        folder = Path(tempfile.mkdtemp())
+        self.addCleanup(shutil.rmtree, folder)
+        (folder / "world.json").write_text(json.dumps(WORLD_TEST9))
+        world = json.loads((folder / "world.json").read_text())
+        self.assertEqual(peer_compare.surface_words(world), "mu infinite, restitution 1 (bounce velocity 0.01 m/s)")
+        self.assertEqual(peer_compare.surface_short(world), "mu ∞, e 1")
+        self.assertEqual(peer_compare.surface_words({"surfaces": [{"mu": 1.0}]}), "mu 1")
+        self.assertEqual(peer_compare.surface_words({"surfaces": [{"mu": "infinity"}]}), "mu infinite")
+        self.assertEqual(peer_compare.surface_words(WORLD_TEST1), "mu infinite + 2 pair surfaces")
+        self.assertEqual(peer_compare.surface_short(WORLD_TEST1), "mu ∞ + 2 pairs")
+        self.assertEqual(peer_compare.surface_words({"surfaces": [{"mu": 0.5, "soft_cfm": 1e-5}]}),
+                         "mu 0.5, soft CFM 1e-05")
+        self.assertEqual(peer_compare.mu_text(peer_compare.default_surface(WORLD_TEST9)), "infinite")
+
+
+LIST_ENGINES = """ode: available, double
+  best settings: the scene's own settings (ODE is the reference)
+bullet: available, version 3.24, double
+  best settings: at least 100 solver iterations
+mujoco: not available, version 2.2.2, double
+  missing: libmujoco was not found when the program was built
+jolt: available, version 1.1.0, float32
+  best settings: no damping (default 0.05 linear and angular), 50 velocity and 10 position iterations
+rapier: not available
+  missing: node was not found at configure time
+"""
+
+
+class PeersRuns(unittest.TestCase):
+    """The peers experiment runs `testN --engine E` (the scene's own program)."""
+
+    def setUp(self):
+        from odelab_report.experiments import peers
+        self.peers = peers
+        self.scene = {s.name: s for s in peers.SCENES}
+
+    def test_every_engine_runs_the_scenes_own_program(self):
+        for scene in self.peers.SCENES:
+            for engine in self.peers.ENGINES:
+                self.assertEqual(self.peers.program_of(engine, scene), scene.name)
+
+    def test_engine_arguments_and_odes_own_settings(self):
+        test9, test7, test2 = self.scene["test9"], self.scene["test7"], self.scene["test2"]
+        self.assertEqual(self.peers.settings_of("jolt", test9),
+                         [("default", ["--engine", "jolt", "--engine-setting", "default"]),
+                          ("best", ["--engine", "jolt", "--engine-setting", "best"])])
+        self.assertEqual(self.peers.settings_of("ode", test9), self.peers.ODE_SETTINGS["test9"])
+        self.assertNotIn("--engine", str(self.peers.settings_of("ode", test7)))
+        # the scene's own arguments go to every engine alike (no --scene, no --setting)
+        for engine in ("ode", "bullet", "havok"):
+            self.assertEqual(self.peers.base_args(engine, test2, quick=False), ["--sample-interval", 3600,
+                                                                                "--seconds", 20])
+            self.assertEqual(self.peers.base_args(engine, test7, quick=False), ["--max-angular-speed", 0])
+
+    def test_a_measured_run_is_the_scene_with_the_engine(self):
+        specs = []
+
+        def run(spec):
+            specs.append(spec)
+            return types.SimpleNamespace(rc=0, m=lambda name, default=None: 0.5 if name == "apex_error_20" else default,
+                                         texts=lambda name: ["a note"])
+        ctx = types.SimpleNamespace(quick=False, runner=types.SimpleNamespace(run=run))
+        value, r, seen = self.peers.Peers().measure(ctx, self.scene["test9"], "jolt",
+                                                    ["--engine", "jolt", "--engine-setting", "best"], 0.001)
+        self.assertEqual(value, 0.5)
+        self.assertEqual(specs[0].program, "test9")
+        self.assertEqual(specs[0].args, ("--seconds", "21", "--engine", "jolt", "--engine-setting", "best",
+                                         "--step", "0.001"))
+        self.assertEqual(peers_notes.notes_of(seen), ["a note"])
+
+    def test_list_engines_is_parsed(self):
+        engines = self.peers.list_engines(LIST_ENGINES)
+        self.assertEqual(list(engines), ["ode", "bullet", "mujoco", "jolt", "rapier"])
+        self.assertTrue(engines["bullet"]["available"])
+        self.assertEqual(engines["bullet"]["version"], "3.24")
+        self.assertEqual(engines["jolt"]["precision"], "float32")
+        self.assertEqual(engines["ode"]["version"], "")
+        self.assertEqual(engines["ode"]["precision"], "double")
+        self.assertFalse(engines["mujoco"]["available"])
+        self.assertEqual(engines["mujoco"]["missing"], "libmujoco was not found when the program was built")
+        self.assertFalse(engines["rapier"]["available"])
+        self.assertEqual(engines["rapier"]["missing"], "node was not found at configure time")
+        self.assertTrue(engines["jolt"]["best"].startswith("no damping"))
+        self.assertEqual(self.peers.engine_name("mujoco", engines["mujoco"]), "MuJoCo 2.2.2")
+        self.assertEqual(self.peers.rounding_of("jolt", ("jolt",)), self.peers.FLOAT32_ROUNDING)
+        self.assertEqual(self.peers.rounding_of("bullet", ("jolt",)), self.peers.ROUNDING)
+
+    def test_an_engine_not_available_is_skipped_with_its_reason(self):
+        infos, skipped = self.peers.available_engines({"test9": self.peers.list_engines(LIST_ENGINES)})
+        self.assertEqual(list(infos), ["ode", "bullet", "jolt"])
+        self.assertEqual(skipped, {"mujoco": "libmujoco was not found when the program was built",
+                                   "havok": "not listed by the program's --list-engines",
+                                   "rapier": "node was not found at configure time"})
+
+    def test_the_timed_costs_take_the_engines_own_time(self):
+        def run(engine_wall, cpu, sim=2.0):
+            spec = RunSpec("test9", [])
+            return RunResult(spec, 0, {"sim_seconds": sim, "wall_seconds": cpu, "engine_wall_seconds": engine_wall},
+                             "", "", cpu, "/tmp", "here")
+        got = self.peers.costs([run(0.02, 0.5), run(0.04, 0.6), run(0.03, 0.7)])
+        self.assertEqual((got["engine_s_per_sim_s"], got["engine_s_per_sim_s_min"], got["engine_s_per_sim_s_max"]),
+                         (0.015, 0.01, 0.02))
+        self.assertAlmostEqual(got["cpu_s_per_sim_s"], 0.3)
+        self.assertEqual(got["repeats"], 3)
+
+
+class Notes(unittest.TestCase):
+    """Translation notes: the metrics' list, peers-notes.csv, doc/peers.md's block."""
+
+    def test_a_list_metric_is_read_without_harm(self):
+        metrics = {"engine": ["jolt", "default"], "translation_notes": ["a", "b"], "sim_seconds": 1.0, "steps": 10,
+                   "non_finite": 0, "engine_wall_seconds": 0.1, "translation_note_count": 2}
+        folder = Path(tempfile.mkdtemp())
+        self.addCleanup(shutil.rmtree, folder)
+        r = RunResult(RunSpec("test9", []), 0, metrics, "", "", 0.1, folder, "here")
+        r.check(r.spec)  # lists of strings are no non-finite number
+        self.assertEqual(r.m("engine"), ["jolt", "default"])
+        self.assertEqual(r.texts("translation_notes"), ["a", "b"])
+        self.assertEqual(r.texts("absent"), [])
+        self.assertEqual(peers_notes.notes_of(None), [])
+
+    def rows(self):
+        return peers_notes.rows_of([
+            ("test9", "jolt", "default", ["Jolt bounces only above 1 m/s", "float32: single precision"]),
+            ("test9", "jolt", "default", ["Jolt bounces only above 1 m/s"]),  # another step: said once
+            ("test9", "jolt", "best", ["float32: single precision"]),
+            ("test4", "bullet", "default", ["infinite friction became friction 1000000 in Bullet."]),
+            ("test10", "bullet", "best", ["infinite friction became friction 1000000 in Bullet."]),
+            ("test9", "ode", "default", [])])
+
+    def test_the_notes_csv_has_each_note_once_per_scene_engine_and_setting(self):
+        rows = self.rows()
+        self.assertEqual(len(rows), 5)
+        folder = Path(tempfile.mkdtemp())
+        self.addCleanup(shutil.rmtree, folder)
+        from odelab_report import csvout
+        csvout.write_csv(folder / peers_notes.NOTES_CSV, [("ODE", "test")], peers_notes.COLUMNS, rows)
+        back = peers_notes.read_rows(folder / peers_notes.NOTES_CSV)
+        self.assertEqual(back[0], dict(scene="test9", engine="jolt", setting="default",
+                                       note="Jolt bounces only above 1 m/s"))
+        self.assertEqual(peers_notes.per_engine(back, "test9"),
+                         {"jolt": [("Jolt bounces only above 1 m/s", ["default"]),
+                                   ("float32: single precision", ["default", "best"])]})
+
+    def test_the_markdown_block_per_engine_and_scene(self):
+        text = peers_notes.markdown(self.rows())
+        self.assertTrue(text.startswith("## Translation notes, per engine and scene (generated)"))
+        self.assertIn("### jolt\n\n- **test9**:\n  - Jolt bounces only above 1 m/s (default only).\n"
+                      "  - float32: single precision.", text)
+        # scenes in their order (test4 before test10); a note's own full stop is not doubled
+        self.assertIn("### bullet\n\n- **test4**:\n  - infinite friction became friction 1000000 in Bullet (default "
+                      "only).\n- **test10**:\n  - infinite friction became friction 1000000 in Bullet (best only).",
+                      text)
+        self.assertNotIn("### ode", text)
+        self.assertIn("No translation notes", peers_notes.markdown([]))
+
+    def test_the_block_replaces_only_the_text_between_its_markers(self):
+        page = f"# Peers\n\nThe lead's text.\n\n{peers_notes.BEGIN}\nold\n{peers_notes.END}\n"
+        new = peers_notes.with_block(page, "new block")
+        self.assertEqual(new, f"# Peers\n\nThe lead's text.\n\n{peers_notes.BEGIN}\nnew block\n{peers_notes.END}\n")
+        self.assertIsNone(peers_notes.with_block("# no markers\n", "x"))
+
+    def test_refresh_doc_figures_writes_the_block_from_the_committed_csv(self):
+        root = Path(tempfile.mkdtemp())
+        self.addCleanup(shutil.rmtree, root)
+        (root / "doc" / "results").mkdir(parents=True)
+        from odelab_report import csvout
+        csvout.write_csv(root / "doc" / "results" / peers_notes.NOTES_CSV, [("ODE", "test")], peers_notes.COLUMNS,
+                         self.rows())
+        page = f"# Peers\n\nAbove.\n\n{peers_notes.BEGIN}\n(none yet)\n{peers_notes.END}\n"
+        (root / "doc" / "peers.md").write_text(page)
+        text, changed = refresh_doc_figures.notes_block(root)
+        self.assertTrue(changed)
+        self.assertTrue(text.startswith("# Peers\n\nAbove.\n\n" + peers_notes.BEGIN))
+        self.assertIn("- **test9**:\n  - Jolt bounces only above 1 m/s (default only).", text)
+        self.assertEqual((root / "doc" / "peers.md").read_text(), page)  # written only by main(--write)
+
+    def test_doc_peers_md_has_the_markers_at_its_end(self):
+        text = (Path(__file__).resolve().parents[2] / "doc" / "peers.md").read_text()
+        self.assertLess(text.index(peers_notes.BEGIN), text.index(peers_notes.END))
+        self.assertEqual(text[text.index(peers_notes.END):].strip(), peers_notes.END)
 
 
 class Timing(unittest.TestCase):
@@ -109,17 +325,17 @@ class EnginesCell(unittest.TestCase):
                  "test3,bullet,default,0.005,fallen_fraction,1,1,1,,0.2,0.19,0.21"]
         self.assertTrue(self.cell("test3", lines, figure="{v:p2}", step=0.005).startswith("bullet "))
 
-    def test_another_friction_is_not_compared(self):
+    def test_a_row_off_the_surface_is_not_compared(self):
         lines = ["test4,ode,default,0.001,heaviest_held_kg,4000,infinite,1,,0.01,0.01,0.01",
-                 "test4,bullet,default,0.001,heaviest_held_kg,1000000,engine default,0,,0.02,0.02,0.02"]
-        self.assertEqual(self.cell("test4", lines, figure="{v:k2} kg"), "n/a: friction differs")
+                 "test4,bullet,default,0.001,heaviest_held_kg,1000000,infinite,0,,0.02,0.02,0.02"]
+        self.assertEqual(self.cell("test4", lines, figure="{v:k2} kg"), "n/a: surface differs")
 
     def test_zero_by_construction_does_not_win(self):
         made = peer_compare.BY_CONSTRUCTION[("mujoco", "test7")]
-        lines = ["test7,mujoco,default,0.001,max_joint_error,3.6e-15,100,1," + made + ",0.008,0.008,0.008",
-                 "test7,bullet,default,0.001,max_joint_error,0.03,100,1,,0.0055,0.0054,0.0056"]
+        lines = ["test7,mujoco,default,0.001,max_joint_error,3.6e-15,infinite,1," + made + ",0.008,0.008,0.008",
+                 "test7,bullet,default,0.001,max_joint_error,0.03,infinite,1,,0.0055,0.0054,0.0056"]
         self.assertEqual(self.cell("test7", lines, higher_better=False, figure="{v:k2} m"),
-                         "bullet 0.03 m mu 100, 0.0055 [0.0054-0.0056]")
+                         "bullet 0.03 m mu infinite, 0.0055 [0.0054-0.0056]")
 
 
 class TuningTies(unittest.TestCase):

@@ -115,7 +115,9 @@ class EnginesTest6Unranked(unittest.TestCase):
         scene = next(s for s in peers.SCENES if s.name == "test6")
         rows = [dict(scene="test6", engine=e, setting="best", step=0.001, value=v, wall_s_per_sim_s=0.01,
                      cpu_s_per_sim_s=0.01, cpu_s_per_sim_s_min=0.009, cpu_s_per_sim_s_max=0.011, repeats=5,
-                     friction="100", like_ode_surface=1, by_construction="", exit_status=0, voided=False,
+                     engine_s_per_sim_s=0.005, engine_s_per_sim_s_min=0.004, engine_s_per_sim_s_max=0.006,
+                     surface="mu infinite", mu="infinite", like_ode_surface=1, by_construction="", exit_status=0,
+                     voided=False,
                      capped=False) for e, v in (("ode", 10.98), ("havok", 60.0))]
         text, headline, claims = peers.Peers().scene_part(ctx, scene, rows)
         self.assertEqual(claims, {})
@@ -175,7 +177,7 @@ class SwingEnergy(unittest.TestCase):
         scene = next(s for s in peers.SCENES if s.name == "test2")
         ctx = types.SimpleNamespace(quick=False, runner=types.SimpleNamespace(
             run=lambda spec: FakeRun({"energy_max_deviation": 0.01, "energy_start_J": E0})))
-        value, _ = peers.Peers().measure(ctx, scene, "bullet", [], 0.001)
+        value, _, _ = peers.Peers().measure(ctx, scene, "bullet", [], 0.001)
         self.assertAlmostEqual(value, 0.01 * E0 / SWING)
         self.assertIn("(m g d)", scene.label)
 

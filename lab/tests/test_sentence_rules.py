@@ -15,8 +15,8 @@ import check_report  # noqa: E402
 from odelab_report import csvout, peers_headline  # noqa: E402
 from odelab_report.claims import HEADLINE, Claim, Data, Sentences, q, read_rows, recheck  # noqa: E402
 
-PEERS = ("# ODE: test\nscene,engine,setting,step,quantity,value,cpu_s_per_sim_s,cpu_s_per_sim_s_min,"
-         "cpu_s_per_sim_s_max,like_ode_surface,by_construction,capped\n"
+PEERS = ("# ODE: test\nscene,engine,setting,step,quantity,value,engine_s_per_sim_s,engine_s_per_sim_s_min,"
+         "engine_s_per_sim_s_max,like_ode_surface,by_construction,capped\n"
          "test2,ode,default,0.001,e,0.00032,0.003,0.0028,0.0032,1,,0\n"
          "test2,ode,best,0.001,e,1e-9,0.004,0.0038,0.0042,1,,0\n"
          "test2,havok,default,0.001,e,3e-8,0.02,0.019,0.021,1,,0\n"
@@ -44,8 +44,8 @@ class PeersHeadline(unittest.TestCase):
         return Sentences(Data(self.folder)).say(*claims, place=HEADLINE)
 
     def test_errors_below_rounding_tie_inside_the_scatter(self):
-        # havok's and jolt's errors are both below float32 rounding; their CPU
-        # ranges overlap: a tie, the cheapest first; ODE's and MuJoCo's "best"
+        # havok's and jolt's errors are both below float32 rounding; their
+        # engine-time ranges overlap: a tie, the cheapest first; ODE's and MuJoCo's "best"
         # settings take no part beside defaults.
         self.assertEqual(self.say("test2", "energy error", True),
                          "peers test2 (energy error): at step 0.001, defaults beside defaults: a tie within the "

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <string>
 
 #include "Box.h"
 #include "Plane.h"
@@ -215,10 +215,10 @@ std::string WorldFileScene::fileTitle(const std::string& path) const {
 }
 
 void WorldFileScene::addHudLines(std::vector<std::string>& lines) const {
-  std::ostringstream s;
-  s << "world file" << (world_.scene.empty() ? "" : " from " + world_.scene) << ": " << world_.bodies.size() << " bodies, "
-    << world_.geoms.size() << " geoms, " << world_.joints.size() << " joints";
-  lines.push_back(s.str());
+  auto count = [](size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
+  lines.push_back("world file" + (world_.scene.empty() ? std::string() : " from " + world_.scene) + ": " +
+                  count(world_.bodies.size(), "body", "bodies") + ", " + count(world_.geoms.size(), "geom", "geoms") +
+                  ", " + count(world_.joints.size(), "joint", "joints"));
 }
 
 }  // namespace odelab::world

@@ -2,26 +2,29 @@
 through their WebAssembly builds in Node.js, Havok, Jolt and Rapier, at the
 same steps, each engine at its defaults and at its best (doc/peers.md).
 
-ODE runs its own program (build/tests/testN); the peers run
-build/peers/<engine>_lab, found in the folder `peers/` beside the
---build-dir folder (the web peers' are launchers CMake writes where node and
-peers/wasm/node_modules are there; without them those three are skipped and
-the report says so). Every program writes the same metric names, so one
-reading serves every engine. The thesis's Havok figures come from
+Every engine runs the scene's own program: `build/tests/testN --engine E
+--engine-setting default|best` describes the scene's ODE world as data,
+the engine's adapter (peers/engines/) builds and steps it, and the scene's
+own code measures it, so every engine writes the scene's own metric names
+on the scene's own world (its surface, masses, step and length). ODE runs
+the program as it is, at ODE_SETTINGS. Which engines this build has, and
+their versions, come from `testN --list-engines`; one not available is
+skipped and the report says why. What an adapter could not express exactly
+it lists in its run's `translation_notes`: they go beside the figures and
+into peers-notes.csv. The thesis's Havok figures come from
 lab/reference/thesis-figures.csv, quoted, never measured here."""
 
-import json
 import re
-from pathlib import Path
 
 from .. import markdown as md
 from .. import peers_headline
+from .. import peers_notes
 from .. import swing_energy
 from .. import timing
 from ..plots import peers as plots
-from ..header import first_line
-from ..peer_compare import BY_CONSTRUCTION, like_surface, ode_friction, peer_friction, standings, surface_text
-from ..runner import LabError, RunSpec
+from ..peer_compare import by_construction, default_surface, mu_text, standings, surface_short, \
+    surface_words
+from ..runner import RunSpec
 from ..search import highest_passing
 from .base import Experiment, Outcome
 from .limit_test4 import judge as judge_test4
@@ -29,11 +32,9 @@ from .limit_test5 import SETTLE as SETTLE_TEST5, SPAWN_INTERVAL as SPAWN_INTERVA
 from .thesis import reference_rows
 
 ENGINES = ("ode", "bullet", "mujoco", "havok", "jolt", "rapier")
-PEER_PROGRAMS = {"bullet": "bullet_lab", "mujoco": "mujoco_lab", "havok": "havok_lab", "jolt": "jolt_lab",
-                 "rapier": "rapier_lab"}
-# The web peers and their npm packages (versions read from the lockfile).
-WEB_PEERS = {"havok": "@babylonjs/havok", "jolt": "jolt-physics", "rapier": "@dimforge/rapier3d-compat"}
-LOCKFILE = Path(__file__).resolve().parents[3] / "peers" / "wasm" / "package-lock.json"
+# The engines that run through Node.js (WebAssembly): ten to a hundred times
+# ODE's cost, so fewer steps in the full report (WEB_STEPS).
+NODE_ENGINES = ("havok", "jolt", "rapier")
 # Below this an error is rounding, not physics: such settings tie, and the
 # cheapest wins. The web peers hold their state in float32: there an error
 # below 1e-7 is rounding.
@@ -49,10 +50,11 @@ VERDICT_STEPS = {"test3": [0.005, 0.001]}
 # stretched to last timing.MIN_RUN_CPU_SECONDS.
 FIXED_LENGTH = ("test3", "test5", "test10")  # (test10: the scan; the peers have no repeated launches)
 
-# Each engine's settings per scene: (name, program arguments). A peer's
-# "default" and "best" are defined in its program (peers/*_lab.cpp, printed
-# on its first line); ODE's best is the ODE program's own remedy for the scene.
-PEER_SETTINGS = [("default", ["--setting", "default"]), ("best", ["--setting", "best"])]
+# Each engine's settings per scene: (name, program arguments). Another
+# engine's "default" and "best" are its adapter's (peers/engines/; `testN
+# --list-engines` prints what best sets); ODE's best is the ODE program's own
+# remedy for the scene.
+ENGINE_SETTINGS = ("default", "best")
 ODE_SETTINGS = {
     "test1": [("default", [])],  # ERP 0, CFM 0: the thesis's accurate setting
     "test6": [("default", []), ("best", ["--solver", "step"])],
@@ -63,8 +65,8 @@ ODE_SETTINGS = {
     "test10": [("default", []), ("best", ["--ccd"])],
     "test3": [("default", []), ("best", ["--solver", "step"])],
     "test5": [("default", []), ("best", ["--space", "hash"])],  # the thesis's remedy: a hash space
-    # No peer caps the angular speed: ODE runs without its cap too.
-    "test7": [("default", ["--max-angular-speed", 0]), ("best", ["--max-angular-speed", 0, "--solver", "step"])],
+    # (test7 runs without its angular speed cap on every engine: RUN_ARGS.)
+    "test7": [("default", []), ("best", ["--solver", "step"])],
 }
 ODE_SETTING_TEXT = {
     "test1": "the program's (ERP 0, CFM 0, bounce velocity 0.01 m/s), one setting",
@@ -76,7 +78,7 @@ ODE_SETTING_TEXT = {
     "test10": "default: the program's (ERP 0.3, CFM 0, surface layer 0); best: its --ccd sweep",
     "test3": "default: the program's (QuickStep 8, auto-disable on); best: dWorldStep",
     "test5": "default: the program's (QuickStep 20, ERP 0.2, CFM 0, simple space); best: a hash space (the thesis's remedy)",
-    "test7": "default: the program's (QuickStep 20) without its angular speed cap, as every peer; best: dWorldStep",
+    "test7": "default: the program's (QuickStep 20) without its angular speed cap, as every engine; best: dWorldStep",
 }
 
 
@@ -98,7 +100,7 @@ class Scene:
         self.convert = convert  # the metric's value -> the figure, where they differ
 
     def steps(self, quick, engine="ode"):
-        if quick or engine not in WEB_PEERS:
+        if quick or engine not in NODE_ENGINES:
             return self.quick_steps if quick else self.full_steps
         return [step for step in self.full_steps if step in WEB_STEPS[self.name]]
 
@@ -151,50 +153,82 @@ SCENES = [
     Scene("test10", "max_velocity_stopped", "max_velocity", "highest velocity with every launch stopped (m/s)", False,
           [0.001], [0.01, 0.001, 0.0001], lambda q: ["--find-max-velocity"]),
 ]
-# Scenes no peer program builds yet, though every engine here has the parts.
-NOT_BUILT = {}
-ODE_ONLY_ARGS = {  # what only the ODE program needs: no output file rows; test10's scan stops at its first failure
-    "test2": ["--sample-interval", 3600], "test8": ["--sample-interval", 3600], "test10": ["--band-factor", 1.0]}
+# Arguments every engine's run of a scene gets (the same program for all):
+# no output file rows; test10's scan stops at its first failure; test7 without
+# the angular speed cap, which Bullet, MuJoCo and Rapier do not have.
+RUN_ARGS = {"test2": ["--sample-interval", 3600], "test8": ["--sample-interval", 3600],
+            "test10": ["--band-factor", 1.0], "test7": ["--max-angular-speed", 0]}
 
 
-def rounding_of(engine):
-    return FLOAT32_ROUNDING if engine in WEB_PEERS else ROUNDING
+def rounding_of(engine, float32=NODE_ENGINES):
+    """Below this an error of `engine` is rounding (`float32`: the engines
+    whose --list-engines precision is float32)."""
+    return FLOAT32_ROUNDING if engine in float32 else ROUNDING
 
 
-def web_versions():
-    """{engine: "package version"} from peers/wasm/package-lock.json."""
-    try:
-        packages = json.loads(LOCKFILE.read_text())["packages"]
-    except (OSError, ValueError, KeyError):
-        return {}
-    return {e: f"`{p}` {packages.get('node_modules/' + p, {}).get('version', '?')}" for e, p in WEB_PEERS.items()}
+def list_engines(text):
+    """`testN --list-engines`, parsed: {name: dict(available, version,
+    precision, missing, best)} in the order printed. A line "name:
+    available|not available[, version X][, precision]" opens an engine; its
+    indented "missing: ..." and "best settings: ..." lines follow."""
+    engines, current = {}, None
+    for line in text.splitlines():
+        found = re.match(r"^([A-Za-z0-9_]+):\s*(available|not available)\s*(?:,(.*))?$", line)
+        if found:
+            current = dict(available=found.group(2) == "available", version="", precision="", missing="", best="")
+            for part in (found.group(3) or "").split(","):
+                part = part.strip()
+                if part.startswith("version "):
+                    current["version"] = part[len("version "):].strip()
+                elif part:
+                    current["precision"] = part
+            engines[found.group(1)] = current
+            continue
+        detail = re.match(r"^\s+(missing|best settings):\s*(.*)$", line)
+        if detail and current is not None:
+            current["missing" if detail.group(1) == "missing" else "best"] = detail.group(2).strip()
+    return engines
 
 
-def native_version(peers_dir, engine):
-    """"Bullet 3.24": the engine and the version of the library its peer
-    program links, as `<engine>_lab --version` prints them."""
-    line = first_line([str(peers_dir / PEER_PROGRAMS[engine]), "--version"])
-    words = (line or "").split()
-    name = {"bullet": "Bullet", "mujoco": "MuJoCo"}[engine]
-    return f"{name} {words[1] if len(words) == 2 and words[0] == engine else '(version unknown)'}"
+def available_engines(listed):
+    """From {scene: list_engines(...)}: ({engine: its entry, where some
+    scene's program has it available}, {engine: why it is skipped (its
+    "missing:" line), where none has it}), engines in ENGINES' order."""
+    infos, skipped = {}, {}
+    for engines in listed.values():
+        for engine in ENGINES:
+            info = engines.get(engine)
+            if info and info["available"]:
+                infos.setdefault(engine, info)
+            else:
+                skipped.setdefault(engine, info["missing"] if info and info["missing"] else
+                                   "not listed by the program's --list-engines" if not info else "no reason given")
+    return infos, {e: why for e, why in skipped.items() if e not in infos}
+
+
+def engine_name(engine, info=None):
+    """"Bullet 3.24": the engine and its version as --list-engines gives it."""
+    name = {"ode": "ODE", "mujoco": "MuJoCo"}.get(engine, engine.capitalize())
+    version = (info or {}).get("version")
+    return f"{name} {version}" if version else name
 
 
 def program_of(engine, scene):
-    return scene.name if engine == "ode" else "../peers/" + PEER_PROGRAMS[engine]
+    """Every engine runs the scene's own program (build/tests/testN)."""
+    return scene.name
 
 
 def settings_of(engine, scene):
-    return ODE_SETTINGS[scene.name] if engine == "ode" else PEER_SETTINGS
+    """(name, arguments) of each setting `engine` runs `scene` at: ODE's own
+    per scene (ODE_SETTINGS); another engine's adapter's default and best."""
+    if engine == "ode":
+        return ODE_SETTINGS[scene.name]
+    return [(s, ["--engine", engine, "--engine-setting", s]) for s in ENGINE_SETTINGS]
 
 
 def base_args(engine, scene, quick):
-    own = ODE_ONLY_ARGS.get(scene.name, []) if engine == "ode" else ["--scene", scene.name]
-    return [*own, *scene.args(quick)]
-
-
-def first_line_of(r):
-    """The settings line a peer program prints first ("" for no run)."""
-    return (r.stdout.splitlines() or [""])[0] if r is not None else ""
+    """The arguments every engine's run of `scene` gets (RUN_ARGS, the scene's length)."""
+    return [*RUN_ARGS.get(scene.name, []), *scene.args(quick)]
 
 
 def timed_args(runner, scene, r, minimum):
@@ -207,28 +241,41 @@ def timed_args(runner, scene, r, minimum):
 
 
 def costs(results):
-    """A cell's cost columns from its timed runs (those that ended with status 0)."""
+    """A cell's cost columns from its timed runs (those that ended with
+    status 0): engine_s_per_sim_s, the engine's own collision and step calls
+    (engine_wall_seconds) per simulated second, the primary cost; the
+    process's CPU and the program's run-loop wall time beside it."""
     ok = [r for r in results if r.rc == 0 and r.m("sim_seconds")]
+    engine = timing.spread([per_sim_second(r, r.m("engine_wall_seconds")) for r in ok])
     cpu = timing.spread([per_sim_second(r, r.cpu_seconds) for r in ok])
     wall = timing.spread([per_sim_second(r, r.m("wall_seconds")) for r in ok])
     return dict(timed_sim_seconds=ok[0].m("sim_seconds") if ok else None, repeats=len(ok),
                 shortest_run_cpu_seconds=min((r.cpu_seconds for r in ok), default=None),
+                engine_s_per_sim_s=engine[0], engine_s_per_sim_s_min=engine[1], engine_s_per_sim_s_max=engine[2],
                 cpu_s_per_sim_s=cpu[0], cpu_s_per_sim_s_min=cpu[1], cpu_s_per_sim_s_max=cpu[2],
                 wall_s_per_sim_s=wall[0], wall_s_per_sim_s_min=wall[1], wall_s_per_sim_s_max=wall[2])
 
 
-def cost_text(row):
-    """"0.031 [0.030-0.033]": a cell's CPU seconds per simulated second, median [range]."""
-    if row.get("cpu_s_per_sim_s") is None:
+def cost_text(row, column="engine_s_per_sim_s"):
+    """"0.031 [0.030-0.033]": a cell's cost, median [range] of its timed
+    runs: engine seconds per simulated second (default) or `column`'s."""
+    if row.get(column) is None:
         return "not timed"
-    return (f"{md.num(row['cpu_s_per_sim_s'], 2)} [{md.num(row['cpu_s_per_sim_s_min'], 2)}-"
-            f"{md.num(row['cpu_s_per_sim_s_max'], 2)}]")
+    return f"{md.num(row[column], 2)} [{md.num(row[column + '_min'], 2)}-{md.num(row[column + '_max'], 2)}]"
 
 
 def as_standing(row):
-    """A peers row as peer_compare.standings reads it."""
-    return dict(row, cpu_median=row["cpu_s_per_sim_s"], cpu_min=row["cpu_s_per_sim_s_min"],
-                cpu_max=row["cpu_s_per_sim_s_max"])
+    """A peers row as peer_compare.standings reads it: its cost is the
+    engine's own seconds per simulated second."""
+    return dict(row, cost_median=row.get("engine_s_per_sim_s"), cost_min=row.get("engine_s_per_sim_s_min"),
+                cost_max=row.get("engine_s_per_sim_s_max"))
+
+
+def notes_said(row):
+    """A row's translation notes in its table cell: how many (the scene's
+    part lists them), or "-"."""
+    count = row.get("translation_note_count") or 0
+    return f"{count} (below)" if count else "-"
 
 
 def per_sim_second(r, seconds):
@@ -260,98 +307,131 @@ class Peers(Experiment):
     section = 5
     programs = tuple(scene.name for scene in SCENES)
     cost = (1200.0, 40.0)
+    float32 = NODE_ENGINES  # the engines whose state is float32 (run() reads them from --list-engines)
 
     def run(self, ctx):
-        peers_dir = ctx.runner.build_dir.parent / "peers"
-        missing = [p for e, p in PEER_PROGRAMS.items() if e not in WEB_PEERS and not (peers_dir / p).exists()]
-        if missing:
-            raise LabError(f"no {', '.join(missing)} in {peers_dir}: the peers are built with the rest "
-                           "(`cmake --build build`, needs libbullet-dev and libmujoco-dev); the lab looks for "
-                           "them in peers/ beside the --build-dir folder")
-        skipped = [e for e in WEB_PEERS if not (peers_dir / PEER_PROGRAMS[e]).exists()]
-        engines = [e for e in ENGINES if e not in skipped]
         scenes = [s for s in SCENES if s.in_quick or not ctx.quick]
+        # Which engines each scene's program has (--list-engines), and the world it builds (--export-world).
+        listed = {scene.name: list_engines(ctx.runner.ask(scene.name, ["--list-engines"])) for scene in scenes}
+        worlds = {scene.name: ctx.runner.export_world(scene.name) for scene in scenes}
+        infos, skipped = available_engines(listed)
+        engines = [e for e in ENGINES if e in infos]
+        self.float32 = tuple(e for e in engines if "float32" in infos[e]["precision"])
+
+        def runs_here(scene, engine):
+            info = listed[scene.name].get(engine)
+            return engine not in scene.missing and bool(info and info["available"])
+
         plan = [(scene, engine, setting, args, step) for scene in scenes for engine in engines
-                if engine not in scene.missing
+                if runs_here(scene, engine)
                 for setting, args in settings_of(engine, scene) for step in scene.steps(ctx.quick, engine)]
         ctx.expect(len(plan) * (1 + timing.repeats(ctx.quick)))
 
         def one(point):
             scene, engine, setting, args, step = point
             search = {"test4": self.heaviest, "test5": self.tallest}.get(scene.name, self.measure)
-            value, r = search(ctx, scene, engine, args, step)
+            value, r, seen = search(ctx, scene, engine, args, step)
             ctx.advance()
             voided = bool(r) and scene.voided_by is not None and scene.voided_by[0](r)
             if voided:
                 value = None
-            friction = ode_friction(scene.name) if engine == "ode" else peer_friction(first_line_of(r))
+            notes = peers_notes.notes_of(seen)
+            world = worlds[scene.name]
             return dict(voided=voided, scene=scene.name, engine=engine, setting=setting, step=step,
-                        quantity=scene.quantity, value=value, friction=friction,
-                        like_ode_surface=int(like_surface(scene.name, friction)),
-                        by_construction=BY_CONSTRUCTION.get((engine, scene.name), ""),
+                        quantity=scene.quantity, value=value, surface=surface_words(world),
+                        mu=mu_text(default_surface(world)), like_ode_surface=1,
+                        by_construction=by_construction(engine, scene.name, notes),
+                        translation_note_count=len(notes), notes=notes,
                         capped=bool(r) and scene.name == "test10" and r.m("first_failure_velocity") == 0,
                         exit_status=r.rc if r else None), r
 
         measured = ctx.runner.parallel([lambda p=p: one(p) for p in plan])
         rows = [row for row, _ in measured]
         self.time_cells(ctx, plan, measured)
-        columns = ["scene", "engine", "setting", "step", "quantity", "value", "friction", "like_ode_surface",
-                   "by_construction", "timed_sim_seconds", "repeats", "shortest_run_cpu_seconds",
-                   "cpu_s_per_sim_s", "cpu_s_per_sim_s_min", "cpu_s_per_sim_s_max",
+        columns = ["scene", "engine", "setting", "step", "quantity", "value", "surface", "mu", "like_ode_surface",
+                   "by_construction", "translation_note_count", "timed_sim_seconds", "repeats",
+                   "shortest_run_cpu_seconds", "engine_s_per_sim_s", "engine_s_per_sim_s_min",
+                   "engine_s_per_sim_s_max", "cpu_s_per_sim_s", "cpu_s_per_sim_s_min", "cpu_s_per_sim_s_max",
                    "wall_s_per_sim_s", "wall_s_per_sim_s_min", "wall_s_per_sim_s_max", "capped"]
         csv = ctx.write_csv("peers", columns, rows, notes=[
-            "engines at the same step; settings: doc/peers.md; value: the quantity named (empty: not reached, "
-            "e.g. no 20th bounce), from one run of the scene's length",
-            "friction: the coefficient the run used (ODE's from its scene, a peer's from the settings line it "
-            "prints; 'engine default' where it sets none); like_ode_surface: 1 where it stands on ODE's surface "
-            "(friction 100 is the peers' never-sliding contact, ODE's infinite) or friction does not act; "
-            "by_construction: why the figure cannot be wrong on that engine (it takes no part in a comparison)",
+            "every engine runs the scene's own program (build/tests/testN --engine E --engine-setting default|best; "
+            "ODE: the program itself) on the scene's own world, at the same step; settings: doc/peers.md; value: "
+            "the quantity named (empty: not reached, e.g. no 20th bounce), from one run of the scene's length",
+            "surface: the scene's world's surface (testN --export-world: its default surface, and how many pairs "
+            "of geoms have their own), the same for every engine by construction; mu: its friction; "
+            "like_ode_surface: 1 (every engine builds the scene's world; what it could not express exactly is in "
+            "translation_note_count and peers-notes.csv); by_construction: why the figure cannot be wrong on that "
+            "engine (it takes no part in a comparison)",
             f"costs: the median, min and max over `repeats` interleaved timed runs of timed_sim_seconds each (at "
             f"least {timing.min_run_cpu(ctx.quick):g} CPU s where the scene can be lengthened; "
             f"{', '.join(FIXED_LENGTH)} and test4's search repeat the figure's own run or mass); "
-            "wall_s_per_sim_s: the program's own run-loop wall_seconds / sim_seconds; cpu_s_per_sim_s: the "
-            "process's user + system time (start-up included) / sim_seconds",
-            "max_velocity_stopped: the ODE program's and the peers' max_velocity metric (test10's scan, stopped at "
+            "engine_s_per_sim_s (the cost compared): the engine's own collision and step calls, "
+            "engine_wall_seconds / sim_seconds (ODE: its dSpaceCollide and dWorldQuickStep or dWorldStep; the "
+            "others: their adapter's step, not the pipe to Node.js nor the scene's measurement); "
+            "cpu_s_per_sim_s: the process's user + system time (start-up, the scene's measurement and the "
+            "Node.js engines' second process's share as the kernel counts it) / sim_seconds; "
+            "wall_s_per_sim_s: the program's own run-loop wall_seconds / sim_seconds",
+            "max_velocity_stopped: the program's max_velocity metric on each engine (test10's scan, stopped at "
             "the first failure); heaviest_held_kg: the search of limit-test4 on each engine",
             "capped: 1 when test10's scan reached its limit with no launch through (the figure is the scan's limit)",
             "energy_swing_error (test2): each engine's energy_max_deviation, |E - E0| / E0, times E0 / (m g d); "
             + swing_energy.header()])
+        note_rows = peers_notes.rows_of((r["scene"], r["engine"], r["setting"], r["notes"]) for r in rows)
+        notes_csv = ctx.write_csv(peers_notes.NOTES_CSV[:-len(".csv")], peers_notes.COLUMNS, note_rows, notes=[
+            "what each engine's adapter could not express exactly of the scene's world: the translation_notes "
+            "of its runs (each note once per scene, engine and setting); doc/peers.md's generated block lists them"])
         parts, headline, claims = [], [], {}
         for scene in scenes:
             mine = [r for r in rows if r["scene"] == scene.name]
-            text, line, said = self.scene_part(ctx, scene, mine)
+            text, line, said = self.scene_part(ctx, scene, mine, worlds[scene.name], note_rows)
             parts.append(text)
             headline += line
             claims.update(said)
-        versions = web_versions()
-        web = [f"{e.capitalize()} ({versions.get(e, WEB_PEERS[e])})" for e in WEB_PEERS if e not in skipped]
-        web_text = (f"""Havok, Jolt and Rapier run through their WebAssembly builds in Node.js
-({", ".join(web)}; `peers/wasm`). This Havok is today's Havok for the web, not
-the Havok 6.5 whose figures the thesis quotes; the three hold their state in
-float32, so an error below {FLOAT32_ROUNDING:g} is rounding, not physics.""" if web else "")
+        named = ", ".join(f"{engine_name(e, infos[e])} ({infos[e]['precision'] or 'precision not said'})"
+                          for e in engines)
+        web = [e for e in NODE_ENGINES if e in engines]
+        web_text = (f"""{", ".join(engine_name(e) for e in web)} run through their WebAssembly builds in
+Node.js (`peers/wasm`), a second process the scene's program steps through a
+pipe; their cost compared is the engine's own step, not the pipe.""" if web else "")
+        if "havok" in engines:
+            web_text += """ This Havok is today's Havok for the web, not the Havok 6.5 whose
+figures the thesis quotes."""
+        if self.float32:
+            web_text += (f" {', '.join(engine_name(e) for e in self.float32)} hold their state in float32, so an "
+                         f"error below {FLOAT32_ROUNDING:g} is rounding, not physics.")
         if skipped:
-            web_text += (f"\n\n**Skipped: {', '.join(skipped)}** (no {', '.join(PEER_PROGRAMS[e] for e in skipped)} "
-                         f"in {peers_dir}: install Node.js, run `npm ci` in peers/wasm and configure again).")
-        not_built = ("\n\nNot yet on any peer (the peer programs do not build these scenes; every engine here has "
-                     f"the parts): {'; '.join(f'{k}, {v}' for k, v in NOT_BUILT.items())}." if NOT_BUILT else "")
-        intro = f"""Each scene runs on ODE (its own program), {native_version(peers_dir, "bullet")} and
-{native_version(peers_dir, "mujoco")} (the
-programs in `peers/`, doc/peers.md) with the same geometry, masses, gravity,
-step and run length, and each engine at its defaults and at its best for the
-scene. Cost is wall (and CPU) seconds per simulated second on this machine.
+            web_text += "\n\n**Skipped** (not available in this build, as `--list-engines` says): " + "; ".join(
+                f"{e}: {why}" for e, why in skipped.items()) + "."
+        intro = f"""Each scene runs on every engine through the scene's own program
+(`build/tests/testN --engine E --engine-setting default|best`): the program
+describes its ODE world as data, the engine's adapter builds and steps it,
+and the scene's own code measures it, so every engine runs the same
+geometry, masses, gravity, surface, step and run length, and is measured by
+the same code. Engines here (`--list-engines`): {named}. Each runs at its
+defaults and at its best for the scene (the adapter's best settings,
+doc/peers.md). What an adapter could not express exactly it says in
+translation notes, listed in each scene's part and in
+{peers_notes.NOTES_CSV}. Cost is the engine's own seconds (its collision and
+step calls) per simulated second on this machine; the process's CPU seconds
+are beside it.
 {web_text}
+
 The column "Havok 6.5 (thesis)" is quoted from the thesis, not measured. ODE's settings:
 {"; ".join(f"{k}: {v}" for k, v in ODE_SETTING_TEXT.items() if any(s.name == k for s in scenes))}.
 
-{md.files_line([csv])}
+{md.files_line([csv, notes_csv])}
 
-{self.matrix(scenes, engines, rows)}{not_built}"""
+{self.matrix(scenes, engines, rows, worlds)}"""
         return Outcome(intro + "\n\n" + "\n\n".join(parts), headline, claims=claims)
 
     # ---- the matrix: scene by engine, at COMPARE_STEP ----------------------------------
-    def matrix(self, scenes, engines, rows):
+    def matrix(self, scenes, engines, rows, worlds):
+        """The scene-by-engine tables at COMPARE_STEP: every figure cell names
+        the scene's surface and the step it ran at; the cost cells the
+        engine's seconds per simulated second (each row's header names the
+        surface and the step)."""
         columns = [(e, s) for e in engines for s in ("default", "best")]
-        header = ["scene"]
+        header = ["scene (surface, step)"]
         for e, s in columns:
             header.append(f"{e} {s}")
             if (e, s) == ("havok", "best"):
@@ -360,11 +440,12 @@ The column "Havok 6.5 (thesis)" is quoted from the thesis, not measured. ODE's s
             header.append("Havok 6.5 (thesis)")
         figures, costs = [], []
         for scene in scenes:
-            figure_row, cost_row = [scene.name], [scene.name]
+            where = f"{surface_short(worlds[scene.name])}, step {md.num(COMPARE_STEP)}"
+            figure_row, cost_row = [f"{scene.name} ({where})"], [f"{scene.name} ({where})"]
             for e, s in columns:
                 found = [r for r in rows if r["scene"] == scene.name and r["engine"] == e and r["setting"] == s
                          and r["step"] == COMPARE_STEP]
-                figure_row.append(self.value_text(scene, found[0]) if found
+                figure_row.append(f"{self.value_text(scene, found[0])} ({where})" if found
                                   else "cannot run it (below)" if e in scene.missing else "(one setting)")
                 cost_row.append(cost_text(found[0]) if found else "-")
                 if (e, s) == ("havok", "best") or (e, s) == columns[-1] and "havok" not in engines:
@@ -375,12 +456,16 @@ The column "Havok 6.5 (thesis)" is quoted from the thesis, not measured. ODE's s
         quantities = "; ".join(f"{s.name}: {s.label}" for s in scenes)
         return f"""#### The matrix at step {COMPARE_STEP} s
 
-The figure each engine reaches ({quantities}):
+The figure each engine reaches on the scene's own world, each cell with the
+scene's surface and the step it ran at ({quantities}; mu ∞: friction
+that never slides, e: restitution, pairs: pairs of geoms with a surface of
+their own):
 
 {md.table(header, figures)}
 
-Its cost, CPU seconds per simulated second, the median [min-max] of the timed runs (the whole process, start-up
-included; peers.csv has the program's own wall times too):
+Its cost, engine seconds (the engine's own collision and step calls) per
+simulated second, the median [min-max] of the timed runs (peers.csv has the
+process's CPU seconds and the program's run-loop wall seconds too):
 
 {md.table(header, costs)}"""
 
@@ -410,10 +495,11 @@ included; peers.csv has the program's own wall times too):
                                    [*base_args(engine, scene, ctx.quick), *args, "--step", step],
                                    measures_blow_ups=True))
         value = r.m(scene.metric) if r.rc == 0 else None
-        return (scene.convert(value) if scene.convert and value is not None else value), r
+        return (scene.convert(value) if scene.convert and value is not None else value), r, r
 
     def heaviest(self, ctx, scene, engine, args, step):
-        """limit-test4's search and failure rule on any engine: (heaviest held kg, its run)."""
+        """limit-test4's search and failure rule on any engine: (heaviest held
+        kg, its run, a run that says the engine's translation notes)."""
         def probe(mass):
             r = ctx.runner.run(RunSpec(program_of(engine, scene),
                                        [*base_args(engine, scene, ctx.quick), *args, "--big-mass", mass,
@@ -423,10 +509,11 @@ included; peers.csv has the program's own wall times too):
 
         result = highest_passing(probe, start=5000.0, factor=4.0, ratio=1.1, low=50.0, high=1e9)
         held = next((info for value, passed, info in result.probes if value == result.highest_pass), None)
-        return result.highest_pass, held
+        return result.highest_pass, held, held or next((info for _, _, info in result.probes if info), None)
 
     def tallest(self, ctx, scene, engine, args, step):
-        """limit-test5's search and rule on any engine: (tallest aligned stack in real time, its run)."""
+        """limit-test5's search and rule on any engine: (tallest aligned stack
+        in real time, its run, a run that says the engine's translation notes)."""
         def probe(plates):
             extra = ["--plates", plates, "--spawn-interval", SPAWN_INTERVAL_TEST5,
                      "--seconds", round(plates * SPAWN_INTERVAL_TEST5 + SETTLE_TEST5, 3)]
@@ -438,16 +525,20 @@ included; peers.csv has the program's own wall times too):
 
         result = highest_passing(probe, start=40, factor=1.5, ratio=1.2, low=5, high=600, integer=True)
         held = next((info for value, passed, info in result.probes if value == result.highest_pass), None)
-        return result.highest_pass, held
+        return result.highest_pass, held, held or next((info for _, _, info in result.probes if info), None)
 
     # ---- one scene's part of the report ----------------------------------------------
-    def scene_part(self, ctx, scene, rows):
+    def scene_part(self, ctx, scene, rows, world=None, note_rows=()):
+        """The scene's part: its verdicts, its table (every row with the
+        scene's surface and the engine's translation notes), its plot, and
+        the notes per engine (each once)."""
         havok_text, havok_number, havok_conditions = havok_quote(scene.name)
         ctx.register_files(plots.peers_speed_accuracy(ctx.out_dir, f"peers-{scene.name}", rows, scene.label,
                                                       scene.lower_is_better, havok_number, ROUNDING))
+        surface = surface_words(world) if world else (rows[0].get("surface", "") if rows else "")
         table = [[r["engine"], r["setting"], md.num(r["step"]), self.value_text(scene, r),
-                  surface_text(scene.name, r["friction"]) + ("" if r["like_ode_surface"] else " (not ODE's)"),
-                  cost_text(r), md.num(r["repeats"])] for r in rows]
+                  notes_said(r), cost_text(r), cost_text(r, "cpu_s_per_sim_s"), md.num(r["repeats"])]
+                 for r in rows]
         verdicts, headline = [], []
         if scene.unranked:
             # No engine is "best" on a figure that is not better physics (Scene.unranked says why).
@@ -458,23 +549,33 @@ included; peers.csv has the program's own wall times too):
                     verdicts.append(self.verdict(scene, rows, step, kind))
             # The headline is a claim on peers.csv (peers_headline.py), the
             # sections' first sentence recomputed by check_report.py.
-            rounding = (tuple(WEB_PEERS), ROUNDING, FLOAT32_ROUNDING)
+            rounding = (self.float32, ROUNDING, FLOAT32_ROUNDING)
             headline = [peers_headline.headline(scene.name, scene.label, scene.lower_is_better,
                                                 VERDICT_STEPS.get(scene.name, [COMPARE_STEP])[0], *rounding)]
         havok = (f"Havok 6.5, quoted by the thesis ({havok_conditions}): **{havok_text}**."
                  if havok_text else "The thesis quotes no Havok figure for this scene.")
         missing = "".join(f" Not run on {e}: {why}." for e, why in scene.missing.items())
+        notes = peers_notes.per_engine(list(note_rows), scene.name)
+        notes_text = "\n".join(f"- {engine}:\n" + "\n".join(f"  - {peers_notes.note_line(note, s)}" for note, s in said)
+                               for engine, said in notes.items())
         text = f"""#### {scene.name}: {scene.label}
 
 {" ".join(verdicts)} {havok}{missing} The thesis's ODE 0.11.1: {thesis_ode(scene.name) or "-"}.
 
-{md.table(["engine", "setting", "step (s)", scene.quantity, "surface", "CPU s / sim s, median [range]", "timed runs"],
-          table)}
+Every engine runs the scene's own world, on its surface: {surface or "(not exported)"}.
 
-{md.figure(f"peers-{scene.name}", f"{scene.name}: {scene.label} against CPU seconds per simulated second, "
+{md.table(["engine", "setting", "step (s)", scene.quantity, "translation notes",
+           "engine s / sim s, median [range]", "CPU s / sim s, median [range]", "timed runs"], table)}
+
+{"What each engine could not express exactly (its translation notes, each once; "
+ + peers_notes.NOTES_CSV + "):" if notes_text else "No engine gave a translation note on this scene."}
+
+{notes_text}
+
+{md.figure(f"peers-{scene.name}", f"{scene.name}: {scene.label} against engine seconds per simulated second, "
            "one curve per engine and setting (steps large to small), bars the range of the timed runs" +
            (", Havok's quoted figure as a line" if havok_number is not None else ""))}"""
-        return text, headline, {}
+        return text.replace("\n\n\n\n", "\n\n"), headline, {}
 
     def verdict(self, scene, rows, step, kind):
         """One sentence: who is best at `step` among the engines' `kind`
@@ -483,7 +584,7 @@ included; peers.csv has the program's own wall times too):
         mine = [r for r in rows if r["step"] == step and (
             r["setting"] == kind or r["engine"] == "ode" and len(ODE_SETTINGS[scene.name]) == 1)]
         winners, excluded = standings([as_standing(r) for r in mine], scene.lower_is_better,
-                                      lambda r: rounding_of(r["engine"]))
+                                      lambda r: rounding_of(r["engine"], self.float32))
         where = f"At step {md.num(step)}, {'defaults' if kind == 'default' else 'each engine at its best'}"
         left = "".join(f" Not compared: {r['engine']} ({why})." for r, why in excluded)
         if not winners:
@@ -493,15 +594,15 @@ included; peers.csv has the program's own wall times too):
         figure = self.value_text(scene, first)
         if len(winners) == 1:
             text = (f"{where}: {first['engine']} ({first['setting']}) is {how} with {figure} at "
-                    f"{cost_text(first)} CPU s per simulated s")
+                    f"{cost_text(first)} engine s per simulated s")
         else:
             names = ", ".join(f"{r['engine']} ({r['setting']}, {cost_text(r)})" for r in winners)
-            text = (f"{where}: a tie within the timing's scatter at {figure}: {names} CPU s per simulated s")
+            text = (f"{where}: a tie within the timing's scatter at {figure}: {names} engine s per simulated s")
         return text + "." + left
 
-    @staticmethod
-    def exact(scene, r):
-        return scene.lower_is_better and r["value"] is not None and r["value"] < rounding_of(r["engine"])
+    def exact(self, scene, r):
+        return (scene.lower_is_better and r["value"] is not None
+                and r["value"] < rounding_of(r["engine"], self.float32))
 
     def value_text(self, scene, r):
         if r.get("voided"):

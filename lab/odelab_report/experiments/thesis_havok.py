@@ -6,13 +6,12 @@ build's ODE at the same scene, step and length, and a verdict
 by a stated rule. Havok runs as a user gets it ("default"), except where
 the thesis speaks of Havok after its modifications ("best")."""
 
-import subprocess
-
 from .. import markdown as md
 from ..claims import Claim, q as column, slot
 from ..runner import RunSpec, median
 from .base import Experiment, Outcome
 from .limit_test5 import SETTLE, SPAWN_INTERVAL
+from .peers import list_engines
 
 CLOSE = 1.5              # as thesis.py: "about X" within this factor
 THESIS_LOST = 0.50       # 5.3: Havok lost up to 50% of the energy within a minute
@@ -28,16 +27,11 @@ def havok(scene, *args, setting="default"):
 
 
 def havok_missing(ctx):
-    """Why Havok cannot run here ("" when it can): the --list-engines line of a scene's program."""
-    listing = subprocess.run([str(ctx.runner.build_dir / "test1"), "--list-engines"], capture_output=True,
-                             text=True).stdout.splitlines()
-    for i, line in enumerate(listing):
-        if line.startswith("havok: "):
-            if line.startswith("havok: available"):
-                return ""
-            after = listing[i + 1].strip() if i + 1 < len(listing) else ""
-            return after[len("missing: "):] if after.startswith("missing: ") else "not available"
-    return "this build has no havok engine"
+    """Why Havok cannot run here ("" when it can), as a scene's --list-engines says."""
+    info = list_engines(ctx.runner.ask("test1", ["--list-engines"])).get("havok")
+    if info is None:
+        return "this build has no havok engine"
+    return "" if info["available"] else info["missing"] or "not available"
 
 
 class ThesisHavok(Experiment):

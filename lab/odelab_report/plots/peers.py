@@ -10,16 +10,16 @@ SETTING_STYLES = {"default": dict(linestyle="--", marker="o"), "best": dict(line
 
 @serialized
 def peers_speed_accuracy(out_dir, stem, rows, label, lower_is_better, havok, zero_floor):
-    """`rows`: the scene's rows of peers.csv (cost: CPU seconds per simulated
-    second, median and range of its timed runs); `havok`: the thesis's quoted
+    """`rows`: the scene's rows of peers.csv (cost: the engine's own seconds
+    per simulated second, engine_s_per_sim_s, median and range of its timed runs); `havok`: the thesis's quoted
     Havok figure (a horizontal line) or None; errors below `zero_floor` are
     drawn at it."""
     fig, ax = new_figure(width=10.0, height=5.6)
     pointless = []  # curves with no figure at any step (e.g. no 20th bounce): named under the plot
     for (engine, setting) in dict.fromkeys((r["engine"], r["setting"]) for r in rows):
         mine = [r for r in rows if r["engine"] == engine and r["setting"] == setting and r["value"] is not None
-                and r["cpu_s_per_sim_s"]]
-        points = sorted(((r["cpu_s_per_sim_s"], r["value"], r["step"]) for r in mine), key=lambda p: -p[2])
+                and r.get("engine_s_per_sim_s")]
+        points = sorted(((r["engine_s_per_sim_s"], r["value"], r["step"]) for r in mine), key=lambda p: -p[2])
         if not points:
             pointless.append(f"{engine} {setting}")
             continue
@@ -27,7 +27,7 @@ def peers_speed_accuracy(out_dir, stem, rows, label, lower_is_better, havok, zer
         ax.plot([x for x, _, _ in points], ys, color=ENGINE_COLOURS[engine], markersize=5, linewidth=1.3,
                 label=f"{engine} {setting}", **SETTING_STYLES[setting])
         # the range of the timed runs, a horizontal bar through each point
-        spans = {r["step"]: (r["cpu_s_per_sim_s_min"], r["cpu_s_per_sim_s_max"]) for r in mine}
+        spans = {r["step"]: (r["engine_s_per_sim_s_min"], r["engine_s_per_sim_s_max"]) for r in mine}
         for (x, _, step), y in zip(points, ys):
             low, high = spans[step]
             if low is not None and high is not None:
@@ -47,7 +47,8 @@ def peers_speed_accuracy(out_dir, stem, rows, label, lower_is_better, havok, zer
                 color="grey", transform=ax.transAxes)
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("cost: CPU seconds per simulated second, median of the timed runs, bars their range (this machine)")
+    ax.set_xlabel("cost: engine seconds (its own collision and step calls) per simulated second, median of the "
+                  "timed runs, bars their range (this machine)")
     ax.set_ylabel(label + (" (lower is better)" if lower_is_better else " (higher is better)"))
     engines = ", ".join(dict.fromkeys(r["engine"] for r in rows))
     ax.set_title(f"{stem.replace('peers-', '')}: {engines} at the same steps\n"
