@@ -21,8 +21,8 @@
 // by default 1/60 s and rescaled for others), no damping (Havok's default
 // angular damping is 0.1) and the speed caps out of reach (200 m/s and
 // 100 rad/s by default), so nothing slows a body that ODE would not.
+const { packageVersion } = require('./package');
 const fs = require('fs');
-const path = require('path');
 const { World } = require('./world');
 const { Notes, fmt } = require('./notes');
 const m = require('./math');
@@ -45,16 +45,12 @@ function check(result, what) {
   return Array.isArray(result) ? result[1] : undefined;
 }
 
-function packageVersion() {
-  return JSON.parse(fs.readFileSync(path.join(__dirname, '..', '..', 'node_modules', PACKAGE, 'package.json'), 'utf8')).version;
-}
-
 class HavokEngine {
   constructor(HK, best) {
     this.HK = HK;
     this.best = best;
     this.notes = new Notes();
-    this.version = packageVersion();
+    this.version = packageVersion(PACKAGE);
     this.bodies = [];     // per body index: { id, joints: [constraint ids] } or null once removed
     this.shapes = [];     // per geom index: the leaf shape, or null
     this.statics = [];    // static bodies of static geoms

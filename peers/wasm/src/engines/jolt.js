@@ -23,8 +23,7 @@
 // world's own bounce velocity (default: none below 1 m/s), speed caps out of
 // reach (default 500 m/s, 47 rad/s), and swept motion (LinearCast) for every
 // moving body, which Jolt uses only when a body moves far in a step.
-const fs = require('fs');
-const path = require('path');
+const { packageVersion } = require('./package');
 const { World } = require('./world');
 const { Notes, fmt } = require('./notes');
 const m = require('./math');
@@ -38,16 +37,12 @@ const LARGEST_FRICTION = 1e6;
 const PLANE_HALF_EXTENT = 1000;
 const STATIC = 0, MOVING = 1;  // object layers
 
-function packageVersion() {
-  return JSON.parse(fs.readFileSync(path.join(__dirname, '..', '..', 'node_modules', PACKAGE, 'package.json'), 'utf8')).version;
-}
-
 class JoltEngine {
   constructor(J, best) {
     this.J = J;
     this.best = best;
     this.notes = new Notes();
-    this.version = packageVersion();
+    this.version = packageVersion(PACKAGE);
     this.bodies = [];   // per body index: { body, id, joints } or null once removed
     this.removedSet = new Set();
     this.contacts = 0;

@@ -25,8 +25,7 @@
 // the speed cap (400 m/s times lengthUnit) moved out of reach by a
 // lengthUnit of 1000 with the two length tolerances the JS API exposes
 // divided by as much, so that in metres they stay Rapier's defaults.
-const fs = require('fs');
-const path = require('path');
+const { packageVersion } = require('./package');
 const { World } = require('./world');
 const { Notes, fmt } = require('./notes');
 const m = require('./math');
@@ -44,16 +43,12 @@ const RULE_NAMES = { min: 'minimum', max: 'maximum', average: 'average', multipl
 const vec = (a) => ({ x: a[0], y: a[1], z: a[2] });
 const rot = (q) => ({ w: q[0], x: q[1], y: q[2], z: q[3] });
 
-function packageVersion() {
-  return JSON.parse(fs.readFileSync(path.join(__dirname, '..', '..', 'node_modules', PACKAGE, 'package.json'), 'utf8')).version;
-}
-
 class RapierEngine {
   constructor(R, best) {
     this.R = R;
     this.best = best;
     this.notes = new Notes();
-    this.version = packageVersion();
+    this.version = packageVersion(PACKAGE);
     this.bodies = [];      // per body index: the rigid body, or null once removed
     this.colliders = [];   // per geom index: the collider, or null
     this.geomOf = new Map();  // collider handle -> geom index
