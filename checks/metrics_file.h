@@ -1,22 +1,26 @@
-// Reads a program's metrics JSON (a flat object of numbers, written by
+// Reads a program's metrics JSON (a flat object of numbers and a few lists of
+// sentences, such as an engine run's translation_notes, written by
 // odelab::Metrics::toJson) with nlohmann-json, so the checks read it with a
 // parser of their own rather than the programs' writer's twin.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "Metrics.h"
 
 namespace checks {
 
 // Throws std::runtime_error naming the file on a missing file, malformed
-// JSON, or a value that is not a number. null is a non-finite value: the
-// writer has no other way to say NaN or infinity in JSON.
+// JSON, or a value that is neither a number nor a list of strings. null is a
+// non-finite value: the writer has no other way to say NaN or infinity in
+// JSON. A list of strings is kept as texts (no bound can be set on it).
 inline odelab::Metrics readMetricsFile(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("metrics JSON " + path + ": cannot read it");
@@ -33,8 +37,10 @@ inline odelab::Metrics readMetricsFile(const std::string& path) {
       metrics.set(name, std::numeric_limits<double>::quiet_NaN());
     else if (value.is_number())
       metrics.set(name, value.get<double>());
+    else if (value.is_array() && std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_string(); }))
+      metrics.setTexts(name, value.get<std::vector<std::string>>());
     else
-      throw std::runtime_error("metrics JSON " + path + ": " + name + " is not a number");
+      throw std::runtime_error("metrics JSON " + path + ": " + name + " is neither a number nor a list of strings");
   }
   return metrics;
 }

@@ -3,7 +3,7 @@
 // the main thread waits in NodePlatform::DrainTasks for the background tasks
 // to finish, while a background TurboFan job of the JavaScript glue waits for
 // a garbage collection that only the main thread can run. Seen in 5 of 150
-// runs of `havok_lab --scene test9 --seconds 5` (gdb: the main thread in
+// 5-second runs of the bouncing ball on Havok (gdb: the main thread in
 // DrainTasks, a worker in CollectionBarrier::AwaitCollectionBackground), and
 // in none of 150 runs with --no-concurrent-recompilation, which compiles on
 // the main thread. V8 takes that flag only on node's command line (set later
