@@ -23,7 +23,9 @@ class VelocityScan {
   static constexpr double COARSE_RATIO = 0.001;  // every 0.1% above
 
   // What one tested velocity gave.
-  enum class Trial { AllStopped, SomePassed, BlewUp };
+  // Slowed: a cube lost speed before it reached the wall (an engine's speed
+  // cap): the wall was not what was tested, so the scan ends there.
+  enum class Trial { AllStopped, SomePassed, BlewUp, Slowed };
 
   struct Result {
     double maxVelocity = 0.0;
@@ -35,6 +37,7 @@ class VelocityScan {
     double highestStoppedInBand = 0.0;
     int tested = 0;
     bool blewUp = false;
+    double firstSlowed = 0.0;  // the velocity a launch first lost speed before the wall at; 0: none
   };
 
   VelocityScan(double limit, double bandFactor) : limit_(limit), bandFactor_(bandFactor) {}
@@ -54,6 +57,10 @@ class VelocityScan {
       const Trial outcome = trial(v);
       if (outcome == Trial::BlewUp) {
         r.blewUp = true;
+        break;
+      }
+      if (outcome == Trial::Slowed) {
+        r.firstSlowed = v;
         break;
       }
       ++r.tested;
@@ -80,6 +87,9 @@ class VelocityScan {
   void print(const Result& r, const std::string& what, std::ostream& out) const {
     out << "scan: every 1 m/s up to 1000 m/s, every 0.1% above; " << what << '\n';
     if (r.blewUp) out << "scan: stopped early, the simulation blew up\n";
+    if (r.firstSlowed > 0.0)
+      out << "scan: stopped at " << formatValue(r.firstSlowed)
+          << " m/s: a cube lost speed before it reached the wall (the engine caps speeds); no wall limit above it\n";
     if (r.firstFailure == 0.0) {
       out << "scan: no launch passed up to the scan limit " << formatValue(limit_) << " m/s\n";
       return;
@@ -101,6 +111,7 @@ class VelocityScan {
     m.set("velocities_passed_in_band", r.passedInBand);
     m.set("highest_stopped_velocity_in_band", r.highestStoppedInBand);
     m.set("tested_velocities", r.tested);
+    m.set("first_slowed_velocity", r.firstSlowed);
   }
 
  private:
