@@ -40,6 +40,7 @@
 #include "SceneRegistry.h"
 #include "shared/LaunchOutcome.h"
 #include "shared/LaunchTally.h"
+#include "shared/FreeFlightCheck.h"
 #include "shared/MechanicalEnergy.h"
 #include "shared/RandomTurn.h"
 #include "shared/SceneConstants.h"
@@ -133,13 +134,11 @@ class MaximumVelocity : public AbstractWindow {
     sweep_.setStaticGeoms({ground.getGeom(), wall.getGeom()});
     sweep_.resetCounts();
     tally_.clear();
-    firstSteps_.clear();
-    slowedLaunches_ = 0;
+    freeFlight_.clear();
     if (findMaxVelocity_ && !options().headless)
       notify("--find-max-velocity runs only with --headless; B launches here");
-    // A window opens (and R restarts) with its first cube already on its way
-    // to the wall at the launch velocity: the first second shows whether it
-    // stops. Headless launches are the measurement's own, untouched.
+    // A window opens (and R restarts) with a cube on its way to the wall at the launch
+    // velocity, so the first second shows if it stops; headless launches are the measurement's.
     if (!options().headless) launch(velocity_);
   }
 
@@ -153,7 +152,7 @@ class MaximumVelocity : public AbstractWindow {
   }
 
   void afterStep() override {
-    checkFirstSteps();
+    freeFlight_.afterStep(settings().step);
     // test10's rule (shared/LaunchOutcome.h), which the peer engines use too.
     tally_.classify(simulatedTime(), world(), [this](Launch& l) {
       l.cube->color = l.outcome == Outcome::Passed ? Color{0.9f, 0.25f, 0.2f} : Color{0.3f, 0.8f, 0.35f};
@@ -188,8 +187,7 @@ class MaximumVelocity : public AbstractWindow {
     m.set("launches", tally_.launched);
     m.set("stopped", tally_.stopped);
     m.set("passed_through", tally_.passed);
-    // Launches that lost speed in free flight before the wall (an engine's speed cap).
-    m.set("launches_slowed_before_wall", slowedLaunches_);
+    m.set("launches_slowed_before_wall", freeFlight_.slowed());  // by an engine's speed cap
     m.set("geometric_prediction", geometricPrediction());
     m.set("guaranteed_stop_velocity", guaranteedStopVelocity());
     m.set("ccd", ccd_ ? 1 : 0);
@@ -249,19 +247,7 @@ class MaximumVelocity : public AbstractWindow {
     cube.color = Color{0.95f, 0.8f, 0.2f};
     tally_.add({&cube, SweptCollision::describeBody(cube.getBody(), cube.getGeom()), velocity, simulatedTime(),
                 mechanicalEnergy(cube.getBody(), world())});
-    firstSteps_.push_back({&cube, startX, velocity});
-  }
-
-  // A cube's first step after its launch: if it went less than 99% of v h
-  // while still short of the wall, something slowed it in free flight (an
-  // engine's speed cap, --engine): what follows is no test of the wall.
-  void checkFirstSteps() {
-    for (const FirstStep& f : firstSteps_) {
-      const double x = f.cube->getPosition()[0];
-      const double reach = CUBE_SIDE * std::sqrt(3.0) / 2;  // its farthest corner, however turned
-      if (x + reach < WALL_NEAR_FACE && x - f.startX < 0.99 * f.velocity * settings().step) ++slowedLaunches_;
-    }
-    firstSteps_.clear();
+    freeFlight_.launched(&cube, startX, velocity);
   }
 
   // Drops the cubes whose outcome is known and that flew far away, with their records.
@@ -283,7 +269,7 @@ class MaximumVelocity : public AbstractWindow {
   // is read from the counts, not from the launch's record: a cube that flies
   // past KEEP_RADIUS in the step that decides it is removed with its record.
   Outcome launchAndResolve(double velocity) {
-    removeIf([this](const AbstractObject& object) { return object.getBody() != nullptr; });
+    removeIf([](const AbstractObject& object) { return object.getBody() != nullptr; });
     tally_.inScene.clear();
     launch(velocity);
     const int decidedBefore = tally_.decided();
@@ -297,10 +283,9 @@ class MaximumVelocity : public AbstractWindow {
     scan_ = scan.run([this](double velocity) {
       bool all = true;
       for (int i = 0; i < launchCount(1); ++i) {
-        const int slowedBefore = slowedLaunches_;
         const Outcome outcome = launchAndResolve(velocity);
         if (outcome == Outcome::InFlight) return VelocityScan::Trial::BlewUp;
-        if (slowedLaunches_ > slowedBefore) return VelocityScan::Trial::Slowed;
+        if (freeFlight_.slowedSinceAsked()) return VelocityScan::Trial::Slowed;
         all = all && outcome == Outcome::Stopped;
       }
       return all ? VelocityScan::Trial::AllStopped : VelocityScan::Trial::SomePassed;
@@ -311,14 +296,7 @@ class MaximumVelocity : public AbstractWindow {
     scan.print(scan_, what.str(), std::cout);
   }
 
-  struct FirstStep {
-    const Box* cube;
-    double startX;
-    double velocity;
-  };
-  std::vector<FirstStep> firstSteps_;  // launches not yet stepped once
-  int slowedLaunches_ = 0;
-
+  FreeFlightCheck freeFlight_;
   double velocity_ = DEFAULT_VELOCITY;
   int launches_ = 1;
   const Knob* launchesKnob_ = nullptr;
