@@ -1,6 +1,8 @@
 #include "EngineLink.h"
 
+#include <cmath>
 #include <set>
+#include <string>
 
 namespace odelab::world {
 
@@ -12,6 +14,15 @@ bool same(const BodyState& a, const BodyState& b) {
 }
 
 bool nonZero(const dReal* v) { return v[0] != 0 || v[1] != 0 || v[2] != 0; }
+
+bool finite(const BodyState& s) {
+  for (const auto* v : {&s.position, &s.linearVelocity, &s.angularVelocity})
+    for (double x : *v)
+      if (!std::isfinite(x)) return false;
+  for (double x : s.orientation)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
 
 }  // namespace
 
@@ -122,8 +133,16 @@ void EngineLink::forget(int i) {
 double EngineLink::step() {
   const double before = engine_->engineWallSeconds();
   engine_->step();
+  // Every state looked at before any is written: ODE would take a
+  // non-finite quaternion for an error of its own.
+  std::vector<BodyState> states(index_.bodies.size());
+  for (size_t i = 0; i < index_.bodies.size(); ++i) {
+    if (!index_.bodies[i]) continue;
+    states[i] = engine_->state(static_cast<int>(i));
+    if (!finite(states[i])) throw EngineError("body " + std::to_string(i) + " has a state that is not finite");
+  }
   for (size_t i = 0; i < index_.bodies.size(); ++i)
-    if (index_.bodies[i]) writeBack(static_cast<int>(i), engine_->state(static_cast<int>(i)));
+    if (index_.bodies[i]) writeBack(static_cast<int>(i), states[i]);
   return engine_->engineWallSeconds() - before;
 }
 
