@@ -9,7 +9,7 @@
 
 namespace odelab {
 
-enum class Shape { Box, Sphere, Plane };
+enum class Shape { Box, Sphere, Plane, Capsule, Cylinder };
 
 struct Color {
   float r, g, b;

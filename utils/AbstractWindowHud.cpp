@@ -50,6 +50,17 @@ std::string timeText(double time, double step) {
   return text;
 }
 
+const char* shapeWord(Shape shape) {
+  switch (shape) {
+    case Shape::Box: return "box";
+    case Shape::Sphere: return "sphere";
+    case Shape::Capsule: return "capsule";
+    case Shape::Cylinder: return "cylinder";
+    case Shape::Plane: break;
+  }
+  return "plane";
+}
+
 }  // namespace
 
 std::vector<std::string> AbstractWindow::hudLines() const {
@@ -104,7 +115,7 @@ std::vector<std::string> AbstractWindow::hudLines() const {
     if (const AbstractObject* object = draggedObject()) {
       const dReal* v = dBodyGetLinearVel(object->getBody());
       s.str("");
-      s << "dragging object #" << session_.drag_.index() << " (" << (object->shape() == Shape::Box ? "box" : "sphere") << ", "
+      s << "dragging object #" << session_.drag_.index() << " (" << shapeWord(object->shape()) << ", "
         << formatValue(object->mass()) << " kg), speed "
         << formatValue(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) << " m/s";
       lines.push_back(s.str());

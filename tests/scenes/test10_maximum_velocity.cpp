@@ -41,7 +41,7 @@
 #include "shared/LaunchOutcome.h"
 #include "shared/LaunchTally.h"
 #include "shared/FreeFlightCheck.h"
-#include "shared/MechanicalEnergy.h"
+#include "MechanicalEnergy.h"
 #include "shared/RandomTurn.h"
 #include "shared/SceneConstants.h"
 #include "shared/VelocityScan.h"

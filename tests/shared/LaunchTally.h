@@ -10,7 +10,7 @@
 #include "FormatValue.h"
 #include "SweptCollision.h"
 #include "shared/LaunchOutcome.h"
-#include "shared/MechanicalEnergy.h"
+#include "MechanicalEnergy.h"
 
 namespace odelab {
 

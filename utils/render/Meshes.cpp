@@ -64,6 +64,45 @@ Geometry sphereGeometry(int slices, int stacks) {
   return g;
 }
 
+// Radius 1, length 1 along z, centred: a side with radial normals and two flat caps.
+Geometry cylinderGeometry(int slices) {
+  Geometry g;
+  const float pi = 3.14159265358979f;
+  auto around = [&](int slice, float& c, float& s) {
+    const float azimuth = 2.0f * pi * static_cast<float>(slice) / static_cast<float>(slices);
+    c = std::cos(azimuth);
+    s = std::sin(azimuth);
+  };
+  for (int slice = 0; slice <= slices; ++slice) {
+    float c, s;
+    around(slice, c, s);
+    g.vertices.push_back({{c, s, -0.5f}, {c, s, 0}});
+    g.vertices.push_back({{c, s, 0.5f}, {c, s, 0}});
+  }
+  for (GLuint slice = 0; slice < static_cast<GLuint>(slices); ++slice) {
+    const GLuint bottom = 2 * slice, top = bottom + 1, nextBottom = bottom + 2, nextTop = bottom + 3;
+    g.indices.insert(g.indices.end(), {bottom, nextBottom, nextTop, bottom, nextTop, top});
+  }
+  for (const float z : {0.5f, -0.5f}) {
+    const GLuint centre = static_cast<GLuint>(g.vertices.size());
+    g.vertices.push_back({{0, 0, z}, {0, 0, z * 2}});
+    for (int slice = 0; slice <= slices; ++slice) {
+      float c, s;
+      around(slice, c, s);
+      g.vertices.push_back({{c, s, z}, {0, 0, z * 2}});
+    }
+    for (GLuint slice = 0; slice < static_cast<GLuint>(slices); ++slice) {
+      const GLuint a = centre + 1 + slice, b = a + 1;
+      // Counter-clockwise seen from outside: the top cap from +z, the bottom from -z.
+      if (z > 0)
+        g.indices.insert(g.indices.end(), {centre, a, b});
+      else
+        g.indices.insert(g.indices.end(), {centre, b, a});
+    }
+  }
+  return g;
+}
+
 Geometry groundGeometry(float size) {
   const float h = 0.5f * size;
   Geometry g;
@@ -111,6 +150,7 @@ void Mesh::draw() const {
 Meshes::Meshes()
     : cube(makeMesh(cubeGeometry())),
       sphere(makeMesh(sphereGeometry(32, 16))),
+      cylinder(makeMesh(cylinderGeometry(32))),
       ground(makeMesh(groundGeometry(GROUND_SIZE))) {}
 
 }  // namespace odelab

@@ -29,12 +29,14 @@ class Mesh {
   GLsizei indexCount_ = 0;
 };
 
-// The three shapes every scene is drawn with; the model matrix scales them.
+// The shapes every scene is drawn with; the model matrix scales them (a
+// capsule is a cylinder and two spheres).
 struct Meshes {
   Meshes();
 
   Mesh cube;    // side 1, centred on the origin
   Mesh sphere;  // radius 1, centred on the origin
+  Mesh cylinder;  // radius 1, length 1 along z, centred on the origin
   Mesh ground;  // square of side GROUND_SIZE in the y = 0 plane, facing +y
 
   static constexpr float GROUND_SIZE = 1000.0f;

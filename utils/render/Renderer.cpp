@@ -6,6 +6,7 @@
 
 #include "../Box.h"
 #include "../Plane.h"
+#include "../Cylindrical.h"
 #include "../Sphere.h"
 
 namespace odelab {
@@ -140,34 +141,43 @@ void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& unif
   const glm::vec3 focus = scene.camera().position();
   for (const auto& object : scene.run().objects()) {
     if (!object->visible) continue;
-    const Mesh* mesh = nullptr;
-    glm::mat4 model;
+    // One draw per part: a capsule is a cylinder and its two end spheres.
+    struct Part {
+      const Mesh* mesh;
+      glm::mat4 model;
+    };
+    Part parts[3];
+    int partCount = 0;
     switch (object->shape()) {
       case Shape::Box: {
         dVector3 sides;
         static_cast<const Box&>(*object).sides(sides);
-        model = glm::scale(poseOf(object->getGeom()), glm::vec3(sides[0], sides[1], sides[2]));
-        mesh = &meshes_.cube;
+        parts[partCount++] = {&meshes_.cube, glm::scale(poseOf(object->getGeom()), glm::vec3(sides[0], sides[1], sides[2]))};
         break;
       }
       case Shape::Sphere: {
         const float radius = static_cast<float>(static_cast<const Sphere&>(*object).radius());
-        model = glm::scale(poseOf(object->getGeom()), glm::vec3(radius));
-        mesh = &meshes_.sphere;
+        parts[partCount++] = {&meshes_.sphere, glm::scale(poseOf(object->getGeom()), glm::vec3(radius))};
+        break;
+      }
+      case Shape::Capsule:
+      case Shape::Cylinder: {
+        double radius, length;
+        static_cast<const Cylindrical&>(*object).dimensions(radius, length);
+        const glm::mat4 pose = poseOf(object->getGeom());
+        const float r = static_cast<float>(radius), half = static_cast<float>(length / 2);
+        parts[partCount++] = {&meshes_.cylinder, glm::scale(pose, glm::vec3(r, r, static_cast<float>(length)))};
+        if (object->shape() == Shape::Capsule)
+          for (const float end : {-half, half})
+            parts[partCount++] = {&meshes_.sphere, glm::scale(glm::translate(pose, glm::vec3(0, 0, end)), glm::vec3(r))};
         break;
       }
       case Shape::Plane:
-        model = planePose(static_cast<const Plane&>(*object), focus);
-        mesh = &meshes_.ground;
+        parts[partCount++] = {&meshes_.ground, planePose(static_cast<const Plane&>(*object), focus)};
         break;
     }
-    if (!mesh) continue;
-    // Boxes scale unevenly, so normals need the inverse-transpose.
-    const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(model));
     const Color c = object->color;
     const glm::vec3 color = object->isEnabled() ? glm::vec3(c.r, c.g, c.b) : DISABLED_COLOR;
-    glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
-    glUniformMatrix3fv(uniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
     glUniform3fv(uniforms.color, 1, glm::value_ptr(color));
     // Static geometry (ground, platforms) gets the checker for depth cues.
     glUniform1i(uniforms.checker, object->isFixed() ? 1 : 0);
@@ -181,7 +191,13 @@ void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& unif
     const bool lines = wireframe && object->shape() != Shape::Plane;
 #endif
     if (lines) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    mesh->draw();
+    for (int i = 0; i < partCount; ++i) {
+      // Boxes and cylinders scale unevenly, so normals need the inverse-transpose.
+      const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(parts[i].model));
+      glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(parts[i].model));
+      glUniformMatrix3fv(uniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+      parts[i].mesh->draw();
+    }
     if (lines) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
 }

@@ -113,6 +113,35 @@ struct Settings {
   std::string space = "simple";  // ODE's broad phase: simple, hash, sap, quadtree
 };
 
+// What `odelab --world` measures of the run (doc/worlds.md): each kind a
+// metric or a few and a HUD line, computed from the bodies' states after every
+// step, whichever engine stepped them.
+enum class MeasureKind { Energy, Momentum, JointError, Penetration, Tunnelling, Ballistic, Period, Rest };
+
+struct Measure {
+  MeasureKind kind = MeasureKind::Energy;
+  std::string name;      // ballistic, period: the metrics' prefix
+  double scale = 0.0;    // energy (J); momentum: linear (kg m/s); 0: from the start state
+  double angularScale = 0.0;  // momentum: angular (kg m^2/s); 0: from the start state
+  int body = -1;         // ballistic, period
+  int geom = -1;         // tunnelling: the thin static geom
+  int axis = 0;          // period: the coordinate timed (0 x, 1 y, 2 z)
+  double about = 0.0;    // period: the value whose crossings time the swing
+  double expected = 0.0; // period: the analytic period, s
+  double until = INFINITE;  // ballistic: the arc is compared up to this time, s
+  double speed = 0.01, angularSpeed = 0.01, hold = 0.5;  // rest: m/s, rad/s, s
+};
+
+// A timed edit of the world: a body dropped in, or one pushed.
+enum class EventKind { Drop, Push };
+
+struct Event {
+  double at = 0.0;  // simulated seconds
+  EventKind kind = EventKind::Drop;
+  int body = 0;
+  Vec3 impulse{0, 0, 0};  // push: N s, at the centre of mass
+};
+
 struct World {
   int version = FORMAT_VERSION;
   std::string scene;    // the program that exported it ("test4"), or the user's name
@@ -125,6 +154,8 @@ struct World {
   std::vector<Surface> surfaces;   // at least one
   int defaultSurface = 0;          // for every pair not in pairSurfaces
   std::vector<PairSurface> pairSurfaces;
+  std::vector<Measure> measures;
+  std::vector<Event> events;  // in time order
 
   // The surface two geoms (indices) touch with.
   const Surface& surfaceBetween(int geom1, int geom2) const;
@@ -134,5 +165,6 @@ struct World {
 
 const char* shapeName(ShapeKind kind);
 const char* jointName(JointKind kind);
+const char* measureName(MeasureKind kind);
 
 }  // namespace odelab::world

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "Box.h"
+#include "Cylindrical.h"
 #include "Plane.h"
 #include "SpaceKind.h"
 #include "Sphere.h"
@@ -32,6 +34,10 @@ WorldSettings settingsFrom(const World& world) {
   return w;
 }
 
+// Deeper than this at t = 0 is an overlap worth a warning, m: a body resting
+// on another as exported touches within ODE's contact tolerance.
+constexpr double OVERLAP_TOLERANCE = 1e-3;
+
 bool identity(const Vec3& p, const Quat& q) {
   return p == Vec3{0, 0, 0} && q == Quat{1, 0, 0, 0};
 }
@@ -39,15 +45,13 @@ bool identity(const Vec3& p, const Quat& q) {
 }  // namespace
 
 WorldFileScene::WorldFileScene(World world) : AbstractWindow(settingsFrom(world)), world_(std::move(world)) {
-  for (size_t i = 0; i < world_.geoms.size(); ++i)
-    if (world_.geoms[i].shape == ShapeKind::Capsule || world_.geoms[i].shape == ShapeKind::Cylinder)
-      throw WorldFileError("geoms[" + std::to_string(i) + "].shape: ODE Lab's window draws boxes, spheres and planes; a " +
-                           shapeName(world_.geoms[i].shape) + " it cannot run here");
   fileMu_ = world_.surfaces[world_.defaultSurface].mu;
   useContactChoices(fileMu_);
   for (Knob& knob : tuning().knobs())
     if (knob.name == "max_contacts") knob.set(world_.settings.maxContacts);
 }
+
+WorldFileScene::~WorldFileScene() = default;
 
 void WorldFileScene::configureWorld() {
   SpaceKind kind = SpaceKind::Simple;
@@ -68,24 +72,50 @@ void WorldFileScene::configureWorld() {
   }
 }
 
+bool WorldFileScene::droppedLater(int body) const {
+  for (const Event& e : world_.events)
+    if (e.kind == EventKind::Drop && e.body == body && e.at > 0) return true;
+  return false;
+}
+
 void WorldFileScene::buildScene() {
   geomIndex_.clear();
   bodyOwner_.assign(world_.bodies.size(), nullptr);
+  nextEvent_ = 0;
+  std::vector<bool> now(world_.bodies.size());
+  for (size_t b = 0; b < now.size(); ++b) now[b] = !droppedLater(static_cast<int>(b));
+  buildGeoms(now, true);
+  for (const Joint& joint : world_.joints) buildJoint(joint);
+  std::vector<dBodyID> bodies(world_.bodies.size(), nullptr);
+  for (size_t b = 0; b < bodies.size(); ++b)
+    if (bodyOwner_[b]) bodies[b] = bodyOwner_[b]->getBody();
+  if (!warned_) warnOfOverlaps();
+  warned_ = true;
+  measures_ = std::make_unique<WorldMeasures>(world_, world(), space(), std::move(bodies));
+}
+
+void WorldFileScene::buildGeoms(const std::vector<bool>& bodies, bool statics) {
   // One object per geom, in the file's order (the order the program made
   // them: the collision order, and the state hash's body order). A second
   // geom of a body joins the first one's body as attach() does in a scene.
-  std::vector<AbstractObject*> objects;
+  std::vector<std::pair<size_t, AbstractObject*>> made;
   for (size_t i = 0; i < world_.geoms.size(); ++i) {
     const Geom& g = world_.geoms[i];
+    if (g.body < 0 ? !statics : !bodies[static_cast<size_t>(g.body)]) continue;
     AbstractObject* object = nullptr;
     switch (g.shape) {
       case ShapeKind::Box: object = &add<Box>(world(), space(), g.size[0], g.size[1], g.size[2], 1.0); break;
       case ShapeKind::Sphere: object = &add<Sphere>(world(), space(), g.size[0], 1.0); break;
+      case ShapeKind::Capsule:
+        object = &add<Cylindrical>(Shape::Capsule, world(), space(), g.size[0], g.size[1], 1.0);
+        break;
+      case ShapeKind::Cylinder:
+        object = &add<Cylindrical>(Shape::Cylinder, world(), space(), g.size[0], g.size[1], 1.0);
+        break;
       case ShapeKind::Plane: object = &add<Plane>(space(), g.plane[0], g.plane[1], g.plane[2], g.plane[3]); break;
-      default: break;  // refused in the constructor
     }
     geomIndex_[object->getGeom()] = static_cast<int>(i);
-    objects.push_back(object);
+    made.emplace_back(i, object);
     if (g.shape == ShapeKind::Plane) continue;
     if (g.body < 0) {
       object->setAsFixedGeom();
@@ -98,22 +128,67 @@ void WorldFileScene::buildScene() {
       object->attach(*bodyOwner_[static_cast<size_t>(g.body)]);
     }
   }
-  for (size_t b = 0; b < world_.bodies.size(); ++b) buildBody(static_cast<int>(b), *bodyOwner_[b]);
+  for (size_t b = 0; b < world_.bodies.size(); ++b)
+    if (bodies[b]) buildBody(static_cast<int>(b), *bodyOwner_[b]);
   // Offsets last: attach() moved each composite body and re-seated its geoms.
-  for (size_t i = 0; i < world_.geoms.size(); ++i) {
+  for (const auto& [i, object] : made) {
     const Geom& g = world_.geoms[i];
+    dGeomSetCategoryBits(object->getGeom(), g.category);
+    dGeomSetCollideBits(object->getGeom(), g.collide);
     if (g.body < 0 || g.shape == ShapeKind::Plane) continue;
     const bool shared = std::count_if(world_.geoms.begin(), world_.geoms.end(), [&](const Geom& o) { return o.body == g.body; }) > 1;
     if (!shared && identity(g.position, g.orientation)) continue;
-    dGeomSetOffsetPosition(objects[i]->getGeom(), g.position[0], g.position[1], g.position[2]);
+    dGeomSetOffsetPosition(object->getGeom(), g.position[0], g.position[1], g.position[2]);
     const dQuaternion q = {g.orientation[0], g.orientation[1], g.orientation[2], g.orientation[3]};
-    dGeomSetOffsetQuaternion(objects[i]->getGeom(), q);
+    dGeomSetOffsetQuaternion(object->getGeom(), q);
   }
-  for (const Joint& joint : world_.joints) buildJoint(joint);
-  for (size_t i = 0; i < world_.geoms.size(); ++i) {
-    dGeomSetCategoryBits(objects[i]->getGeom(), world_.geoms[i].category);
-    dGeomSetCollideBits(objects[i]->getGeom(), world_.geoms[i].collide);
+}
+
+void WorldFileScene::beforeStep() {
+  // An event at t acts before the step that starts at t.
+  while (nextEvent_ < world_.events.size() && world_.events[nextEvent_].at <= simulatedTime() + settings().step / 2) {
+    const Event& e = world_.events[nextEvent_++];
+    const size_t b = static_cast<size_t>(e.body);
+    measures_->beforeEvent();
+    if (e.kind == EventKind::Drop && !bodyOwner_[b]) {
+      std::vector<bool> only(world_.bodies.size(), false);
+      only[b] = true;
+      buildGeoms(only, false);
+      measures_->afterEvent(e.body, bodyOwner_[b]->getBody(), simulatedTime());
+    } else if (e.kind == EventKind::Push && bodyOwner_[b]) {
+      const dBodyID body = bodyOwner_[b]->getBody();
+      const dReal* v = dBodyGetLinearVel(body);
+      const double m = world_.bodies[b].mass;
+      dBodySetLinearVel(body, v[0] + e.impulse[0] / m, v[1] + e.impulse[1] / m, v[2] + e.impulse[2] / m);
+      dBodyEnable(body);
+      measures_->afterEvent(e.body, nullptr, simulatedTime());
+    }
   }
+}
+
+void WorldFileScene::afterStep() { measures_->afterStep(simulatedTime()); }
+
+void WorldFileScene::addMetrics(Metrics& metrics) const { measures_->addMetrics(metrics); }
+
+// Bodies that start inside one another are pushed apart by the first step's
+// contacts: legal, and a likely slip in a hand-written file, so said once.
+void WorldFileScene::warnOfOverlaps() {
+  struct Overlaps {
+    WorldFileScene* scene;
+    static void near(void* data, dGeomID a, dGeomID b) {
+      auto* self = static_cast<Overlaps*>(data)->scene;
+      const dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
+      if ((!ba && !bb) || ba == bb || (ba && bb && dAreConnectedExcluding(ba, bb, dJointTypeContact))) return;
+      dContactGeom contacts[16];
+      const int n = dCollide(a, b, 16, contacts, sizeof(dContactGeom));
+      double depth = 0.0;
+      for (int i = 0; i < n; ++i) depth = std::max(depth, static_cast<double>(contacts[i].depth));
+      if (depth > OVERLAP_TOLERANCE)
+        std::fprintf(stderr, "warning: geoms[%d] and geoms[%d] overlap by %.4g m at t = 0; the first steps push them apart\n",
+                     self->geomIndex_.at(a), self->geomIndex_.at(b), depth);
+    }
+  } overlaps{this};
+  dSpaceCollide(space(), &overlaps, &Overlaps::near);
 }
 
 void WorldFileScene::buildBody(int index, AbstractObject& owner) {
@@ -219,6 +294,7 @@ void WorldFileScene::addHudLines(std::vector<std::string>& lines) const {
   lines.push_back("world file" + (world_.scene.empty() ? std::string() : " from " + world_.scene) + ": " +
                   count(world_.bodies.size(), "body", "bodies") + ", " + count(world_.geoms.size(), "geom", "geoms") +
                   ", " + count(world_.joints.size(), "joint", "joints"));
+  measures_->addHudLines(lines);
 }
 
 }  // namespace odelab::world

@@ -5,18 +5,21 @@
 // metrics and state hash, as a test program runs its own scene. A file that
 // testN --export-world wrote gives testN's run again, to the state hash.
 
+#include <memory>
 #include <unordered_map>
 
 #include "AbstractWindow.h"
 #include "WorldDescription.h"
+#include "WorldMeasures.h"
 
 namespace odelab::world {
 
 class WorldFileScene : public AbstractWindow {
  public:
   // Throws WorldFileError when the file holds what this program cannot run
-  // or draw (a capsule, gravity off the y axis), before anything is built.
+  // (gravity off the y axis), before anything is built.
   explicit WorldFileScene(World world);
+  ~WorldFileScene() override;
   SceneBounds bounds() const override;
   // The window's title: the file's own, or its exporting program's, or the file name.
   std::string fileTitle(const std::string& path) const;
@@ -26,15 +29,26 @@ class WorldFileScene : public AbstractWindow {
   void buildScene() override;
   void setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface) override;
   void addHudLines(std::vector<std::string>& lines) const override;
+  void beforeStep() override;  // the file's events
+  void afterStep() override;   // its measures
+  void addMetrics(Metrics& metrics) const override;
 
  private:
+  bool droppedLater(int body) const;
+  // The geoms of the bodies marked in `bodies` (and the static ones when
+  // `statics`), their bodies, offsets and collide bits.
+  void buildGeoms(const std::vector<bool>& bodies, bool statics);
   void buildBody(int index, AbstractObject& owner);
+  void warnOfOverlaps();
   void buildJoint(const Joint& joint);
 
   World world_;
   double fileMu_;  // the default surface's friction: the mu knob overrides every surface once moved from it
   std::unordered_map<dGeomID, int> geomIndex_;
-  std::vector<AbstractObject*> bodyOwner_;  // per body: the object whose body it is
+  std::vector<AbstractObject*> bodyOwner_;  // per body: the object whose body it is, null until dropped in
+  std::unique_ptr<WorldMeasures> measures_;
+  size_t nextEvent_ = 0;
+  bool warned_ = false;  // overlaps are said once, not again on R
 };
 
 }  // namespace odelab::world

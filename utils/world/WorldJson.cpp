@@ -1,5 +1,6 @@
 #include "WorldJson.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -8,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "JsonLines.h"
 #include "SafeFile.h"
 
 namespace odelab::world {
@@ -32,6 +34,12 @@ const std::map<ShapeKind, const char*> SHAPES = {{ShapeKind::Box, "box"},
                                                  {ShapeKind::Cylinder, "cylinder"}};
 const std::map<JointKind, const char*> JOINTS = {
     {JointKind::Ball, "ball"}, {JointKind::Hinge, "hinge"}, {JointKind::Slider, "slider"}, {JointKind::Fixed, "fixed"}};
+
+const std::map<MeasureKind, const char*> MEASURES = {
+    {MeasureKind::Energy, "energy"},           {MeasureKind::Momentum, "momentum"},
+    {MeasureKind::JointError, "joint_error"},  {MeasureKind::Penetration, "penetration"},
+    {MeasureKind::Tunnelling, "tunnelling"},   {MeasureKind::Ballistic, "ballistic"},
+    {MeasureKind::Period, "period"},           {MeasureKind::Rest, "rest"}};
 
 // Reads one JSON object, field by field, naming the path of whatever is wrong
 // ("geoms[2].size[1]") and refusing fields it does not know (a typo would
@@ -59,6 +67,9 @@ class Reader {
     const json* value = find(key, required);
     if (!value) return fallback;
     if (!value->is_number_integer()) fail(at(key), "must be a whole number");
+    // Above 2^63 a signed read would wrap: refuse it as out of range.
+    if (value->is_number_unsigned() && value->get<unsigned long long>() > static_cast<unsigned long long>(high))
+      fail(at(key), "must be in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " + value->dump());
     const long long v = value->get<long long>();
     if (v < low || v > high) fail(at(key), "must be in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " + std::to_string(v));
     return static_cast<int>(v);
@@ -103,7 +114,7 @@ class Reader {
   }
 
   [[noreturn]] static void fail(const std::string& where, const std::string& what) {
-    throw WorldFileError(where + ": " + what);
+    throw WorldFileError(where.rfind("world.", 0) == 0 ? where.substr(6) : where, what);
   }
   static double realValue(const json& value, const std::string& where, double low, double high) {
     double v;
@@ -154,6 +165,14 @@ Kind named(const std::map<Kind, const char*>& names, const std::string& word, co
 // A body named by index, or -1 for none (the static world).
 int bodyIndex(Reader& r, const char* key, int bodies) { return r.integer(key, -1, -1, bodies - 1, true); }
 
+// Sylvester's criterion on [xx xy xz; xy yy yz; xz yz zz].
+bool positiveDefinite(const std::array<double, 6>& i) {
+  const double xx = i[0], yy = i[1], zz = i[2], xy = i[3], xz = i[4], yz = i[5];
+  const double minor2 = xx * yy - xy * xy;
+  const double det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
+  return xx > 0 && minor2 > 0 && det > 0;
+}
+
 Settings readSettings(const json& j) {
   Reader r(j, "settings");
   Settings s;
@@ -180,8 +199,9 @@ Body readBody(const json& j, const std::string& path) {
   Body b;
   b.mass = r.real("mass", b.mass, 1e-12, 1e15, true);
   b.inertia = r.reals<6>("inertia", b.inertia, true);
-  if (!(b.inertia[0] > 0 && b.inertia[1] > 0 && b.inertia[2] > 0))
-    Reader::fail(r.at("inertia"), "its first three (xx, yy, zz) must be > 0");
+  if (!positiveDefinite(b.inertia))
+    Reader::fail(r.at("inertia"), "is not positive definite (a real body's inertia tensor is: xx, yy, zz > 0 and every "
+                                  "leading minor > 0), as ODE's dMassCheck requires");
   b.position = r.reals<3>("position", b.position, true);
   b.orientation = unitQuat(r, "orientation");
   b.linearVelocity = r.reals<3>("linear_velocity", b.linearVelocity);
@@ -220,6 +240,8 @@ Geom readGeom(const json& j, const std::string& path, int bodies) {
       break;
     case ShapeKind::Plane:
       g.plane = r.reals<4>("plane", g.plane, true);
+      if (std::abs(std::sqrt(g.plane[0] * g.plane[0] + g.plane[1] * g.plane[1] + g.plane[2] * g.plane[2]) - 1.0) > 1e-6)
+        Reader::fail(r.at("plane"), "(a, b, c) must be a unit normal");
       if (g.body >= 0) Reader::fail(r.at("body"), "a plane is static: it has no body");
       break;
   }
@@ -284,6 +306,103 @@ json writeSurface(const Surface& s) {
   return j;
 }
 
+Measure readMeasure(const json& j, const std::string& path, const World& w) {
+  Reader r(j, path);
+  Measure m;
+  m.kind = named(MEASURES, r.text("kind", "", true), r.at("kind"));
+  const int bodies = static_cast<int>(w.bodies.size());
+  switch (m.kind) {
+    case MeasureKind::Energy:
+      m.scale = r.real("scale", 0.0, 1e-300, INFINITE);
+      break;
+    case MeasureKind::Momentum:
+      m.scale = r.real("linear_scale", 0.0, 1e-300, INFINITE);
+      m.angularScale = r.real("angular_scale", 0.0, 1e-300, INFINITE);
+      break;
+    case MeasureKind::Tunnelling: {
+      m.geom = r.integer("geom", -1, 0, static_cast<int>(w.geoms.size()) - 1, true);
+      const Geom& g = w.geoms[static_cast<size_t>(m.geom)];
+      if (g.body >= 0 || (g.shape != ShapeKind::Box && g.shape != ShapeKind::Plane))
+        Reader::fail(r.at("geom"), "must name a static box or plane (the wall bodies might pass through)");
+      break;
+    }
+    case MeasureKind::Ballistic:
+      m.body = r.integer("body", -1, 0, bodies - 1, true);
+      m.until = r.real("until", INFINITE, 0.0, INFINITE);
+      break;
+    case MeasureKind::Period: {
+      m.body = r.integer("body", -1, 0, bodies - 1, true);
+      const std::string axis = r.text("axis", "", true);
+      if (axis != "x" && axis != "y" && axis != "z") Reader::fail(r.at("axis"), "\"" + axis + "\" is not one of x, y, z");
+      m.axis = axis[0] - 'x';
+      m.about = r.real("about", 0.0, -INFINITE, INFINITE, true);
+      m.expected = r.real("expected", 0.0, 1e-9, INFINITE, true);
+      break;
+    }
+    case MeasureKind::Rest:
+      m.speed = r.real("speed", m.speed, 0.0, INFINITE);
+      m.angularSpeed = r.real("angular_speed", m.angularSpeed, 0.0, INFINITE);
+      m.hold = r.real("hold", m.hold, 0.0, INFINITE);
+      break;
+    case MeasureKind::JointError:
+    case MeasureKind::Penetration:
+      break;
+  }
+  if (m.kind == MeasureKind::Ballistic || m.kind == MeasureKind::Period) {
+    m.name = r.text("name", std::string(MEASURES.at(m.kind)) + std::to_string(m.body));
+    if (m.name.empty() || m.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+      Reader::fail(r.at("name"), "must be lower-case letters, digits and _ (it names metrics)");
+  }
+  return m;
+}
+
+Event readEvent(const json& j, const std::string& path, const World& w) {
+  Reader r(j, path);
+  Event e;
+  e.at = r.real("at", 0.0, 0.0, INFINITE, true);
+  const int last = static_cast<int>(w.bodies.size()) - 1;
+  if (r.has("drop") == r.has("push")) Reader::fail(path, "must have one of \"drop\" or \"push\" (a body's index)");
+  e.kind = r.has("drop") ? EventKind::Drop : EventKind::Push;
+  e.body = r.integer(e.kind == EventKind::Drop ? "drop" : "push", 0, 0, last, true);
+  if (e.kind == EventKind::Push) e.impulse = r.reals<3>("impulse", e.impulse, true);
+  return e;
+}
+
+json writeMeasure(const Measure& m) {
+  json j = {{"kind", MEASURES.at(m.kind)}};
+  switch (m.kind) {
+    case MeasureKind::Energy:
+      if (m.scale > 0) j["scale"] = m.scale;
+      break;
+    case MeasureKind::Momentum:
+      if (m.scale > 0) j["linear_scale"] = m.scale;
+      if (m.angularScale > 0) j["angular_scale"] = m.angularScale;
+      break;
+    case MeasureKind::Tunnelling: j["geom"] = m.geom; break;
+    case MeasureKind::Ballistic:
+      j["body"] = m.body;
+      j["name"] = m.name;
+      if (!std::isinf(m.until)) j["until"] = m.until;
+      break;
+    case MeasureKind::Period:
+      j["body"] = m.body;
+      j["name"] = m.name;
+      j["axis"] = std::string(1, static_cast<char>('x' + m.axis));
+      j["about"] = m.about;
+      j["expected"] = m.expected;
+      break;
+    case MeasureKind::Rest:
+      j["speed"] = m.speed;
+      j["angular_speed"] = m.angularSpeed;
+      j["hold"] = m.hold;
+      break;
+    case MeasureKind::JointError:
+    case MeasureKind::Penetration:
+      break;
+  }
+  return j;
+}
+
 }  // namespace
 
 bool Surface::operator==(const Surface& o) const {
@@ -294,6 +413,7 @@ bool Surface::operator==(const Surface& o) const {
 
 const char* shapeName(ShapeKind kind) { return SHAPES.at(kind); }
 const char* jointName(JointKind kind) { return JOINTS.at(kind); }
+const char* measureName(MeasureKind kind) { return MEASURES.at(kind); }
 
 const Surface& World::surfaceBetween(int geom1, int geom2) const {
   if (geom1 > geom2) std::swap(geom1, geom2);
@@ -315,13 +435,9 @@ bool World::mayTouch(int geom1, int geom2) const {
   return true;
 }
 
-World worldFromJson(const std::string& text) {
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& error) {
-    throw WorldFileError(std::string("not JSON: ") + error.what());
-  }
+namespace {
+
+World worldFromParsed(const json& root) {
   World w;
   Reader r(root, "world");
   const std::string format = r.text("format", "", true);
@@ -367,6 +483,39 @@ World worldFromJson(const std::string& text) {
       pair.surface = p.integer("surface", 0, 0, surfaceCount - 1, true);
       w.pairSurfaces.push_back(pair);
     }
+  if (const json* measures = r.list("measures", false)) {
+    std::set<std::string> kinds;
+    for (size_t i = 0; i < measures->size(); ++i) {
+      const std::string where = "measures[" + std::to_string(i) + "]";
+      w.measures.push_back(readMeasure((*measures)[i], where, w));
+      const Measure& m = w.measures.back();
+      // Two of a kind would write the same metrics (ballistic and period: the same name).
+      const std::string key = m.name.empty() ? measureName(m.kind) : m.name;
+      if (!kinds.insert(key).second) Reader::fail(where, "measures \"" + key + "\" a second time: its metrics would clash");
+    }
+  }
+  if (const json* events = r.list("events", false)) {
+    std::set<int> dropped;
+    for (size_t i = 0; i < events->size(); ++i) {
+      const std::string where = "events[" + std::to_string(i) + "]";
+      w.events.push_back(readEvent((*events)[i], where, w));
+      const Event& e = w.events.back();
+      if (i > 0 && e.at < w.events[i - 1].at) Reader::fail(where + ".at", "events must be in time order");
+      if (e.kind == EventKind::Drop && !dropped.insert(e.body).second)
+        Reader::fail(where + ".drop", "body " + std::to_string(e.body) + " is dropped twice");
+    }
+    for (size_t i = 0; i < w.events.size(); ++i) {
+      const Event& e = w.events[i];
+      const std::string where = "events[" + std::to_string(i) + "]";
+      for (size_t k = i + 1; k < w.events.size(); ++k)
+        if (e.kind == EventKind::Push && w.events[k].kind == EventKind::Drop && w.events[k].body == e.body)
+          Reader::fail(where + ".push", "body " + std::to_string(e.body) + " is pushed before it is dropped in");
+      if (e.kind == EventKind::Drop)
+        for (const Joint& j : w.joints)
+          if (j.body1 == e.body || j.body2 == e.body)
+            Reader::fail(where + ".drop", "body " + std::to_string(e.body) + " has a joint; only a free body can be dropped in");
+    }
+  }
   for (int b = 0; b < bodyCount; ++b) {
     bool hasGeom = false;
     for (const Geom& g : w.geoms) hasGeom = hasGeom || g.body == b;
@@ -375,6 +524,38 @@ World worldFromJson(const std::string& text) {
     if (!hasGeom && !hasJoint) Reader::fail("bodies[" + std::to_string(b) + "]", "has no geom and no joint: nothing could touch or hold it");
   }
   return w;
+}
+
+// " (line L)" for the first line holding the token an error quotes ('1e400'), or "".
+std::string numberLine(const std::string& text, const std::string& message) {
+  const std::size_t open = message.find('\'');
+  const std::size_t close = message.find('\'', open + 1);
+  if (open == std::string::npos || close == std::string::npos) return "";
+  const std::size_t at = text.find(message.substr(open + 1, close - open - 1));
+  if (at == std::string::npos) return "";
+  return " (line " + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + ")";
+}
+
+}  // namespace
+
+World worldFromJson(const std::string& text) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& error) {
+    // nlohmann's message names the line and column.
+    throw WorldFileError(std::string("not JSON: ") + error.what());
+  } catch (const json::exception& error) {
+    // A number beyond a double's range: nlohmann gives no position, so the line is the number's.
+    throw WorldFileError(std::string("not a usable number: ") + error.what() + numberLine(text, error.what()));
+  }
+  try {
+    return worldFromParsed(root);
+  } catch (const WorldFileError& error) {
+    if (error.field().empty()) throw;
+    const int line = lineOfPath(text, error.field());
+    throw WorldFileError(line > 0 ? "line " + std::to_string(line) + ": " + error.what() : error.what());
+  }
 }
 
 std::string worldToJson(const World& world) {
@@ -474,6 +655,33 @@ std::string worldToJson(const World& world) {
   root["surfaces"] = surfaces;
   root["default_surface"] = world.defaultSurface;
   root["pair_surfaces"] = pairs;
+  // Measures and events name bodies and geoms by index: renumbered as above,
+  // and left out where what they name was removed.
+  if (!world.measures.empty()) {
+    json measures = json::array();
+    for (Measure m : world.measures) {
+      if ((m.body >= 0 && bodyRef(m.body) < 0) || (m.geom >= 0 && geomIndex[m.geom] < 0)) continue;
+      if (m.body >= 0) m.body = bodyRef(m.body);
+      if (m.geom >= 0) m.geom = geomIndex[m.geom];
+      measures.push_back(writeMeasure(m));
+    }
+    root["measures"] = measures;
+  }
+  if (!world.events.empty()) {
+    json events = json::array();
+    for (const Event& e : world.events) {
+      if (bodyRef(e.body) < 0) continue;
+      json j = {{"at", e.at}};
+      if (e.kind == EventKind::Drop) {
+        j["drop"] = bodyRef(e.body);
+      } else {
+        j["push"] = bodyRef(e.body);
+        j["impulse"] = vec(e.impulse);
+      }
+      events.push_back(j);
+    }
+    root["events"] = events;
+  }
   // 17 significant digits: every double comes back as the same double.
   return root.dump(1) + "\n";
 }

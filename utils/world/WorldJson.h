@@ -15,6 +15,19 @@ namespace odelab::world {
 class WorldFileError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  // `field` is the path the message starts with, so that the reader can add its line.
+  WorldFileError(const std::string& field, const std::string& what) : std::runtime_error(field + ": " + what), field_(field) {}
+  const std::string& field() const { return field_; }
+
+ private:
+  std::string field_;
+};
+
+// Something in a world file that runs but is likely not what its author meant
+// (bodies overlapping at t = 0), said on stderr before the run.
+struct WorldWarning {
+  std::string field;
+  std::string what;
 };
 
 World worldFromJson(const std::string& text);  // throws WorldFileError
