@@ -168,7 +168,9 @@ void WorldFileScene::beforeStep() {
 
 void WorldFileScene::afterStep() { measures_->afterStep(simulatedTime()); }
 
-void WorldFileScene::addMetrics(Metrics& metrics) const { measures_->addMetrics(metrics); }
+void WorldFileScene::addMetrics(Metrics& metrics) const {
+  if (measures_) measures_->addMetrics(metrics);
+}
 
 // Bodies that start inside one another are pushed apart by the first step's
 // contacts: legal, and a likely slip in a hand-written file, so said once.
@@ -291,10 +293,22 @@ std::string WorldFileScene::fileTitle(const std::string& path) const {
 
 void WorldFileScene::addHudLines(std::vector<std::string>& lines) const {
   auto count = [](size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
+  // The measures first: the compact HUD shows the first line.
+  if (measures_) measures_->addHudLines(lines);
   lines.push_back("world file" + (world_.scene.empty() ? std::string() : " from " + world_.scene) + ": " +
                   count(world_.bodies.size(), "body", "bodies") + ", " + count(world_.geoms.size(), "geom", "geoms") +
                   ", " + count(world_.joints.size(), "joint", "joints"));
-  measures_->addHudLines(lines);
+}
+
+bool WorldFileScene::plotValue(double& value) const {
+  return (measures_ && measures_->plotValue(value)) || AbstractWindow::plotValue(value);
+}
+
+// Asked before the scene is built: from the file.
+std::string WorldFileScene::plotLabel() const {
+  for (const Measure& m : world_.measures)
+    if (m.kind == MeasureKind::Energy) return "total energy (J)";
+  return AbstractWindow::plotLabel();
 }
 
 }  // namespace odelab::world

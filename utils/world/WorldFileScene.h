@@ -32,6 +32,8 @@ class WorldFileScene : public AbstractWindow {
   void beforeStep() override;  // the file's events
   void afterStep() override;   // its measures
   void addMetrics(Metrics& metrics) const override;
+  bool plotValue(double& value) const override;  // the live plot (L): the total energy when measured
+  std::string plotLabel() const override;
 
  private:
   bool droppedLater(int body) const;

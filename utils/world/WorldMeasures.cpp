@@ -238,6 +238,12 @@ void WorldMeasures::addMetrics(Metrics& m) const {
   }
 }
 
+bool WorldMeasures::plotValue(double& value) const {
+  if (!has(world_, MeasureKind::Energy)) return false;
+  value = last_.energy;
+  return true;
+}
+
 void WorldMeasures::addHudLines(std::vector<std::string>& lines) const {
   for (size_t i = 0; i < world_.measures.size(); ++i) {
     const Measure& measure = world_.measures[i];

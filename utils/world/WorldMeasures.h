@@ -39,6 +39,8 @@ class WorldMeasures {
   void afterStep(double time);
   void addMetrics(Metrics& m) const;
   void addHudLines(std::vector<std::string>& lines) const;
+  // The live plot's curve: the total energy when it is measured (false: none).
+  bool plotValue(double& value) const;
 
  private:
   // A joint's anchor and axis as each of its bodies carries them (body frame,
