@@ -20,7 +20,8 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 # Debian packages: compiler and build tools, the libraries, the HUD font; for
 # the windowed checks an X server with Mesa's software OpenGL; for the lab's
-# report (lab/odelab-report) Debian's Python with matplotlib and tqdm.
+# report (lab/odelab-report) Debian's Python with matplotlib and tqdm, and
+# jsonschema for the check of doc/world.schema.json.
 # The peer engines (peers/, doc/peers.md): Bullet and MuJoCo (whose CMake
 # package needs qhull). The lab on a cluster (doc/cluster.md): Dask, and
 # Slurm with munge for the single-node check (the check starts and stops
@@ -32,7 +33,7 @@ packages=(
   libcli11-dev libstb-dev libglm-dev libgtest-dev libimgui-dev nlohmann-json3-dev
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
-  python3 python3-matplotlib python3-tqdm
+  python3 python3-matplotlib python3-tqdm python3-jsonschema
   libbullet-dev libmujoco-dev libqhull-dev
   python3-distributed munge slurmctld slurmd slurm-client
   debootstrap

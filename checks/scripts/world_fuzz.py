@@ -461,6 +461,29 @@ CRASH_WORDS = ["terminate called", "what():", "Aborted", "Segmentation", "core d
                "runtime error", "Assertion", "assertion", "ODE INTERNAL ERROR", "ODE Message", "Traceback"]
 
 
+# The mutations a JSON schema can see; the others (an index past its list, a
+# quaternion's length, an inertia's definiteness, a joint's bodies) only the
+# programs' reader can.
+SCHEMA_KINDS = ("delete_required", "wrong_type", "fraction_for_whole_number", "out_of_range", "unknown_field",
+                "unknown_word", "container_wrong_type", "top_level_not_object")
+
+
+def schema_checker(path):
+    import jsonschema  # python3-jsonschema: only this option needs it
+    with open(path) as f:
+        schema = json.load(f)
+    jsonschema.Draft202012Validator.check_schema(schema)
+    validator = jsonschema.Draft202012Validator(schema)
+
+    def errors(data):
+        try:
+            world = json.loads(data)
+        except ValueError as error:
+            return ["not JSON: %s" % error]
+        return [e.message for e in validator.iter_errors(world)]
+    return errors
+
+
 def run(odelab, world_file, run_dir, timeout):
     """(status or 'hang', stdout, stderr, files left in the output folder)."""
     os.makedirs(run_dir)
@@ -551,6 +574,8 @@ def main():
                         help="leave measures and events out of the hand-written world (an odelab that reads neither)")
     parser.add_argument("--keep-all", action="store_true", help="keep every mutated file (default: failures only)")
     parser.add_argument("--verbose", action="store_true", help="print every file's mutation, status and message")
+    parser.add_argument("--schema", help="doc/world.schema.json: every seed must validate against it, and every file "
+                                         "broken in a way a schema can see (%s) must fail it" % ", ".join(SCHEMA_KINDS))
     args = parser.parse_args()
 
     odelab = os.path.abspath(args.odelab)
@@ -570,9 +595,15 @@ def main():
         f.write(render(hand)[0])
     seeds.append(hand_file)
 
+    schema_errors = schema_checker(args.schema) if args.schema else None
     # Each seed must run as it is: else a status 2 could be the seed's, or the command's, not the mutation's.
     worlds = []
     for seed in seeds:
+        if schema_errors:
+            with open(seed, "rb") as f:
+                found = schema_errors(f.read())
+            if found:
+                sys.exit("world_fuzz: the valid seed world %s fails the schema: %s" % (seed, "; ".join(found[:3])))
         status, out, err, left = run(odelab, seed, os.path.join(args.work, "runs", "seed_" + os.path.basename(seed)),
                                      args.timeout)
         if status != 0 or "metrics.json" not in left:
@@ -603,6 +634,8 @@ def main():
             f.write(data)
         status, out, err, left = run(odelab, path, os.path.join(args.work, "runs", "%03d" % i), args.timeout)
         wrong = judge(m, spans, status, out, err, left, args.require_line)
+        if schema_errors and m.kind in SCHEMA_KINDS and not schema_errors(data):
+            wrong.append("the schema (%s) accepts it" % args.schema)
         if args.verbose:
             print("%03d %-4s %s (%s): status %s: %s" % (i, "ok" if not wrong else "FAIL", m.kind, m.detail, status,
                                                         " | ".join(err.strip().splitlines())[:300]))

@@ -446,6 +446,7 @@ World worldFromParsed(const json& root) {
   if (w.version != FORMAT_VERSION)
     Reader::fail(r.at("version"), "this program reads version " + std::to_string(FORMAT_VERSION) + ", the file is version " +
                                       std::to_string(w.version));
+  r.text("$schema", "");  // where an editor finds doc/world.schema.json; the reader needs none
   w.scene = r.text("scene", "");
   w.title = r.text("title", "");
   w.time = r.real("time", 0.0, 0.0, INFINITE);
