@@ -5,7 +5,10 @@
 #include <cstdio>
 #include <string>
 
+#include <glm/glm.hpp>
+
 #include "Box.h"
+#include "Camera.h"
 #include "Cylindrical.h"
 #include "Plane.h"
 #include "SpaceKind.h"
@@ -283,6 +286,43 @@ SceneBounds WorldFileScene::bounds() const {
   for (int k = 0; k < 3; ++k) bounds.radius = std::max(bounds.radius, (high[k] - low[k]) / 2);
   bounds.radius = std::max(bounds.radius + 5.0, 8.0);
   return bounds;
+}
+
+// The bodies and the static geoms that are not planes, each as a sphere
+// about its centre wide enough for its largest side.
+void WorldFileScene::initialCamera(Camera& camera) const {
+  double low[3] = {1e300, 1e300, 1e300}, high[3] = {-1e300, -1e300, -1e300};
+  for (const Geom& g : world_.geoms) {
+    if (g.shape == ShapeKind::Plane) continue;
+    const Vec3& at = g.body < 0 ? g.position : world_.bodies[static_cast<size_t>(g.body)].position;
+    const double reach = g.shape == ShapeKind::Box ? std::sqrt(g.size[0] * g.size[0] + g.size[1] * g.size[1] + g.size[2] * g.size[2]) / 2
+                                                   : g.size[0] + g.size[1] / 2;
+    const double offset = std::sqrt(g.position[0] * g.position[0] + g.position[1] * g.position[1] + g.position[2] * g.position[2]);
+    for (size_t k = 0; k < 3; ++k) {
+      low[k] = std::min(low[k], at[k] - reach - (g.body < 0 ? 0 : offset));
+      high[k] = std::max(high[k], at[k] + reach + (g.body < 0 ? 0 : offset));
+    }
+  }
+  // A chain or pendulum hung from the world swings anywhere within its reach of the anchor.
+  for (const Joint& j : world_.joints) {
+    if (j.body1 >= 0 && j.body2 >= 0) continue;
+    double reach = 0.0;
+    for (const Body& b : world_.bodies)
+      reach = std::max(reach, std::sqrt(std::pow(b.position[0] - j.anchor[0], 2) + std::pow(b.position[1] - j.anchor[1], 2) +
+                                        std::pow(b.position[2] - j.anchor[2], 2)));
+    for (size_t k = 0; k < 3; ++k) {
+      low[k] = std::min(low[k], j.anchor[k] - reach);
+      high[k] = std::max(high[k], j.anchor[k] + reach);
+    }
+  }
+  if (low[0] > high[0]) return AbstractWindow::initialCamera(camera);
+  const glm::vec3 centre((low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2);
+  const float radius = std::max(0.25f, static_cast<float>(std::sqrt((high[0] - low[0]) * (high[0] - low[0]) +
+                                                                    (high[1] - low[1]) * (high[1] - low[1]) +
+                                                                    (high[2] - low[2]) * (high[2] - low[2])) / 2));
+  // Far enough for the whole sphere to fit the view, from the front and a little above.
+  const float distance = radius / std::sin(glm::radians(camera.fieldOfViewDegrees() / 2));
+  camera.lookAt(centre + distance * glm::normalize(glm::vec3(0, 0.35f, 1)), centre);
 }
 
 std::string WorldFileScene::fileTitle(const std::string& path) const {

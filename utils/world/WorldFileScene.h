@@ -32,6 +32,7 @@ class WorldFileScene : public AbstractWindow {
   void beforeStep() override;  // the file's events
   void afterStep() override;   // its measures
   void addMetrics(Metrics& metrics) const override;
+  void initialCamera(Camera& camera) const override;  // framing the file's bodies
   bool plotValue(double& value) const override;  // the live plot (L): the total energy when measured
   std::string plotLabel() const override;
 
