@@ -280,7 +280,13 @@ bool AbstractWindow::runFor(double seconds) {
       bool& flag;
       ~Unattended() { flag = false; }
     } unattended{run_.unattended_ = true};
-    while (run_.steps_ < total && finite && stopSignal() == 0) finite = stepOnce();
+    if (lockstep_.turn)  // a compare run: each scene's step in turn (utils/CompareRun.cpp)
+      while (run_.steps_ < total && finite && stopSignal() == 0) {
+        lockstep_.turn();
+        finite = stepOnce();
+      }
+    else
+      while (run_.steps_ < total && finite && stopSignal() == 0) finite = stepOnce();
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run_.wallSeconds_ += wall;
@@ -292,6 +298,10 @@ int AbstractWindow::reportHeadless() {
   if (stopSignal() != 0) return stoppedBySignal();
   endOutputs(run_.blowUpReason_);
   const Metrics result = metrics();
+  if (lockstep_.report) {  // a compare run prints and writes every engine's together
+    lockstep_.report(result);
+    return run_.blowUpReason_.empty() ? exit_code::OK : exit_code::BLEW_UP;
+  }
   std::cout << title_ << ": " << formatValue(run_.simulatedTime_) << " simulated seconds\n";
   result.print(std::cout);
   if (!options_.metricsJson.empty()) result.writeJsonAtomically(options_.metricsJson);

@@ -60,6 +60,16 @@ class AbstractWindow {
   void endOutputs(const std::string& cutShortBecause);
   int stoppedBySignal();  // after SIGINT/SIGTERM: outputs marked incomplete; 128 + the signal
   Metrics metrics() const;  // the framework's (steps, sim_seconds, ...) then the scene's
+  // A compare run (--compare, utils/CompareRun.h) steps several scenes in
+  // lockstep, one engine each: `turn` is called before every step runFor()
+  // takes and returns when this scene's turn has come; `report` takes the
+  // metrics reportHeadless() would print and write (the files are ended and
+  // the status is the same). Unset (the default), neither is called.
+  struct Lockstep {
+    std::function<void()> turn;
+    std::function<void(const Metrics&)> report;
+  };
+  void runInLockstep(Lockstep lockstep) { lockstep_ = std::move(lockstep); }
   // " at t=1.23 s (step 0.001, ERP 0.2, ...)": the end of every ODE error and blow-up message.
   std::string momentAndSettings() const;
   // "key: value" pairs naming every setting in force, for output file headers.
@@ -202,6 +212,7 @@ class AbstractWindow {
   Camera camera_;
   KeyTable keys_;
   world::EngineLink engine_;
+  Lockstep lockstep_;
 };
 
 }  // namespace odelab

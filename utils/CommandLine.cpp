@@ -72,16 +72,16 @@ bool isRecordedFrameName(const std::string& path) {
 
 }  // namespace
 
-void requireAvailableEngine(const std::string& name) {
+void requireAvailableEngine(const std::string& name, const std::string& option) {
   std::string names;
   for (const world::EngineInfo& engine : world::knownEngines()) {
     if (engine.name == name) {
-      if (!engine.available) throw UsageError("--engine " + name + ": not available here: " + engine.missing);
+      if (!engine.available) throw UsageError(option + " " + name + ": not available here: " + engine.missing);
       return;
     }
     names += (names.empty() ? "" : ", ") + engine.name;
   }
-  throw UsageError("--engine " + name + ": no such engine; the engines are " + names + " (--list-engines)");
+  throw UsageError(option + " " + name + ": no such engine; the engines are " + names + " (--list-engines)");
 }
 
 std::string enginesText() {

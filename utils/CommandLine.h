@@ -52,7 +52,8 @@ std::string settingsJson(const std::deque<Knob>& knobs);
 
 // --engine NAME: a known engine available here, or UsageError naming it,
 // why it is missing and how to install it.
-void requireAvailableEngine(const std::string& name);
+// `option` names the option in the message (--compare's list uses the same check).
+void requireAvailableEngine(const std::string& name, const std::string& option = "--engine");
 // --list-engines: one block per engine.
 std::string enginesText();
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstring>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -104,17 +105,22 @@ int usageError(const std::string& message) {
 }
 
 // --world FILE: the file read and checked whole before anything runs.
+// --compare makes the scene once more for each engine, from the world read here.
 int runWorldFile(const std::string& path, std::vector<char*>& arguments) {
-  std::unique_ptr<odelab::world::WorldFileScene> scene;
+  std::shared_ptr<const odelab::world::World> world;
   try {
-    scene = std::make_unique<odelab::world::WorldFileScene>(odelab::world::readWorldFile(path));
+    world = std::make_shared<const odelab::world::World>(odelab::world::readWorldFile(path));
   } catch (const odelab::world::WorldFileError& error) {
     std::cerr << "error: --world: " << error.what() << '\n';
     return odelab::exit_code::USAGE;
   }
-  scene->identify("world", scene->fileTitle(path));
-  return odelab::runScene(std::move(scene), "A world file (doc/world-format.md) run in ODE or, with --engine, another engine.",
-                          static_cast<int>(arguments.size()), arguments.data());
+  const auto make = [world, path]() -> std::unique_ptr<odelab::AbstractWindow> {
+    auto scene = std::make_unique<odelab::world::WorldFileScene>(*world);
+    scene->identify("world", scene->fileTitle(path));
+    return scene;
+  };
+  return odelab::runScene(make(), "A world file (doc/world-format.md) run in ODE or, with --engine, another engine.",
+                          static_cast<int>(arguments.size()), arguments.data(), nullptr, make);
 }
 
 }  // namespace

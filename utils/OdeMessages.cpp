@@ -89,6 +89,8 @@ void OdeMessages::install() {
   dSetMessageHandler(onMessage);
 }
 
+void OdeMessages::adoptThread() { mainThread = std::this_thread::get_id(); }
+
 void OdeMessages::setRunContext(std::function<std::string()> moment,
                                 std::function<void(const std::string&)> markOutputs) {
   runMoment = std::move(moment);

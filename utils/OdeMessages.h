@@ -20,6 +20,11 @@ class OdeError : public std::runtime_error {
 class OdeMessages {
  public:
   static void install();
+  // The thread that steps a world now takes the main thread's part: ODE's
+  // errors there are thrown as OdeError. A compare run (utils/CompareRun.cpp)
+  // steps each engine's scene on a thread of its own, one at a time, and
+  // calls this as each takes its turn, and on the main thread afterwards.
+  static void adoptThread();
 
   // The latest messages (newest last, at most 4) of the last few seconds.
   static std::deque<std::string> recent();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "FixedStepClock.h"
 
@@ -35,6 +36,9 @@ struct RunOptions {
   // utils/world/EngineCatalog's, at its defaults or its best settings.
   std::string engine = "ode";
   bool engineBest = false;
+  // --compare: the engines run beside ODE in the same run, in lockstep
+  // (utils/CompareRun.h); empty for a run of one engine.
+  std::vector<std::string> compare;
 };
 
 }  // namespace odelab

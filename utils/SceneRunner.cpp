@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <random>
 #include <exception>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "CommandLine.h"
+#include "CompareRun.h"
 #include "CopyLine.h"
 #include "ExitCodes.h"
 #include "OdeMessages.h"
@@ -126,6 +128,90 @@ class ExportWorld {
   std::string folder_;
 };
 
+// One scene's command line: the common options, the scene's own, one per
+// knob and the runner's. A compare run parses the same arguments once more
+// for each engine's scene, each into a command line of its own (the
+// scene's options and knobs are its members).
+struct SceneCommandLine {
+  CLI::App app;
+  RunOptions options;
+  std::vector<const CLI::Option*> sceneOptions;  // the scene's own, which the copied command line repeats as given
+  bool listSettings = false;
+  bool listEngines = false;
+  std::string engineSetting = "default";
+  std::string compare;
+  std::string exportWorld;
+  bool printCommandLine = false;
+
+  SceneCommandLine(AbstractWindow& scene, const char* description)
+      : app{std::string(scene.title()) + "\n" + description} {
+    app.get_formatter()->column_width(34);
+    cli::addCommonOptions(app, options);
+    const size_t sharedOptions = app.get_options().size();
+    scene.addOptions(app);
+    const std::vector<CLI::Option*> added = app.get_options();
+    sceneOptions.assign(added.begin() + static_cast<long>(sharedOptions), added.end());
+    cli::addKnobOptions(app, scene.tuning().knobs());
+    app.add_flag("--list-settings", listSettings,
+                 "print every knob (world settings, contact choices, the scene's) as JSON (name, option, key, range, default, unit, group, header, metric) and exit");
+    app.add_flag("--list-engines", listEngines,
+                 "print every engine --engine takes: whether it is here, its version and precision, what its best "
+                 "settings change, and how to install a missing one; then exit");
+    app.add_option("--engine", options.engine,
+                   "the engine that steps the scene: ode (the reference), bullet, mujoco, havok, jolt or rapier; the "
+                   "scene's own code measures it (doc/peers.md)")
+        ->capture_default_str();
+    app.add_option("--engine-setting", engineSetting,
+                   "default: the engine as it comes, with the scene's physics translated; best: its documented "
+                   "settings for accuracy (--list-engines says which)")
+        ->check(CLI::IsMember({"default", "best"}))
+        ->capture_default_str();
+    app.add_option("--compare", compare,
+                   "ENGINE,ENGINE,...: the same run on ODE and on each engine named (up to five), in lockstep, with "
+                   "--headless; metrics as ode.NAME, bullet.NAME, ...; the other engines' files in OUT-DIR/ENGINE/ "
+                   "(doc/peers.md, \"Several engines in one run\")");
+    app.add_option("--export-world", exportWorld,
+                   "write the world as built (bodies, geoms, joints, every pair's contact surface, the settings) "
+                   "to FILE as JSON (doc/world-format.md) and exit; odelab --world FILE runs it");
+    app.add_flag("--print-command-line", printCommandLine,
+                 "at the run's end print \"command line: \" and the command line that starts it again with every "
+                 "value it is tuned by then (as the panel's Copy as command line)");
+    cli::rejectEmptyValues(app);
+    app.footer(cli::keysHelp(scene));
+  }
+};
+
+// --compare: each other engine's scene, made by `makeAnother` and parsed
+// from the same arguments, its files in OUT-DIR/ENGINE. Each command line
+// is kept in `lines` for as long as its scene lives (a knob reads its
+// option: test10's --launches). A refusal is the status to end with.
+std::optional<int> addCompareScenes(CompareRun& compare, std::vector<std::unique_ptr<SceneCommandLine>>& lines,
+                                    const RunOptions& options, const char* description, int argc, char** argv,
+                                    const std::function<std::unique_ptr<AbstractWindow>()>& makeAnother) {
+  for (const std::string& engine : options.compare) {
+    std::unique_ptr<AbstractWindow> scene = makeAnother();
+    lines.push_back(std::make_unique<SceneCommandLine>(*scene, description));
+    SceneCommandLine* const line = lines.back().get();
+    const std::optional<int> refused = cli::parseCommandLine(line->app, argc, argv, [&] {
+      RunOptions& own = line->options;
+      own.engine = engine;
+      own.engineBest = line->engineSetting == "best";
+      own.compare.clear();
+      own.outDir = compareFolder(options.outDir, engine);
+      cli::refuseOwnOutputs(own, scene->outputFileNames());
+      cli::refuseUnwritableOutputs(own, scene->outputFileNames());
+      own.metricsJson.clear();  // the compare run writes every engine's
+      cli::checkKnobs(line->app, scene->tuning().knobs(), scene->tuning().settings().step);
+      scene->setRunOptions(own);
+      scene->checkOptions();
+    });
+    if (refused) return refused;
+    scene->session().setGivenSceneOptions(givenOptions(line->sceneOptions));
+    compare.add(engine, std::move(scene));
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* switching) {
@@ -137,60 +223,37 @@ int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* swi
     std::cerr << "error: scene declaration: " << error.what() << '\n';
     return exit_code::RUNTIME_ERROR;
   }
-  return runScene(std::move(scene), entry.description, argc, argv, switching);
+  return runScene(std::move(scene), entry.description, argc, argv, switching, [&entry] { return entry.make(); });
 }
 
 int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int argc, char** argv,
-             SceneSwitching* switching) {
+             SceneSwitching* switching, const std::function<std::unique_ptr<AbstractWindow>()>& makeAnother) {
   OpenScene current(std::move(first));
   AbstractWindow& scene = current.scene();  // the first scene, until the window switches
-  RunOptions options;
-  CLI::App app{std::string(scene.title()) + "\n" + description};
-  app.get_formatter()->column_width(34);
-  cli::addCommonOptions(app, options);
-  // The scene's own options, which the copied command line repeats as given.
-  const size_t sharedOptions = app.get_options().size();
-  scene.addOptions(app);
-  const std::vector<CLI::Option*> added = app.get_options();
-  const std::vector<const CLI::Option*> sceneOptions(added.begin() + static_cast<long>(sharedOptions), added.end());
-  cli::addKnobOptions(app, scene.tuning().knobs());
-  bool listSettings = false;
-  app.add_flag("--list-settings", listSettings,
-               "print every knob (world settings, contact choices, the scene's) as JSON (name, option, key, range, default, unit, group, header, metric) and exit");
-  bool listEngines = false;
-  app.add_flag("--list-engines", listEngines,
-               "print every engine --engine takes: whether it is here, its version and precision, what its best "
-               "settings change, and how to install a missing one; then exit");
-  app.add_option("--engine", options.engine,
-                 "the engine that steps the scene: ode (the reference), bullet, mujoco, havok, jolt or rapier; the "
-                 "scene's own code measures it (doc/peers.md)")
-      ->capture_default_str();
-  std::string engineSetting = "default";
-  app.add_option("--engine-setting", engineSetting,
-                 "default: the engine as it comes, with the scene's physics translated; best: its documented "
-                 "settings for accuracy (--list-engines says which)")
-      ->check(CLI::IsMember({"default", "best"}))
-      ->capture_default_str();
-  std::string exportWorld;
-  app.add_option("--export-world", exportWorld,
-                 "write the world as built (bodies, geoms, joints, every pair's contact surface, the settings) "
-                 "to FILE as JSON (doc/world-format.md) and exit; odelab --world FILE runs it");
-  bool printCommandLine = false;
-  app.add_flag("--print-command-line", printCommandLine,
-               "at the run's end print \"command line: \" and the command line that starts it again with every "
-               "value it is tuned by then (as the panel's Copy as command line)");
-  cli::rejectEmptyValues(app);
-  app.footer(cli::keysHelp(scene));
+  const auto line = std::make_unique<SceneCommandLine>(scene, description);
+  CLI::App& app = line->app;
+  RunOptions& options = line->options;
+  const std::string& exportWorld = line->exportWorld;
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     cli::validateRunOptions(options);
     // The launcher's window may switch to any scene: every scene's files
     // are this session's.
     const std::vector<std::string> outputs = switching ? switching->outputFileNames() : scene.outputFileNames();
+    if (!line->compare.empty()) {
+      // Before --engine's own check: the two are one or the other.
+      if (app.count("--engine") > 0)
+        throw UsageError("--compare: ODE runs first and then every engine named; leave out --engine");
+      options.compare = parseCompareList(line->compare);
+      if (!options.headless)
+        throw UsageError("--compare runs headless for now; the side-by-side window is not built yet (add --headless)");
+      if (!exportWorld.empty()) throw UsageError("--export-world: the world is ODE's as built; leave out --compare");
+      if (!makeAnother) throw UsageError("--compare: this program cannot make its scene again");
+    }
     cli::refuseOwnOutputs(options, outputs);
     cli::refuseUnwritableOutputs(options, outputs);
     cli::refuseRunShorterThanStep(options, scene.tuning().settings().step);
     cli::checkKnobs(app, scene.tuning().knobs(), scene.tuning().settings().step);
-    options.engineBest = engineSetting == "best";
+    options.engineBest = line->engineSetting == "best";
     if (!exportWorld.empty()) {
       if (options.engine != "ode") throw UsageError("--export-world: the world is ODE's as built; leave out --engine");
       cli::requireReplaceableFile("--export-world", exportWorld);
@@ -203,15 +266,25 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
     if (switching && !options.headless) switching->checkOptions(options);
   });
   if (refused) return *refused;
-  scene.session().setGivenSceneOptions(givenOptions(sceneOptions));
+  scene.session().setGivenSceneOptions(givenOptions(line->sceneOptions));
 
-  if (listSettings) {
+  if (line->listSettings) {
     std::cout << cli::settingsJson(scene.tuning().knobs());
     return exit_code::OK;
   }
-  if (listEngines) {
+  if (line->listEngines) {
     std::cout << cli::enginesText();
     return exit_code::OK;
+  }
+  // --compare: the other engines' scenes, parsed from the same arguments,
+  // before anything runs (doc/peers.md, "Several engines in one run").
+  std::vector<std::unique_ptr<SceneCommandLine>> otherLines;  // outlive the scenes that read them
+  std::unique_ptr<CompareRun> compare;
+  if (!options.compare.empty()) {
+    compare = std::make_unique<CompareRun>();
+    if (const std::optional<int> refusedOther =
+            addCompareScenes(*compare, otherLines, options, description, argc, argv, makeAnother))
+      return *refusedOther;
   }
   installStopSignalHandlers();
   std::optional<ExportWorld> exporter;  // its folder goes after the scene has closed its files
@@ -224,12 +297,15 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   int status = exit_code::OK;
   current.hook();
   // The scene open when a run fails: after a switch, not the first.
-  const auto markOpenScene = [&current](const std::string& why) {
+  const auto markOpenScene = [&current, &compare](const std::string& why) {
     if (current.isOpen()) markCutShort(current.scene(), why);
+    if (compare) compare->markCutShort(why);
   };
   try {
     if (exporter)
       status = (*exporter)(scene, options);
+    else if (compare)
+      status = compare->run(scene, options);
     else
       status = run(current, options, switching);
   } catch (const world::EngineError& error) {
@@ -255,8 +331,9 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
     markOpenScene(error.what());
     status = exit_code::RUNTIME_ERROR;
   }
-  if (printCommandLine && current.isOpen()) std::cout << "command line: " << copyLine(current.scene()) << std::endl;
-  current.close();  // while ODE is still initialised
+  if (line->printCommandLine && current.isOpen()) std::cout << "command line: " << copyLine(current.scene()) << std::endl;
+  if (compare) compare->close();  // while ODE is still initialised
+  current.close();
   return status;
 }
 

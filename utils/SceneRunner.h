@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -36,8 +37,12 @@ class SceneSwitching {
 };
 
 // With `switching` (the launcher), a window run may go on to other scenes.
+// `makeAnother` makes the same scene again, unparsed (another of `first`):
+// --compare runs one on each engine named (utils/CompareRun.h); without it
+// --compare is refused.
 int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int argc, char** argv,
-             SceneSwitching* switching = nullptr);
+             SceneSwitching* switching = nullptr,
+             const std::function<std::unique_ptr<AbstractWindow>()>& makeAnother = {});
 
 // Every test's main(): `int main(int argc, char** argv) { return odelab::runTest<Test1>(argc, argv, "..."); }`
 // Makes the registry's scene and runs it. A scene that declares a key twice

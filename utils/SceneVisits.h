@@ -14,6 +14,11 @@ namespace odelab {
 // the order shown: "visit1.test2.energy_start_J", "visit3.test2.mark_a_steps"),
 // and "visits" counts them. A session that never switched has one visit and
 // writes its metrics as a program of its own does, names unchanged.
+// Every metric of `from` (numbers and lists of sentences) into `into`, its
+// name after `prefix`: "visit1.test2." here, "bullet." in a compare run
+// (utils/CompareRun.h).
+void addPrefixed(Metrics& into, const std::string& prefix, const Metrics& from);
+
 class SceneVisits {
  public:
   // A visit that has ended: `scene` is its program's name ("test2").

@@ -1,0 +1,55 @@
+# ---- several engines in one run: --compare (doc/peers.md, "Several engines
+# in one run"; issue 37's foundation). CTest label: compare.
+#
+# `testN --compare bullet,mujoco --headless` runs the scene on ODE and on each
+# engine named, in lockstep, each from its own parse of the same command
+# line. Each engine's block of the metrics (ode.NAME, bullet.NAME, ...) must
+# equal the separate run's (testN --headless, testN --engine E --headless,
+# same options and seconds) to the digits written, but for the metrics read
+# from a clock (launcher_same_run.py's list); its exit_status the separate
+# run's status; its output files the separate run's byte for byte (ODE's in
+# the folder, the others' in <folder>/<engine>/). Then the refusals: status 2,
+# nothing written.
+#
+# The engines: Bullet and MuJoCo as the build found them; Havok, Jolt and
+# Rapier where node and `npm ci` in peers/wasm are (as engine_claims.cmake
+# decides), else named as skipped.
+set(_compare_engines)
+set(_compare_skipped)
+if(ODELAB_ENGINE_BULLET)
+  list(APPEND _compare_engines bullet)
+endif()
+if(ODELAB_ENGINE_MUJOCO)
+  list(APPEND _compare_engines mujoco)
+endif()
+if(ODELAB_ENGINE_NODE AND EXISTS ${CMAKE_SOURCE_DIR}/peers/wasm/node_modules/.package-lock.json)
+  list(APPEND _compare_engines havok jolt rapier)
+else()
+  list(APPEND _compare_skipped havok jolt rapier)
+endif()
+string(REPLACE ";" "," _compare_engine_list "${_compare_engines}")
+string(REPLACE ";" "," _compare_skipped_list "${_compare_skipped}")
+
+if(_compare_engines)
+  foreach(_program IN ITEMS test2 test9)
+    add_test(NAME compare_${_program}_equals_separate_runs
+             COMMAND ${Python3_EXECUTABLE} ${ODELAB_CHECK_SCRIPTS}/compare_same_runs.py
+                     --program $<TARGET_FILE:${_program}> --engines ${_compare_engine_list}
+                     --skipped "${_compare_skipped_list}" -- --seconds 2)
+    set_tests_properties(compare_${_program}_equals_separate_runs PROPERTIES LABELS compare TIMEOUT 600)
+  endforeach()
+  # The launcher's --scene runs the same compare run as the program.
+  add_test(NAME compare_odelab_scene_test9_equals_separate_runs
+           COMMAND ${Python3_EXECUTABLE} ${ODELAB_CHECK_SCRIPTS}/compare_same_runs.py
+                   --program $<TARGET_FILE:test9> --launcher $<TARGET_FILE:odelab> --engines ${_compare_engine_list}
+                   --skipped "${_compare_skipped_list}" -- --seconds 2)
+  set_tests_properties(compare_odelab_scene_test9_equals_separate_runs PROPERTIES LABELS compare TIMEOUT 600)
+endif()
+
+# The refusals name Bullet as the engine that is here.
+if(ODELAB_ENGINE_BULLET)
+  add_test(NAME compare_refusals_test2
+           COMMAND ${Python3_EXECUTABLE} ${ODELAB_CHECK_SCRIPTS}/compare_same_runs.py
+                   --program $<TARGET_FILE:test2> --refusals)
+  set_tests_properties(compare_refusals_test2 PROPERTIES LABELS compare TIMEOUT 120)
+endif()

@@ -1,0 +1,178 @@
+#!/usr/bin/python3
+"""A compare run equals the separate runs it stands for (checks/compare.cmake).
+
+  compare_same_runs.py --program build/tests/test2 --engines bullet,mujoco [--skipped havok,jolt,rapier]
+                       [--launcher build/tests/odelab] -- --seconds 2
+
+Runs, each in a fresh folder:
+  - PROGRAM --compare ENGINES --headless ARGS --metrics-json c.json
+    (or LAUNCHER --scene NAME --compare ...), which must end with status 0;
+  - PROGRAM --headless ARGS (ODE), and PROGRAM --engine E --headless ARGS for
+    each engine.
+Every block of the compare run's metrics (ode.NAME, bullet.NAME, ...) must
+equal its separate run's metrics: the same names, the same values as
+written (to the digits printed), the same lists of sentences, but for the
+metrics read from a clock (launcher_same_run.py's CLOCK_METRICS);
+<engine>.exit_status must be the separate run's status; and the output
+files must be the same byte for byte (ODE's in the folder, each other
+engine's in <folder>/<engine>/).
+
+  compare_same_runs.py --program build/tests/test2 --refusals
+
+checks what is refused with status 2 before anything is written: --compare
+with --engine, an unknown engine, ode named, an engine named twice, an empty
+name, a window (no --headless), --export-world, and a link or a file where
+an engine's folder goes.
+
+--skipped names engines this build cannot run (no node): printed as skipped.
+Exit 0 when all hold, 1 naming each that does not.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from launcher_same_run import CLOCK_METRICS  # noqa: E402
+
+METRICS = "m.json"
+
+
+def run(command, folder):
+    os.makedirs(folder, exist_ok=True)
+    done = subprocess.run(command, cwd=folder, capture_output=True, text=True, timeout=900)
+    return done
+
+
+def files_of(folder, leave_out):
+    files = {}
+    for name in sorted(os.listdir(folder)):
+        path = os.path.join(folder, name)
+        if name in leave_out or not os.path.isfile(path):
+            continue
+        with open(path, "rb") as f:
+            files[name] = f.read()
+    return files
+
+
+def same_runs(args, rest):
+    engines = [e for e in args.engines.split(",") if e]
+    name = os.path.basename(args.program)
+    failures = []
+    compared = 0
+    with tempfile.TemporaryDirectory() as root:
+        if args.launcher:
+            command = [args.launcher, "--scene", name]
+        else:
+            command = [args.program]
+        together = os.path.join(root, "compare")
+        done = run([*command, "--compare", ",".join(engines), "--headless", *rest, "--metrics-json", METRICS], together)
+        if done.returncode != 0:
+            print(f"FAIL: the compare run ended with status {done.returncode}: {done.stderr.strip()}")
+            return 1
+        with open(os.path.join(together, METRICS)) as f:
+            compare = json.load(f)
+        if compare.get("engines") != len(engines) + 1:
+            failures.append(f"engines is {compare.get('engines')}, not {len(engines) + 1}")
+        for engine in ["ode", *engines]:
+            alone = os.path.join(root, engine)
+            extra = [] if engine == "ode" else ["--engine", engine]
+            done = run([args.program, "--headless", *extra, *rest, "--metrics-json", METRICS], alone)
+            with open(os.path.join(alone, METRICS)) as f:
+                own = json.load(f)
+            prefix = engine + "."
+            block = {k[len(prefix):]: v for k, v in compare.items() if k.startswith(prefix)}
+            status = block.pop("exit_status", None)
+            if status != done.returncode:
+                failures.append(f"{engine}: exit_status {status} in the compare run, status {done.returncode} alone")
+            differ = [f"{engine}.{k}: {block.get(k)} together, {own.get(k)} alone"
+                      for k in sorted(set(own) | set(block))
+                      if k not in CLOCK_METRICS and block.get(k, "absent") != own.get(k, "absent")]
+            failures += differ
+            values = len([k for k in own if k not in CLOCK_METRICS])
+            compared += values
+            # Output files: ODE's where its own run writes them, the others' in <folder>/<engine>.
+            folder = together if engine == "ode" else os.path.join(together, engine)
+            theirs = files_of(folder, {METRICS, *engines})
+            mine = files_of(alone, {METRICS})
+            if sorted(theirs) != sorted(mine):
+                failures.append(f"{engine}: files {sorted(theirs)} together, {sorted(mine)} alone")
+            failures += [f"{engine}: {f} differs" for f in mine if f in theirs and mine[f] != theirs[f]]
+            print(f"{name} {engine}: {values} metrics (state_hash {own.get('state_hash')}, status {done.returncode}) "
+                  f"and {len(mine)} output files compared, {len(differ)} metrics differ")
+    for engine in [e for e in (args.skipped or "").split(",") if e]:
+        print(f"{name} {engine}: skipped (not in this build: node, or npm ci in peers/wasm)")
+    for failure in failures:
+        print("FAIL", failure)
+    print(f"{name}: {len(engines) + 1} engines, {compared} metrics compared, {len(failures)} differences")
+    return 1 if failures else 0
+
+
+def refusals(args):
+    name = os.path.basename(args.program)
+    cases = [
+        (["--compare", "bullet", "--engine", "bullet", "--headless"], "leave out --engine"),
+        (["--compare", "bullet", "--engine", "ode", "--headless"], "leave out --engine"),
+        (["--compare", "nosuch", "--headless"], "--compare nosuch: no such engine"),
+        (["--compare", "ode", "--headless"], "--compare ode"),
+        (["--compare", "bullet,ode", "--headless"], "--compare ode"),
+        (["--compare", "bullet,bullet", "--headless"], "--compare bullet: named twice"),
+        (["--compare", "bullet,", "--headless"], "an empty engine name"),
+        (["--compare", "bullet"], "--compare runs headless for now; the side-by-side window is not built yet"),
+        (["--compare", "bullet", "--headless", "--export-world", "w.json"], "leave out --compare"),
+    ]
+    failures = []
+    with tempfile.TemporaryDirectory() as root:
+        for number, (options, words) in enumerate(cases):
+            folder = os.path.join(root, str(number))
+            done = run([args.program, *options, "--seconds", "0.1", "--metrics-json", METRICS], folder)
+            left = sorted(os.listdir(folder))
+            if done.returncode != 2 or words not in done.stderr or left:
+                failures.append(f"{' '.join(options)}: status {done.returncode}, files {left}, said "
+                                f"{done.stderr.strip()!r}; wanted status 2 saying {words!r} and no file")
+        # What stands where an engine's folder goes: a link, a file.
+        for kind in ("link", "file"):
+            folder = os.path.join(root, kind)
+            os.makedirs(os.path.join(folder, "elsewhere"))
+            if kind == "link":
+                os.symlink("elsewhere", os.path.join(folder, "bullet"))
+            else:
+                open(os.path.join(folder, "bullet"), "w").close()
+            done = run([args.program, "--compare", "bullet", "--headless", "--seconds", "0.1",
+                        "--metrics-json", METRICS], folder)
+            words = "is a symbolic link" if kind == "link" else "is a file;"
+            left = sorted(os.listdir(folder))
+            if (done.returncode != 2 or words not in done.stderr or left != ["bullet", "elsewhere"]
+                    or os.listdir(os.path.join(folder, "elsewhere"))):
+                failures.append(f"a {kind} at bullet/: status {done.returncode}, files {left}, said "
+                                f"{done.stderr.strip()!r}; wanted status 2 saying {words!r} and nothing written")
+    for failure in failures:
+        print("FAIL", failure)
+    print(f"{name}: {len(cases) + 2} refusals checked, {len(failures)} wrong")
+    return 1 if failures else 0
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--program", required=True, help="a scene's program (build/tests/test2)")
+    parser.add_argument("--engines", default="", help="the engines beside ODE, comma-separated")
+    parser.add_argument("--skipped", help="engines this build cannot run, printed as skipped")
+    parser.add_argument("--launcher", help="run the compare run as LAUNCHER --scene NAME (odelab)")
+    parser.add_argument("--refusals", action="store_true", help="check the refusals instead")
+    args, rest = parser.parse_known_args()
+    args.program = os.path.abspath(args.program)  # the runs are in folders of their own
+    if args.launcher:
+        args.launcher = os.path.abspath(args.launcher)
+    if rest and rest[0] == "--":
+        rest = rest[1:]
+    if args.refusals:
+        return refusals(args)
+    if not args.engines:
+        parser.error("--engines: name at least one")
+    return same_runs(args, rest)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,298 @@
+#include "CompareRun.h"
+
+#include <ode/ode.h>
+
+#include <algorithm>
+#include <condition_variable>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <system_error>
+#ifndef __EMSCRIPTEN__
+#include <thread>
+#endif
+
+#include "CommandLine.h"
+#include "ExitCodes.h"
+#include "FormatValue.h"
+#include "MeasurementLog.h"
+#include "OdeMessages.h"
+#include "OpenScene.h"
+#include "Platform.h"
+#include "SceneVisits.h"
+#include "StopSignal.h"
+#include "world/Engine.h"
+
+namespace odelab {
+
+namespace {
+
+constexpr size_t MOST_OTHER_ENGINES = 5;  // six viewports, ODE's first, in the window to come
+
+#ifndef __EMSCRIPTEN__
+// Whose turn it is to step. One lane runs at a time: before each step a
+// lane hands the turn to the next lane still running and waits until it
+// comes back; a lane that has ended hands it on for good.
+class Turns {
+ public:
+  static constexpr size_t NOBODY = static_cast<size_t>(-1);
+  explicit Turns(size_t lanes) : done_(lanes, false), running_(lanes) {}
+
+  void start() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    holder_ = 0;
+    changed_.notify_all();
+  }
+  // Threads that never got to run (a thread could not be started): they leave.
+  void abandon() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    abandoned_ = true;
+    changed_.notify_all();
+  }
+  // False when abandoned.
+  bool waitFor(size_t lane) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return holder_ == lane || abandoned_; });
+    return !abandoned_;
+  }
+  void pass(size_t lane) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    holder_ = next(lane);
+    if (holder_ == lane) return;  // the only lane still running
+    changed_.notify_all();
+    changed_.wait(lock, [&] { return holder_ == lane; });
+  }
+  void finish(size_t lane) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    done_[lane] = true;
+    --running_;
+    holder_ = running_ ? next(lane) : NOBODY;
+    changed_.notify_all();
+  }
+  void waitForAll() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return running_ == 0; });
+  }
+
+ private:
+  size_t next(size_t lane) const {
+    for (size_t k = 1; k <= done_.size(); ++k) {
+      const size_t candidate = (lane + k) % done_.size();
+      if (!done_[candidate]) return candidate;
+    }
+    return NOBODY;
+  }
+
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::vector<bool> done_;
+  size_t running_;
+  size_t holder_ = NOBODY;
+  bool abandoned_ = false;
+};
+#endif
+
+}  // namespace
+
+struct CompareRun::Lane {
+  std::string engine;
+  std::unique_ptr<AbstractWindow> owned;  // empty for ODE's, the runner's own
+  AbstractWindow* scene = nullptr;
+  bool initialized = false;
+  int status = exit_code::OK;
+  bool reported = false;
+  Metrics metrics;
+  std::string error;  // what ended it other than its run's end or a blow-up
+  bool odeError = false;
+
+  // The scene's own headless run, and what the runner does when it fails.
+  void run() {
+    try {
+      status = scene->runHeadless();
+    } catch (const OdeError& failure) {
+      // As the runner: ODE's state is not trusted after its own error, so
+      // this world is left as it is (the program ends once all have reported).
+      error = failure.what();
+      odeError = true;
+      status = exit_code::ODE_ERROR;
+      odelab::markCutShort(*scene, std::string("ODE error: ") + failure.what());
+    } catch (const world::EngineError& failure) {
+      error = failure.what();
+      status = exit_code::USAGE;
+      odelab::markCutShort(*scene, failure.what());
+    } catch (const UsageError& failure) {
+      error = failure.what();
+      status = exit_code::USAGE;
+      odelab::markCutShort(*scene, failure.what());
+    } catch (const std::exception& failure) {
+      error = failure.what();
+      status = exit_code::RUNTIME_ERROR;
+      odelab::markCutShort(*scene, failure.what());
+    }
+  }
+};
+
+std::vector<std::string> parseCompareList(const std::string& list) {
+  std::vector<std::string> names;
+  size_t start = 0;
+  for (;;) {
+    const size_t comma = list.find(',', start);
+    const std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (name.empty())
+      throw UsageError("--compare: an empty engine name in '" + list +
+                       "'; name the engines with commas between them, as --compare bullet,jolt");
+    if (name == "ode")
+      throw UsageError("--compare ode: ODE runs first in every compare run; name only the other engines");
+    if (std::find(names.begin(), names.end(), name) != names.end())
+      throw UsageError("--compare " + name + ": named twice");
+    cli::requireAvailableEngine(name, "--compare");
+    names.push_back(name);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (names.size() > MOST_OTHER_ENGINES)
+    throw UsageError("--compare: at most " + std::to_string(MOST_OTHER_ENGINES) + " engines beside ODE; " +
+                     std::to_string(names.size()) + " named");
+  return names;
+}
+
+std::string compareFolder(const std::string& outDir, const std::string& engine) {
+  const std::string folder = joinPath(outDir, engine);
+  platform::FileKind kind = platform::fileKind(folder);
+  if (kind == platform::FileKind::Absent) {
+    std::error_code failed;
+    std::filesystem::create_directory(folder, failed);
+    if (failed)
+      throw UsageError("--compare " + engine + ": cannot make '" + folder + "' for its output files: " + failed.message());
+    kind = platform::fileKind(folder);
+  }
+  if (kind != platform::FileKind::Folder)
+    throw UsageError("--compare " + engine + ": '" + folder + "', the folder of its output files, " +
+                     (kind == platform::FileKind::Regular ? std::string("is a file") : platform::describe(kind)) +
+                     "; remove it or give another --out-dir");
+  return folder;
+}
+
+CompareRun::CompareRun() = default;
+CompareRun::~CompareRun() { close(); }
+
+void CompareRun::add(const std::string& engine, std::unique_ptr<AbstractWindow> scene) {
+  auto lane = std::make_unique<Lane>();
+  lane->engine = engine;
+  lane->scene = scene.get();
+  lane->owned = std::move(scene);
+  others_.push_back(std::move(lane));
+}
+
+int CompareRun::run(AbstractWindow& ode, const RunOptions& options) {
+  Lane first;
+  first.engine = "ode";
+  first.scene = &ode;
+  std::vector<Lane*> lanes{&first};
+  for (const auto& lane : others_) lanes.push_back(lane.get());
+
+  // Every scene built before any steps, ODE's first: an engine that cannot
+  // build the scene refuses the run here, as its own run would (the runner
+  // marks the files of those built already).
+  for (Lane* lane : lanes) {
+    const RunOptions own = lane->scene->options();
+    lane->initialized = true;  // its files may be open even when this throws
+    lane->scene->initialize(own);
+  }
+  // Each report is kept for the one below, not printed or written.
+  const auto keepReport = [](Lane* lane) {
+    return [lane](const Metrics& metrics) {
+      lane->metrics = metrics;
+      lane->reported = true;
+    };
+  };
+
+#ifdef __EMSCRIPTEN__
+  // No threads in the browser's build: one engine's run after another (the
+  // same figures; no lockstep).
+  for (Lane* lane : lanes) {
+    lane->scene->runInLockstep({{}, keepReport(lane)});
+    lane->run();
+  }
+#else
+  Turns turns(lanes.size());
+  for (size_t i = 0; i < lanes.size(); ++i)
+    lanes[i]->scene->runInLockstep({[&turns, i] {
+                                      turns.pass(i);
+                                      OdeMessages::adoptThread();
+                                    },
+                                    keepReport(lanes[i])});
+  std::vector<std::thread> threads;
+  try {
+    for (size_t i = 0; i < lanes.size(); ++i)
+      threads.emplace_back([&turns, i, lane = lanes[i]] {
+        if (!turns.waitFor(i)) return;
+        OdeMessages::adoptThread();
+        dAllocateODEDataForThread(dAllocateMaskAll);
+        lane->run();
+        dCleanupODEAllDataForThread();
+        turns.finish(i);
+      });
+  } catch (const std::system_error&) {
+    turns.abandon();
+    for (std::thread& thread : threads) thread.join();
+    OdeMessages::adoptThread();
+    throw;
+  }
+  turns.start();
+  turns.waitForAll();
+  for (std::thread& thread : threads) thread.join();
+  OdeMessages::adoptThread();
+#endif
+
+  // Every engine's report, ODE's first, each metric under the engine's name.
+  const bool stopped = stopSignal() != 0;
+  Metrics all;
+  all.set("engines", static_cast<double>(lanes.size()));
+  int worst = exit_code::OK;
+  bool odeError = false;
+  for (Lane* lane : lanes) {
+    worst = std::max(worst, lane->status);
+    odeError = odeError || lane->odeError;
+    const std::string prefix = lane->engine + ".";
+    if (lane->reported) {
+      Metrics block;
+      addPrefixed(block, prefix, lane->metrics);
+      block.set(prefix + "exit_status", lane->status);
+      std::cout << lane->scene->title() << " on " << lane->engine << ": "
+                << formatValue(lane->metrics.get("sim_seconds")) << " simulated seconds\n";
+      block.print(std::cout);
+      addPrefixed(all, "", block);
+      if (!lane->scene->run().blowUpReason().empty())
+        std::cerr << "error: " << lane->engine << ": " << lane->scene->run().blowUpReason() << '\n';
+    } else {
+      all.set(prefix + "exit_status", lane->status);
+      if (!lane->error.empty()) std::cerr << "error: " << lane->engine << ": " << lane->error << '\n';
+    }
+  }
+  // Stopped by a signal, no engine's run is whole: nothing is written (as one run's).
+  if (!stopped && !options.metricsJson.empty()) all.writeJsonAtomically(options.metricsJson);
+  if (odeError) {
+    // The runner's rule for an ODE error: leave without tearing the worlds down.
+    std::cout.flush();
+    std::exit(exit_code::ODE_ERROR);
+  }
+  return worst;
+}
+
+void CompareRun::markCutShort(const std::string& why) {
+  for (const auto& lane : others_)
+    if (lane->initialized) odelab::markCutShort(*lane->scene, why);
+}
+
+void CompareRun::close() {
+  for (const auto& lane : others_) {
+    if (lane->owned) lane->owned->shutdown();
+    lane->owned.reset();
+    lane->scene = nullptr;
+  }
+  others_.clear();
+}
+
+}  // namespace odelab
