@@ -3,7 +3,8 @@
 that a figure copied from an older run cannot outlive the data.
 
 Which numbers count as measured figures. In README.md and every doc/**/*.md
-(not doc/results/, which lab/check_report.py checks against its own CSVs),
+(not the lab's reports: doc/results/ and doc/worlds/NAME/, which
+lab/check_report.py and lab/check_world_report.py check against their own CSVs),
 after removing code blocks, `code spans` (option values, commands, exit
 statuses, file names), link targets, URLs and HTML comments, a number is a
 measured figure when it is
@@ -308,12 +309,20 @@ def is_held(values, value, written, unit):
     return held(values, abs(value), tolerance) or (unit == "%" and held(values, abs(value) / 100, tolerance / 100))
 
 
+def _is_report(root, page):
+    """A lab report's page (doc/results/, or a world's report in
+    doc/worlds/NAME/): lab/check_report.py and lab/check_world_report.py
+    hold its figures to its own CSVs."""
+    parts = page.relative_to(root / "doc").parts
+    return "results" in parts or (len(parts) == 3 and parts[0] == "worlds")
+
+
 def check(root):
     tables, code = csv_rows(root), code_numbers(root)
     values = held_numbers(root, tables, code)
     waiting = pending(root)
     code_values = sorted(code)
-    docs = [root / "README.md"] + sorted(p for p in (root / "doc").rglob("*.md") if "results" not in p.parts)
+    docs = [root / "README.md"] + sorted(p for p in (root / "doc").rglob("*.md") if not _is_report(root, p))
     problems, counted = [], 0
     for doc in docs:
         if not doc.exists():

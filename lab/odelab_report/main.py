@@ -49,6 +49,10 @@ def parse_args(argv):
     parser.add_argument("--second-build", type=Path, default=None, metavar="DIR",
                         help="the test programs built against another ODE (cmake -DODELAB_ODE_ROOT=...): the "
                              "thesis table gains a column measured with them")
+    parser.add_argument("--world", type=Path, default=None, metavar="FILE",
+                        help="the lab on your own world file (doc/world-format.md) instead of the thesis scenes: "
+                             "step, solver, iterations, ERP and CFM swept on ODE, the step's stability limit, "
+                             "every engine at its defaults and best (doc/lab.md, \"Your own world\")")
     parser.add_argument("--executor", default="local", metavar="local|dask:ADDRESS|srun",
                         help="where the programs run: child processes here (default), tasks on the Dask "
                              "scheduler at ADDRESS (its port 1 to 65535), or srun steps of the Slurm allocation "
@@ -61,6 +65,8 @@ def parse_args(argv):
         executors.parse(args.executor)
     except ValueError as error:
         parser.error(f"--executor: {error}")
+    if args.world is not None and (args.only or args.second_build):
+        parser.error(f"--world runs its own sweep: it takes no {'--only' if args.only else '--second-build'}")
     names = [n.strip() for item in args.only for n in item.split(",") if n.strip()]
     if args.only and not names:
         parser.error(f"--only names no experiment ({' '.join(shlex.quote(o) for o in args.only)}); "
@@ -143,7 +149,14 @@ def _main(argv, stop):
                          f"{' '.join(p for _, p in missing)} (scripts/odelab.sh installs them)\n")
         return 3
     build_dir = args.build_dir.resolve()
-    programs = check_build(build_dir, args.experiments)
+    if args.world is not None:  # lab/odelab_report/world_report.py: odelab, and the world it must read
+        from . import world_report
+        status = world_report.prepare(args, build_dir)
+        if status:
+            return status
+        programs = [build_dir / "odelab"]
+    else:
+        programs = check_build(build_dir, args.experiments)
     if args.second_build:
         check_build(args.second_build.resolve(), [e for e in args.experiments if e.name == "thesis"])
     out = args.out.resolve()
@@ -259,6 +272,8 @@ def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, execu
         _report_failures(failures)
         sys.stderr.write(f"odelab-report: nothing written to {out}; the runs are kept in {runs_dir}\n")
         return 1
+    if args.world is not None:
+        from .world_report import write_world_report as write_report
     elapsed = write_report(args, argv, staging, header, runner, progress, outcomes, jobs, executor.timing_host)
     if stop.is_set():
         return 130

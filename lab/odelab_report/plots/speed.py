@@ -7,7 +7,8 @@ THRESHOLD_LABELS = {1e-2: "1%", 1e-3: "0.1%", 1e-4: "0.01%"}
 
 
 @serialized
-def speed_accuracy(out_dir, stem, rows, cheapest, ylabel, title, zero_floor):
+def speed_accuracy(out_dir, stem, rows, cheapest, ylabel, title, zero_floor, xlabel=None, subtitle=None):
+    """`xlabel`, `subtitle`: the cost's name and the steps' range where they differ from the scenes' sweep."""
     fig, ax = new_figure(width=11.5, height=6.0)
     for solver in dict.fromkeys(r["solver"] for r in rows):
         mine = sorted(((r["wall_per_sim_second"], r["error"], r["step_s"]) for r in rows
@@ -29,8 +30,9 @@ def speed_accuracy(out_dir, stem, rows, cheapest, ylabel, title, zero_floor):
                 transform=ax.get_yaxis_transform())  # x in axes fractions, y in data
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("cost: wall seconds per simulated second (this machine)")
+    ax.set_xlabel(xlabel or "cost: wall seconds per simulated second (this machine)")
     ax.set_ylabel(ylabel)
-    ax.set_title(title + "\none curve per solver setting, steps 1e-2 (left) to 1e-4 (right)", fontsize=10)
+    ax.set_title(title + "\n" + (subtitle or "one curve per solver setting, steps 1e-2 (left) to 1e-4 (right)"),
+                 fontsize=10)
     ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
     return save(fig, out_dir, stem)
