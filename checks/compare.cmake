@@ -11,22 +11,9 @@
 # the folder, the others' in <folder>/<engine>/). Then the refusals: status 2,
 # nothing written.
 #
-# The engines: Bullet and MuJoCo as the build found them; Havok, Jolt and
-# Rapier where node and `npm ci` in peers/wasm are (as engine_claims.cmake
-# decides), else named as skipped.
-set(_compare_engines)
-set(_compare_skipped)
-if(ODELAB_ENGINE_BULLET)
-  list(APPEND _compare_engines bullet)
-endif()
-if(ODELAB_ENGINE_MUJOCO)
-  list(APPEND _compare_engines mujoco)
-endif()
-if(ODELAB_ENGINE_NODE AND EXISTS ${CMAKE_SOURCE_DIR}/peers/wasm/node_modules/.package-lock.json)
-  list(APPEND _compare_engines havok jolt rapier)
-else()
-  list(APPEND _compare_skipped havok jolt rapier)
-endif()
+# The engines here (engines_here.cmake); a missing one is named as skipped.
+set(_compare_engines ${ODELAB_CHECK_ENGINES})
+set(_compare_skipped ${ODELAB_CHECK_ENGINES_SKIPPED})
 string(REPLACE ";" "," _compare_engine_list "${_compare_engines}")
 string(REPLACE ";" "," _compare_skipped_list "${_compare_skipped}")
 

@@ -7,20 +7,6 @@
 # measured that way, on the scenes' own worlds (the peer programs with their
 # hand-written copies of the scenes are gone, and with them checks/peers.cmake).
 
-# The engines here, decided as the build decides (peers/engines/CMakeLists.txt):
-# Bullet and MuJoCo where their libraries were found; Havok, Jolt and Rapier
-# where Node.js is and `npm ci` has run in peers/wasm.
-set(ODELAB_CLAIM_ENGINES)
-if(ODELAB_ENGINE_BULLET)
-  list(APPEND ODELAB_CLAIM_ENGINES bullet)
-endif()
-if(ODELAB_ENGINE_MUJOCO)
-  list(APPEND ODELAB_CLAIM_ENGINES mujoco)
-endif()
-if(ODELAB_ENGINE_NODE AND EXISTS ${CMAKE_SOURCE_DIR}/peers/wasm/node_modules/.package-lock.json)
-  list(APPEND ODELAB_CLAIM_ENGINES havok jolt rapier)
-endif()
-
 # ---- 1. every program on every engine, by rule -----------------------------------
 # <program>_on_<engine>: a short run of the program on the engine (its default
 # setting) against the same run on ode (scripts/engine_metrics.py): status 0,
@@ -46,7 +32,7 @@ foreach(_program IN LISTS ODELAB_PROGRAMS)
   else()
     set(_args --seconds 1)
   endif()
-  foreach(_engine IN LISTS ODELAB_CLAIM_ENGINES)
+  foreach(_engine IN LISTS ODELAB_CHECK_ENGINES)
     set(_name ${_program}_on_${_engine})
     set(_dir ${CMAKE_CURRENT_BINARY_DIR}/runs/${_name})
     file(MAKE_DIRECTORY ${_dir})
@@ -64,7 +50,7 @@ endforeach()
 # Each bound was measured first: "measured X; bound Y because ..." beside it.
 # Step 0.001 (the scenes' own) unless said.
 function(odelab_engine_claim name engine program)
-  if(NOT engine IN_LIST ODELAB_CLAIM_ENGINES)
+  if(NOT engine IN_LIST ODELAB_CHECK_ENGINES)
     return()
   endif()
   cmake_parse_arguments(E "" "" "EXPECT;ARGS" ${ARGN})

@@ -3,22 +3,9 @@
 #
 # Each bound was measured first ("measured X; bound Y because ..."): a run
 # of build/tests/odelab --world doc/worlds/X.json --headless, 10 simulated
-# seconds (the default) unless said. Uses ODELAB_CLAIM_ENGINES, the engines
-# here (engine_claims.cmake), worked out the same way when that file has not
-# been read first.
+# seconds (the default) unless said. On ODELAB_CHECK_ENGINES, the engines
+# here (engines_here.cmake).
 set(_worlds ${CMAKE_SOURCE_DIR}/doc/worlds)
-if(NOT DEFINED ODELAB_CLAIM_ENGINES)
-  set(ODELAB_CLAIM_ENGINES)
-  if(ODELAB_ENGINE_BULLET)
-    list(APPEND ODELAB_CLAIM_ENGINES bullet)
-  endif()
-  if(ODELAB_ENGINE_MUJOCO)
-    list(APPEND ODELAB_CLAIM_ENGINES mujoco)
-  endif()
-  if(ODELAB_ENGINE_NODE AND EXISTS ${CMAKE_SOURCE_DIR}/peers/wasm/node_modules/.package-lock.json)
-    list(APPEND ODELAB_CLAIM_ENGINES havok jolt rapier)
-  endif()
-endif()
 
 # odelab_world_check(NAME WORLD EXPECT ... [ARGS ...]): odelab --world
 # doc/worlds/WORLD.json --headless ARGS, its metrics against the bounds.
@@ -108,7 +95,7 @@ set(_engine_seconds_tumbling_brick 2)
 set(_engine_seconds_projectile 2)
 set(_engine_seconds_thin_wall 0.1)
 foreach(_world newtons_cradle hinged_chain incline_slide tumbling_brick projectile thin_wall)
-  foreach(_engine IN LISTS ODELAB_CLAIM_ENGINES)
+  foreach(_engine IN LISTS ODELAB_CHECK_ENGINES)
     set(_name world_${_world}_on_${_engine})
     set(_dir ${CMAKE_CURRENT_BINARY_DIR}/runs/${_name})
     file(MAKE_DIRECTORY ${_dir})
