@@ -228,7 +228,11 @@ int runEntry(const SceneEntry& entry, int argc, char** argv, SceneSwitching* swi
 
 int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int argc, char** argv,
              SceneSwitching* switching, const std::function<std::unique_ptr<AbstractWindow>()>& makeAnother) {
-  OpenScene current(std::move(first));
+  // On the heap, as the command line below: in a browser the window's frames
+  // and its end run after this call has left its stack frame to the page
+  // (emscripten_set_main_loop), where a local would be overwritten.
+  const auto openScene = std::make_unique<OpenScene>(std::move(first));
+  OpenScene& current = *openScene;
   AbstractWindow& scene = current.scene();  // the first scene, until the window switches
   const auto line = std::make_unique<SceneCommandLine>(scene, description);
   CLI::App& app = line->app;
