@@ -126,6 +126,39 @@ def interleaved(runner, commands, count):
     return out
 
 
+# Times a set of timed runs is thrown away and made again, longer, because
+# one of them came out shorter than the minimum.
+LENGTHENINGS = 2
+
+
+def interleaved_long_enough(runner, commands, count, minimum):
+    """interleaved(), then every command whose shortest timed run (of those
+    that ended with status 0) used less than `minimum` CPU seconds is
+    stretched from that run and timed again: a whole new set of `count`
+    runs, interleaved with the other short commands', up to LENGTHENINGS
+    times. The stretch comes from an untimed run, and the machine's load can
+    make the timed runs shorter than it. The results per command."""
+    out = interleaved(runner, commands, count)
+    commands = list(commands)
+    for _ in range(LENGTHENINGS):
+        short = [i for i, results in enumerate(out) if _too_short(results, minimum)]
+        if not short:
+            break
+        for i in short:
+            program, args = commands[i]
+            shortest = min((r for r in out[i] if r.rc == 0 and r.m("sim_seconds")), key=lambda r: r.cpu_seconds)
+            seconds = timed_seconds(shortest.m("sim_seconds"), shortest.cpu_seconds, minimum)
+            commands[i] = (program, with_seconds(args, max(seconds, 1.5 * shortest.m("sim_seconds"))))
+        for i, results in zip(short, interleaved(runner, [commands[i] for i in short], count)):
+            out[i] = results
+    return out
+
+
+def _too_short(results, minimum):
+    ok = [r for r in results if r.rc == 0 and r.m("sim_seconds") and r.cpu_seconds is not None]
+    return bool(ok) and min(r.cpu_seconds for r in ok) < minimum
+
+
 def scatter_of(costs):
     """The timing's relative scatter from repeated runs of one setting:
     (max - min) / median of their costs (0 for fewer than two)."""

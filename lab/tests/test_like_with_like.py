@@ -293,6 +293,32 @@ class Timing(unittest.TestCase):
                          ["--seconds", 600.0, "--step", "0.01"])
         self.assertEqual(timing.with_seconds(["--step", "0.01"], 600.0), ["--step", "0.01", "--seconds", 600.0])
 
+    def test_a_timed_run_that_came_out_short_is_timed_again_longer(self):
+        # The untimed run fixed 1 s; the machine then ran it in 0.05 s of CPU:
+        # the whole set is made again, longer, and the short set is not kept.
+        class Result:
+            def __init__(self, seconds):
+                self.rc, self.seconds = 0, float(seconds)
+                self.cpu_seconds = 0.05 * self.seconds
+
+            def m(self, name):
+                return self.seconds if name == "sim_seconds" else None
+
+        class Runner:
+            def __init__(self):
+                self.made = []
+
+            def map(self, specs):
+                self.made += specs
+                return [Result(spec.args[spec.args.index("--seconds") + 1]) for spec in specs]
+
+        runner = Runner()
+        out = timing.interleaved_long_enough(runner, [("p", ["--seconds", 1.0])], 5, 0.5)
+        self.assertEqual(len(out[0]), 5)
+        self.assertTrue(all(r.cpu_seconds >= 0.5 for r in out[0]))
+        self.assertEqual(len(runner.made), 10)  # five short runs, then five new ones
+        self.assertTrue(all(spec.timed for spec in runner.made))
+
     def test_five_runs_a_figure_and_ranges(self):
         self.assertGreaterEqual(timing.REPEATS, 5)
         self.assertEqual(timing.spread([3.0, 1.0, 2.0, None]), (2.0, 1.0, 3.0))

@@ -50,7 +50,7 @@ class SpeedAccuracy(Experiment):
         lengths = ctx.runner.parallel([lambda a=a: timing.stretched(ctx.runner, self.program, a, minimum)
                                        for a in accuracy_args])
         ctx.advance(len(plan))
-        timed = timing.interleaved(ctx.runner, [(self.program, a) for a in lengths], repeats)
+        timed = timing.interleaved_long_enough(ctx.runner, [(self.program, a) for a in lengths], repeats, minimum)
         ctx.advance(len(plan) * repeats)
         measured = list(zip(accuracy, timed))
         rows = []

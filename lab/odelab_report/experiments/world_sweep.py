@@ -226,7 +226,8 @@ class WorldSweep(Experiment):
         lengths = ctx.runner.parallel([lambda a=unique[k]: timing.stretched(ctx.runner, PROGRAM, a, minimum)
                                        for k in keys])
         ctx.advance(len(keys))
-        timed = timing.interleaved(ctx.runner, [(PROGRAM, a) for a in lengths], timing.repeats(ctx.quick))
+        timed = timing.interleaved_long_enough(ctx.runner, [(PROGRAM, a) for a in lengths],
+                                                timing.repeats(ctx.quick), minimum)
         ctx.advance(len(keys) * timing.repeats(ctx.quick))
         by_key = dict(zip(keys, timed))
         for p in points:
