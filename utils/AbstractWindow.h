@@ -70,6 +70,13 @@ class AbstractWindow {
     std::function<void(const Metrics&)> report;
   };
   void runInLockstep(Lockstep lockstep) { lockstep_ = std::move(lockstep); }
+  // The compare window (utils/CompareLanes.h): every input a person gives
+  // this scene that changes the simulation (a recorded key, R included, a
+  // panel change, a drag) is passed on to `echo` once applied here, with
+  // this scene's step; applyInput() gives it to another scene at its own
+  // step. A replay passes nothing on.
+  void echoInputs(std::function<void(const TimelineEvent&)> echo) { echo_ = std::move(echo); }
+  void applyInput(const TimelineEvent& event);
   // " at t=1.23 s (step 0.001, ERP 0.2, ...)": the end of every ODE error and blow-up message.
   std::string momentAndSettings() const;
   // "key: value" pairs naming every setting in force, for output file headers.
@@ -95,6 +102,9 @@ class AbstractWindow {
   // comes nor lets it jump back as it goes.
   std::vector<std::string> hudPassingLines() const;
   std::vector<std::string> helpLines() const;
+  // The scene's headline measurement: the first of its own HUD lines (the
+  // compact HUD's), or "" when it has none.
+  std::string headline() const;
   virtual SceneBounds bounds() const { return {{0, 0, 0}, 12.0}; }
   bool handleKey(SDL_Keycode key, bool shift);  // false if unbound
   // The panel's change of knob `index` (in tuning().knobs()), recorded for rewind.
@@ -213,6 +223,7 @@ class AbstractWindow {
   KeyTable keys_;
   world::EngineLink engine_;
   Lockstep lockstep_;
+  std::function<void(const TimelineEvent&)> echo_;
 };
 
 }  // namespace odelab

@@ -92,15 +92,14 @@ bool AbstractWindow::handleKey(SDL_Keycode key, bool shift) {
   const long long epochBefore = session_.rewind_.epoch();
   const std::string name = (shift ? "Shift+" : "") + binding->keyName;
   const std::string description = binding->description;
+  TimelineEvent event;
+  event.step = run_.steps_;
+  event.kind = TimelineEvent::Kind::Key;
+  event.key = key;
+  event.shift = shift;
   binding->action(shift ? -1 : +1);
-  if (session_.rewind_.epoch() == epochBefore) {
-    TimelineEvent event;
-    event.step = run_.steps_;
-    event.kind = TimelineEvent::Kind::Key;
-    event.key = key;
-    event.shift = shift;
-    session_.rewind_.record(event);
-  }
+  if (session_.rewind_.epoch() == epochBefore) session_.rewind_.record(event);
+  if (echo_) echo_(event);
   // A knob's key logs the change it made (changeKnob); others their description.
   if (!binding->logsItself) logAction(name + ": " + description);
   return true;
@@ -122,6 +121,27 @@ void AbstractWindow::recordAndApply(const TimelineEvent& event) {
   const long long epochBefore = session_.rewind_.epoch();
   applyEvent(event);
   if (session_.rewind_.epoch() == epochBefore) session_.rewind_.record(event);
+  if (echo_) echo_(event);
+}
+
+void AbstractWindow::applyInput(const TimelineEvent& event) {
+  if (event.kind == TimelineEvent::Kind::Key) {
+    handleKey(event.key, event.shift);
+    return;
+  }
+  if (event.kind == TimelineEvent::Kind::Knob && (event.index < 0 || event.index >= static_cast<int>(tuning_.knobs_.size())))
+    return;
+  TimelineEvent own = event;
+  own.step = run_.steps_;
+  // Logged as the leading scene's beginDrag and endDrag log them.
+  const bool grabs = event.kind == TimelineEvent::Kind::Drag && !session_.drag_.active();
+  const bool releases = event.kind == TimelineEvent::Kind::Release && session_.drag_.active();
+  if (releases) session_.marks_.set("drag_end_distance", session_.drag_.gap(run_.objects_));
+  recordAndApply(own);
+  if (event.kind == TimelineEvent::Kind::Drag && session_.drag_.active())
+    session_.marks_.set("drag_start_distance", session_.drag_.gap(run_.objects_));
+  if (grabs) logAction("drag " + std::to_string(event.objectIndex));
+  if (releases) logAction("release");
 }
 
 void AbstractWindow::applyEvent(const TimelineEvent& event) {

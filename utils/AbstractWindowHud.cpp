@@ -63,6 +63,12 @@ const char* shapeWord(Shape shape) {
 
 }  // namespace
 
+std::string AbstractWindow::headline() const {
+  std::vector<std::string> sceneLines;
+  addHudLines(sceneLines);
+  return sceneLines.empty() ? std::string() : sceneLines.front();
+}
+
 std::vector<std::string> AbstractWindow::hudLines() const {
   std::vector<std::string> lines;
   if (session_.hudMode_ == HudMode::Off) return lines;

@@ -179,7 +179,9 @@ void addCommonOptions(CLI::App& app, RunOptions& options) {
   app.add_option("--metrics-json", options.metricsJson,
                  "write the metrics as a flat JSON object to FILE (atomically: to a hidden temporary file "
                  "beside it, .FILE.XXXXXX, then renamed)");
-  app.add_option("--screenshot", options.screenshot, "window: render --frames frames, save a PNG to FILE, exit");
+  app.add_option("--screenshot", options.screenshot,
+                 "window: render --frames frames, save a PNG to FILE, exit (with --seconds and no --frames: at the "
+                 "run's end)");
   app.add_option("--frames", options.frames, "frames to render before --screenshot")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();

@@ -93,6 +93,23 @@ class Turns {
 };
 #endif
 
+// The frame loop's figures (frames per second, the longest frame, the
+// window's failures) are the window's, in ODE's block; an engine that
+// followed ODE's scene has its steps' own wall time, as a headless run has.
+Metrics followerMetrics(const AbstractWindow& scene, const CompareLanes::Lane& lane) {
+  const Metrics own = scene.metrics();
+  Metrics m;
+  for (const auto& [name, value] : own.entries()) {
+    if (name == "window_fps" || name == "longest_frame_ms" || name == "window_failures") continue;
+    if (name == "wall_seconds") m.set(name, lane.steppingSeconds);
+    else if (name == "real_time_factor")
+      m.set(name, lane.steppingSeconds > 0 ? scene.run().simulatedTime() / lane.steppingSeconds : 0.0);
+    else m.set(name, value);
+  }
+  for (const auto& [name, texts] : own.texts()) m.setTexts(name, texts);
+  return m;
+}
+
 }  // namespace
 
 struct CompareRun::Lane {
@@ -246,6 +263,50 @@ int CompareRun::run(AbstractWindow& ode, const RunOptions& options) {
   OdeMessages::adoptThread();
 #endif
 
+  return report(lanes, options);
+}
+
+int CompareRun::runWindow(AbstractWindow& ode, const RunOptions& options, const WindowModule& window) {
+  std::vector<std::pair<std::string, AbstractWindow*>> others;
+  for (const auto& lane : others_) others.emplace_back(lane->engine, lane->scene);
+  windowLanes_ = std::make_unique<CompareLanes>(ode, others);
+  return window.runCompare(*windowLanes_, options,
+                           [this, &ode, options](int status) { return finishWindow(ode, options, status); });
+}
+
+int CompareRun::finishWindow(AbstractWindow& ode, const RunOptions& options, int status) {
+  Lane first;
+  first.engine = "ode";
+  first.scene = &ode;
+  std::vector<Lane*> lanes{&first};
+  for (const auto& lane : others_) lanes.push_back(lane.get());
+  for (Lane* lane : lanes) lane->initialized = lane->scene->run().world() != nullptr;
+  if (stopSignal() != 0) {
+    int signalled = exit_code::OK;
+    for (Lane* lane : lanes)
+      if (lane->initialized) signalled = lane->scene->stoppedBySignal();
+    return signalled;
+  }
+  if (status != exit_code::OK) {
+    const std::string why = "the window run failed with status " + std::to_string(status) + " (see standard error)";
+    for (Lane* lane : lanes)
+      if (lane->initialized) odelab::markCutShort(*lane->scene, why);
+    return status;
+  }
+  for (size_t i = 0; i < lanes.size(); ++i) {
+    Lane& lane = *lanes[i];
+    const std::string& failure = windowLanes_->lanes()[i].failure;
+    lane.scene->endOutputs(failure);
+    lane.error = failure;
+    lane.odeError = failure.rfind("ODE error", 0) == 0;
+    lane.status = failure.empty() ? exit_code::OK : lane.odeError ? exit_code::ODE_ERROR : exit_code::BLEW_UP;
+    lane.metrics = i == 0 ? lane.scene->metrics() : followerMetrics(*lane.scene, windowLanes_->lanes()[i]);
+    lane.reported = true;
+  }
+  return report(lanes, options);
+}
+
+int CompareRun::report(const std::vector<Lane*>& lanes, const RunOptions& options) {
   // Every engine's report, ODE's first, each metric under the engine's name.
   const bool stopped = stopSignal() != 0;
   Metrics all;
@@ -264,7 +325,9 @@ int CompareRun::run(AbstractWindow& ode, const RunOptions& options) {
                 << formatValue(lane->metrics.get("sim_seconds")) << " simulated seconds\n";
       block.print(std::cout);
       addPrefixed(all, "", block);
-      if (!lane->scene->run().blowUpReason().empty())
+      if (!lane->error.empty())
+        std::cerr << "error: " << lane->engine << ": " << lane->error << '\n';
+      else if (!lane->scene->run().blowUpReason().empty())
         std::cerr << "error: " << lane->engine << ": " << lane->scene->run().blowUpReason() << '\n';
     } else {
       all.set(prefix + "exit_status", lane->status);
@@ -287,6 +350,7 @@ void CompareRun::markCutShort(const std::string& why) {
 }
 
 void CompareRun::close() {
+  windowLanes_.reset();
   for (const auto& lane : others_) {
     if (lane->owned) lane->owned->shutdown();
     lane->owned.reset();

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "AbstractWindow.h"
+#include "CompareLanes.h"
+#include "WindowModule.h"
 
 namespace odelab {
 
@@ -20,6 +22,9 @@ namespace odelab {
 // the turn to the next (AbstractWindow::Lockstep), so every engine takes its
 // step k before any takes step k + 1, ODE first. An engine whose run ends
 // (its seconds done, a blow-up) leaves the turns; the others go on.
+//
+// In a window (runWindow) the lanes are stepped by the frame loop instead:
+// ODE's scene leads and the others follow (CompareLanes).
 //
 // Reports: every engine's metrics under its name, "ode.steps",
 // "bullet.steps", ... (addPrefixed, SceneVisits.h), with
@@ -54,6 +59,14 @@ class CompareRun {
   // any engine's scene ends the program as the runner's own handler does
   // (status 4) once the others have reported.
   int run(AbstractWindow& ode, const RunOptions& options);
+  // The compare window (doc/manual.md, "Engines side by side"): ODE's scene
+  // leads and every other engine's follows it step for step with the same
+  // inputs (CompareLanes), each in a view of `window`. At its end each
+  // engine's files are ended and its metrics reported as run() reports
+  // them; an engine that stopped following (a blow-up, an ODE error) has
+  // the status and incomplete files its own run would have. Returns the
+  // worst status.
+  int runWindow(AbstractWindow& ode, const RunOptions& options, const WindowModule& window);
   // Every other engine's output files end "incomplete: ...; why" (a failure
   // that ends the run before they have).
   void markCutShort(const std::string& why);
@@ -62,7 +75,12 @@ class CompareRun {
 
  private:
   struct Lane;
+  // Every engine's report, ODE's first, each metric under the engine's
+  // name; printed and written to options.metricsJson. The worst status.
+  int report(const std::vector<Lane*>& lanes, const RunOptions& options);
+  int finishWindow(AbstractWindow& ode, const RunOptions& options, int status);
   std::vector<std::unique_ptr<Lane>> others_;
+  std::unique_ptr<CompareLanes> windowLanes_;
 };
 
 }  // namespace odelab

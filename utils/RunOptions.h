@@ -19,6 +19,9 @@ struct RunOptions {
   std::string metricsJson;
   std::string screenshot;  // window: save a PNG after `frames` frames and exit
   int frames = 60;
+  // --screenshot with --seconds and no --frames: the PNG is the run's last
+  // frame, at its --seconds, whatever the frame rate.
+  bool screenshotAtEnd = false;
   std::string shaderDir;
   std::string fontPath;
   int width = 1280;

@@ -167,9 +167,10 @@ struct SceneCommandLine {
         ->check(CLI::IsMember({"default", "best"}))
         ->capture_default_str();
     app.add_option("--compare", compare,
-                   "ENGINE,ENGINE,...: the same run on ODE and on each engine named (up to five), in lockstep, with "
-                   "--headless; metrics as ode.NAME, bullet.NAME, ...; the other engines' files in OUT-DIR/ENGINE/ "
-                   "(doc/peers.md, \"Several engines in one run\")");
+                   "ENGINE,ENGINE,...: the same run on ODE and on each engine named (up to five), in lockstep: in "
+                   "the window one view per engine under one camera, every input to every engine; metrics as "
+                   "ode.NAME, bullet.NAME, ...; the other engines' files in OUT-DIR/ENGINE/ (doc/peers.md, "
+                   "\"Several engines in one run\")");
     app.add_option("--export-world", exportWorld,
                    "write the world as built (bodies, geoms, joints, every pair's contact surface, the settings) "
                    "to FILE as JSON (doc/world-format.md) and exit; odelab --world FILE runs it");
@@ -240,6 +241,7 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   const std::string& exportWorld = line->exportWorld;
   const std::optional<int> refused = cli::parseCommandLine(app, argc, argv, [&] {
     cli::validateRunOptions(options);
+    options.screenshotAtEnd = !options.screenshot.empty() && options.seconds > 0.0 && app.count("--frames") == 0;
     // The launcher's window may switch to any scene: every scene's files
     // are this session's.
     const std::vector<std::string> outputs = switching ? switching->outputFileNames() : scene.outputFileNames();
@@ -248,8 +250,6 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
       if (app.count("--engine") > 0)
         throw UsageError("--compare: ODE runs first and then every engine named; leave out --engine");
       options.compare = parseCompareList(line->compare);
-      if (!options.headless)
-        throw UsageError("--compare runs headless for now; the side-by-side window is not built yet (add --headless)");
       if (!exportWorld.empty()) throw UsageError("--export-world: the world is ODE's as built; leave out --compare");
       if (!makeAnother) throw UsageError("--compare: this program cannot make its scene again");
     }
@@ -308,8 +308,10 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   try {
     if (exporter)
       status = (*exporter)(scene, options);
-    else if (compare)
+    else if (compare && options.headless)
       status = compare->run(scene, options);
+    else if (compare)
+      status = windowModule() ? compare->runWindow(scene, options, *windowModule()) : exit_code::MISSING_RESOURCE;
     else
       status = run(current, options, switching);
   } catch (const world::EngineError& error) {

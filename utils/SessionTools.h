@@ -34,6 +34,8 @@ class SessionTools {
   const TimeControl& time() const { return time_; }
   const Timeline& timeline() const { return rewind_.timeline(); }
   const ViewFlags& viewFlags() const { return viewFlags_; }
+  // The compare window shows every engine's view with the leading scene's toggles.
+  void showAs(const ViewFlags& flags) { viewFlags_ = flags; }
   const std::vector<ContactMarker>& contactMarkers() const { return contactMarkers_; }
   const StripChart& chart() const { return chart_; }
   HudMode hudMode() const { return hudMode_; }

@@ -175,10 +175,12 @@ TEST_P(SceneInProcess, EveryKnobReachesEveryReport) {
     EXPECT_EQ(metrics.get("knob_" + knob.name), knob.metricValue()) << knob.name;
     const std::pair<std::string, std::string> line{knob.headerKey(), knob.headerText()};
     EXPECT_NE(std::find(description.begin(), description.end(), line), description.end()) << knob.name;
-    for (const std::string& text : files)
-      if (text.rfind("# ", 0) == 0)
+    for (const std::string& text : files) {
+      if (text.rfind("# ", 0) == 0) {
         EXPECT_NE(text.find("# " + line.first + ": " + line.second + "\n"), std::string::npos)
             << knob.name << " not in an output file's header:\n" << text.substr(0, 2000);
+      }
+    }
   }
   scene->shutdown();
 }

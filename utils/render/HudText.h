@@ -22,6 +22,8 @@ class TextBlock {
   TextBlock(const TextBlock&) = delete;
   TextBlock& operator=(const TextBlock&) = delete;
 
+  // In HudText's smaller font (SMALL_PERCENT of the text height).
+  void useSmallFont(bool small) { small_ = small; }
   // Size in pixels once prepared (HudText::prepare).
   int width() const { return width_; }
   int height() const { return height_; }

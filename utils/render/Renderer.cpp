@@ -88,9 +88,21 @@ Renderer::Renderer(const std::string& shaderDir)
 }
 
 void Renderer::render(const AbstractWindow& scene, int width, int height) {
+  clearWindow();
+  renderView(scene, scene.camera(), 0, 0, width, height);
+}
+
+void Renderer::clearWindow() {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glClearColor(SKY_COLOR.r, SKY_COLOR.g, SKY_COLOR.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void Renderer::renderView(const AbstractWindow& scene, const Camera& camera, int x, int y, int width, int height) {
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   glDisable(GL_BLEND);
+  const glm::vec3 focus = camera.position();
 
   // Depth pass. Culling front faces stores each caster's far side, so lit
   // faces are compared against a depth well behind them: no shadow acne.
@@ -100,25 +112,24 @@ void Renderer::render(const AbstractWindow& scene, int width, int height) {
   glCullFace(GL_FRONT);
   depthProgram_.use();
   glUniformMatrix4fv(depthLightViewProjection_, 1, GL_FALSE, glm::value_ptr(shadowMap_.lightViewProjection()));
-  drawScene(scene, depthUniforms_);
+  drawScene(scene, focus, depthUniforms_);
 
-  // Lit pass into the window, or the scaled target standing for it. The
-  // window is cleared whole either way (the HUD's strip above the view too).
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glClearColor(SKY_COLOR.r, SKY_COLOR.g, SKY_COLOR.b, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  target_.begin(width, height);
-  if (target_.scale() < 1.0f) glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // Lit pass into the window (cleared by clearWindow), or into the scaled
+  // target standing for this view, cleared here.
+  target_.begin(x, y, width, height);
+  if (target_.scale() < 1.0f) {
+    glClearColor(SKY_COLOR.r, SKY_COLOR.g, SKY_COLOR.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
   glCullFace(GL_BACK);
   sceneProgram_.use();
-  setLitPassUniforms(scene, width, height);
+  setLitPassUniforms(camera, width, height);
   shadowMap_.bindTexture(GL_TEXTURE0);
-  drawScene(scene, sceneUniforms_, scene.session().viewFlags().wireframe);
+  drawScene(scene, focus, sceneUniforms_, scene.session().viewFlags().wireframe);
   glBindVertexArray(0);
 }
 
-void Renderer::setLitPassUniforms(const AbstractWindow& scene, int width, int height) {
-  const Camera& camera = scene.camera();
+void Renderer::setLitPassUniforms(const Camera& camera, int width, int height) {
   const float aspect = height > 0 ? static_cast<float>(width) / static_cast<float>(height) : 1.0f;
   const glm::mat4 projection =
       glm::perspective(glm::radians(camera.fieldOfViewDegrees()), aspect, NEAR_PLANE, FAR_PLANE);
@@ -137,8 +148,8 @@ void Renderer::setLitPassUniforms(const AbstractWindow& scene, int width, int he
   glUniform1i(lit_.shadowRadius, shadowRadius_);
 }
 
-void Renderer::drawScene(const AbstractWindow& scene, const ObjectUniforms& uniforms, bool wireframe) const {
-  const glm::vec3 focus = scene.camera().position();
+void Renderer::drawScene(const AbstractWindow& scene, const glm::vec3& focus, const ObjectUniforms& uniforms,
+                         bool wireframe) const {
   for (const auto& object : scene.run().objects()) {
     if (!object->visible) continue;
     // One draw per part: a capsule is a cylinder and its two end spheres.

@@ -24,6 +24,11 @@ class Renderer {
   // Renders into the default framebuffer, sized width x height pixels; in
   // wireframe (V) the bodies' triangles are drawn as lines, the ground filled.
   void render(const AbstractWindow& scene, int width, int height);
+  // The compare window's pieces: the whole window cleared to the sky, then
+  // each scene drawn by `camera` into its own x, y, width, height (pixels
+  // from the bottom left), each followed by what is drawn over it and present().
+  void clearWindow();
+  void renderView(const AbstractWindow& scene, const Camera& camera, int x, int y, int width, int height);
   // A software renderer's cheaper look: shadows filtered over one texel
   // rather than 3x3 (harder shadow edges, a ninth of the lookups), and the
   // scene drawn at SOFTWARE_SCALE of the view's size in each direction.
@@ -48,8 +53,9 @@ class Renderer {
   };
   static ObjectUniforms objectUniformsOf(const ShaderProgram& program);
 
-  void drawScene(const AbstractWindow& scene, const ObjectUniforms& uniforms, bool wireframe = false) const;
-  void setLitPassUniforms(const AbstractWindow& scene, int width, int height);
+  void drawScene(const AbstractWindow& scene, const glm::vec3& focus, const ObjectUniforms& uniforms,
+                 bool wireframe = false) const;
+  void setLitPassUniforms(const Camera& camera, int width, int height);
 
   ShaderProgram depthProgram_;
   ShaderProgram sceneProgram_;

@@ -33,13 +33,15 @@ void ScaledTarget::resize(int width, int height) {
   bufferHeight_ = height;
 }
 
-void ScaledTarget::begin(int width, int height) {
+void ScaledTarget::begin(int x, int y, int width, int height) {
+  viewX_ = x;
+  viewY_ = y;
   viewWidth_ = width;
   viewHeight_ = height;
   active_ = scale_ < 1.0f;
   if (!active_) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
+    glViewport(x, y, width, height);
     return;
   }
   const int w = std::max(1, static_cast<int>(std::lround(width * scale_)));
@@ -53,9 +55,10 @@ void ScaledTarget::present() {
   if (!active_) return;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glBlitFramebuffer(0, 0, bufferWidth_, bufferHeight_, 0, 0, viewWidth_, viewHeight_, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  glBlitFramebuffer(0, 0, bufferWidth_, bufferHeight_, viewX_, viewY_, viewX_ + viewWidth_, viewY_ + viewHeight_,
+                    GL_COLOR_BUFFER_BIT, GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, viewWidth_, viewHeight_);
+  glViewport(viewX_, viewY_, viewWidth_, viewHeight_);
 }
 
 }  // namespace odelab

@@ -17,11 +17,12 @@ class ScaledTarget {
 
   void setScale(float scale) { scale_ = scale; }
   float scale() const { return scale_; }
-  // Binds where the scene of a width x height view is drawn and sets the
-  // viewport to it (the window itself at scale 1).
-  void begin(int width, int height);
-  // Stretches what was drawn onto the window's bottom-left width x height
-  // pixels and binds the window again.
+  // Binds where the scene of the window's width x height view at x, y
+  // (pixels from the bottom left) is drawn and sets the viewport to it (the
+  // window itself at scale 1).
+  void begin(int x, int y, int width, int height);
+  // Stretches what was drawn onto that view of the window and binds the
+  // window again, its viewport the view's.
   void present();
 
  private:
@@ -30,7 +31,7 @@ class ScaledTarget {
   float scale_ = 1.0f;
   GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0;
   int bufferWidth_ = 0, bufferHeight_ = 0;  // allocated size
-  int viewWidth_ = 0, viewHeight_ = 0;      // the window rectangle it stands for
+  int viewX_ = 0, viewY_ = 0, viewWidth_ = 0, viewHeight_ = 0;  // the window rectangle it stands for
   bool active_ = false;
 };
 

@@ -10,10 +10,12 @@
 #include <system_error>
 #include <vector>
 
+#include "../CompareLanes.h"
 #include "../ExitCodes.h"
 #include "../MeasurementLog.h"
 #include "../StopSignal.h"
 #include "../ResourcePaths.h"
+#include "CompareViews.h"
 #include "ControlPanel.h"
 #include "DebugDraw.h"
 #include "EventPlayer.h"
@@ -79,6 +81,7 @@ struct Views {
         text(fontPath, shaderDir),
         debug(shaderDir),
         plot(shaderDir),
+        compare(shaderDir),
         panel(window.sdlWindow(), window.glContext(), fontPath,
               options.textSize > 0 ? options.textSize : std::min(28, std::max(12, window.height() / 45)),
               options.panel) {}
@@ -86,6 +89,7 @@ struct Views {
   HudText text;
   DebugDraw debug;
   LivePlot plot;
+  CompareViews compare;
   ControlPanel panel;
   HelpOverlay help;
   TextBlock notice{200};
@@ -100,9 +104,16 @@ std::string formatFixed(const char* format, double value) {
 class FrameLoop {
  public:
   // `windowFrames` counts the window's frames over every scene it shows.
+  // `lanes`: a compare window's other engines, which follow the scene.
   FrameLoop(AbstractWindow& scene, const RunOptions& options, GlWindow& window, Views& views, EventPlayer& player,
-            long long& windowFrames)
-      : scene_(scene), options_(options), window_(window), views_(views), player_(player), windowFrames_(windowFrames) {}
+            long long& windowFrames, CompareLanes* lanes = nullptr)
+      : scene_(scene),
+        options_(options),
+        window_(window),
+        views_(views),
+        player_(player),
+        windowFrames_(windowFrames),
+        lanes_(lanes) {}
 
   int run();
   double runFrame();
@@ -112,6 +123,9 @@ class FrameLoop {
  private:
   void pollEvents(long long frame);
   void draw();
+  void drawCompare(int width, int height, int sceneHeight);
+  bool handleCompareKey(const SDL_Event& event);
+  ViewRect compareInputView(const SDL_Event& event, const ViewRect& whole, int windowWidth);
   void drawHelp(int width, int height);
   bool turnHelpPage(const SDL_Event& event);
   void drawNotice(int width, int height);
@@ -127,6 +141,11 @@ class FrameLoop {
   // switch goes on from the window's last frame instead of replacing the
   // frames of its first visit.
   long long& windowFrames_;
+  CompareLanes* lanes_;
+  // The compare views of the last frame (pixels from the top left), and the
+  // one a held mouse button began in: a drag stays in its view.
+  std::vector<CompareViews::Rect> compareViews_;
+  int heldView_ = -1;
   bool idle() const;
   double seconds(Uint64 from, Uint64 to) const { return static_cast<double>(to - from) / ticksPerSecond_; }
 
@@ -153,6 +172,7 @@ void FrameLoop::pollEvents(long long frame) {
       continue;
     if (views_.panel.handleEvent(event)) continue;
     if (turnHelpPage(event)) continue;
+    if (handleCompareKey(event)) continue;
     if (event.type == SDL_KEYDOWN && event.key.keysym.sym == SDLK_TAB && !event.key.repeat) {
       views_.panel.toggle();
       continue;
@@ -161,7 +181,9 @@ void FrameLoop::pollEvents(long long frame) {
     // strip (in window coordinates, which differ from pixels on a high-DPI display).
     const int covered = window_.width() > 0 ? views_.panel.coveredWidth() * windowWidth / window_.width() : 0;
     const int strip = window_.height() > 0 ? hudStrip_ * windowHeight / window_.height() : 0;
-    if (input_.handleEvent(event, scene_, {0, strip, windowWidth - covered, windowHeight - strip}))
+    ViewRect view{0, strip, windowWidth - covered, windowHeight - strip};
+    if (lanes_) view = compareInputView(event, view, windowWidth);
+    if (input_.handleEvent(event, scene_, view))
       window_.updateDrawableSize();
   }
   syncMouseLook(scene_);
@@ -181,8 +203,52 @@ bool FrameLoop::turnHelpPage(const SDL_Event& event) {
   return true;
 }
 
+// The compare window's own keys: M merges the views; a scene switch (the
+// launcher's Page Down / Up) would end every engine's run, so it is refused.
+bool FrameLoop::handleCompareKey(const SDL_Event& event) {
+  if (!lanes_ || event.type != SDL_KEYDOWN || event.key.repeat) return false;
+  const SDL_Keycode key = event.key.keysym.sym;
+  if (key == SDLK_m) {
+    views_.compare.toggleMerged();
+    return true;
+  }
+  if (key == SDLK_PAGEDOWN || key == SDLK_PAGEUP) {
+    notice_ = "a compare window shows one scene: start another to compare it";
+    noticeUntil_ = totals_.seconds + NOTICE_SECONDS;
+    return true;
+  }
+  return false;
+}
+
+// The mouse works in the view it is over, each with the same camera, so a
+// click picks what it is over there (on ODE's bodies, which every engine's
+// scene mirrors by index); a drag stays in the view it began in.
+ViewRect FrameLoop::compareInputView(const SDL_Event& event, const ViewRect& whole, int windowWidth) {
+  if (compareViews_.empty() || window_.width() <= 0) return whole;
+  const double toWindow = static_cast<double>(windowWidth) / window_.width();
+  const auto inWindow = [&](const CompareViews::Rect& r) {
+    return ViewRect{static_cast<int>(r.x * toWindow), static_cast<int>(r.y * toWindow),
+                    static_cast<int>(r.width * toWindow), static_cast<int>(r.height * toWindow)};
+  };
+  int x = -1, y = -1;
+  if (event.type == SDL_MOUSEBUTTONDOWN || event.type == SDL_MOUSEBUTTONUP) x = event.button.x, y = event.button.y;
+  else if (event.type == SDL_MOUSEMOTION) x = event.motion.x, y = event.motion.y;
+  int chosen = heldView_;
+  if (chosen < 0 && x >= 0) {
+    for (size_t i = 0; i < compareViews_.size(); ++i) {
+      const ViewRect r = inWindow(compareViews_[i]);
+      if (x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height) chosen = static_cast<int>(i);
+    }
+  }
+  if (event.type == SDL_MOUSEBUTTONDOWN && chosen >= 0) heldView_ = chosen;
+  if (event.type == SDL_MOUSEBUTTONUP && !(SDL_GetMouseState(nullptr, nullptr) & ~SDL_BUTTON(event.button.button)))
+    heldView_ = -1;
+  return inWindow(compareViews_[static_cast<size_t>(std::max(chosen, 0))]);
+}
+
 void FrameLoop::drawHelp(int width, int height) {
   std::vector<std::string> lines{scene_.title() + ": keys and mouse   (H closes this)", ""};
+  if (lanes_) lines.push_back(CompareViews::helpLine());
   for (const std::string& line : scene_.helpLines()) lines.push_back(line);
   views_.help.draw(views_.text, lines, width, height);
 }
@@ -211,15 +277,25 @@ void FrameLoop::draw() {
     hud.insert(hud.begin() + at, profile_.text());
     oneRow.insert(oneRow.begin() + at, true);
   }
+  // A compare window says how it is laid out and what each engine's step costs.
+  if (lanes_ && scene_.session().hudMode() != HudMode::Off) {
+    const long at = std::min<long>(3, static_cast<long>(hud.size()));
+    hud.insert(hud.begin() + at, {lanes_->timingLine(), views_.compare.hudLine()});
+    oneRow.insert(oneRow.begin() + at, {true, true});
+  }
   hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.session().hudMode() == HudMode::Full,
                                     oneRow);
   const int sceneHeight = std::max(1, height - hudStrip_);
-  scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(sceneHeight));
-  views_.renderer.render(scene_, width, sceneHeight);
-  glm::vec3 grabbed, target;
-  const bool dragging = input_.dragLine(scene_, grabbed, target);
-  views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
-  views_.renderer.present();
+  if (lanes_) {
+    drawCompare(width, height, sceneHeight);
+  } else {
+    scene_.camera().setAspect(static_cast<float>(width) / static_cast<float>(sceneHeight));
+    views_.renderer.render(scene_, width, sceneHeight);
+    glm::vec3 grabbed, target;
+    const bool dragging = input_.dragLine(scene_, grabbed, target);
+    views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
+    views_.renderer.present();
+  }
   glViewport(0, 0, width, height);
   views_.text.drawHud(width, height);
   const ViewFlags& flags = scene_.session().viewFlags();
@@ -234,6 +310,32 @@ void FrameLoop::draw() {
   }
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
+}
+
+// Every engine's view with the one camera, and the debug drawing each
+// engine's scene reports (contacts, joints) with ODE's view toggles; merged,
+// ODE's view with the others' outlines. Then each view's label.
+void FrameLoop::drawCompare(int width, int height, int sceneHeight) {
+  compareViews_ = views_.compare.layout(*lanes_, hudStrip_, width, sceneHeight);
+  const CompareViews::Rect& first = compareViews_.front();
+  scene_.camera().setAspect(static_cast<float>(first.width) / static_cast<float>(first.height));
+  views_.renderer.clearWindow();
+  glm::vec3 grabbed, target;
+  const bool dragging = input_.dragLine(scene_, grabbed, target);
+  for (size_t i = 0; i < compareViews_.size(); ++i) {
+    AbstractWindow& lane = *lanes_->lanes()[i].scene;
+    if (&lane != &scene_) {
+      lane.camera() = scene_.camera();
+      lane.session().showAs(scene_.session().viewFlags());
+    }
+    const CompareViews::Rect& r = compareViews_[i];
+    views_.renderer.renderView(lane, scene_.camera(), r.x, height - r.y - r.height, r.width, r.height);
+    views_.debug.draw(lane, views_.renderer.viewProjection(), dragging && i == 0, grabbed, target);
+    if (views_.compare.merged()) views_.compare.drawOutlines(*lanes_, views_.renderer.viewProjection());
+    views_.renderer.present();
+  }
+  glViewport(0, 0, width, height);
+  views_.compare.drawLabels(*lanes_, compareViews_, views_.text, width, height);
 }
 
 // F12: the frame as shown, named with the program and the simulated time.
@@ -290,9 +392,12 @@ double FrameLoop::runFrame() {
   const double simulatedBefore = scene_.run().simulatedTime();
   const long long stepsBefore = scene_.run().steps();
   const double collideBefore = scene_.run().collideWallSeconds();
-  // An OdeError leaves through here; RAII cleans up.
+  // An OdeError leaves through here; RAII cleans up. A compare window
+  // shares the stepping budget among its engines.
+  const double engines = lanes_ ? static_cast<double>(lanes_->lanes().size()) : 1.0;
   scene_.advanceFrame(recording ? RECORD_FRAME_SECONDS : elapsed,
-                      recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET);
+                      recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET / engines);
+  if (lanes_) lanes_->follow(seconds(now, SDL_GetPerformanceCounter()), scene_.run().steps() - stepsBefore);
   const double stepping = seconds(now, SDL_GetPerformanceCounter());
   input_.followBody(scene_);
   // A reset or a rewind moves time back: only forward steps count.
@@ -303,7 +408,7 @@ double FrameLoop::runFrame() {
   draw();
   const Uint64 drawEnd = SDL_GetPerformanceCounter();
   // Read the back buffer before the swap leaves its contents undefined.
-  const bool screenshotNow = screenshotRun && frame == screenshotFrame;
+  const bool screenshotNow = screenshotRun && (options_.screenshotAtEnd ? over() : frame == screenshotFrame);
   if (scene_.session().takeScreenshotRequest()) saveRequestedScreenshot();
   if (recording) recordFrame(windowFrames_);
   if (screenshotNow) saveScreenshot(options_.screenshot, window_.width(), window_.height());
@@ -321,6 +426,12 @@ double FrameLoop::runFrame() {
   if (screenshotNow) {
     std::printf("screenshot: %s (%dx%d, frame %lld)\n", options_.screenshot.c_str(), window_.width(),
                 window_.height(), frame);
+    // Where each engine is in the picture, for a reader (or a check) to crop.
+    for (size_t i = 0; lanes_ && i < compareViews_.size(); ++i) {
+      const CompareViews::Rect& r = compareViews_[i];
+      std::printf("view %s: x %d y %d width %d height %d (pixels from the top left)\n",
+                  views_.compare.merged() ? "merged" : lanes_->lanes()[i].engine.c_str(), r.x, r.y, r.width, r.height);
+    }
     printTotals("window", totals_);
     return -1.0;
   }
@@ -357,9 +468,40 @@ int runWindow(AbstractWindow& scene, const RunOptions& options, const std::funct
   return runWindowSwitching(scene, options, nullptr, finish);
 }
 
+namespace {
+
+int runWindowWith(AbstractWindow& first, const RunOptions& options,
+                  const std::function<AbstractWindow&(int direction)>& next, const std::function<int(int)>& finish,
+                  CompareLanes* lanes);
+
+}  // namespace
+
 int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
                        const std::function<AbstractWindow&(int direction)>& next,
                        const std::function<int(int)>& finish) {
+  return runWindowWith(first, options, next, finish, nullptr);
+}
+
+int runCompareWindow(CompareLanes& lanes, const RunOptions& options, const std::function<int(int)>& finish) {
+  return runWindowWith(*lanes.lanes().front().scene, options, nullptr, finish, &lanes);
+}
+
+namespace {
+
+// Built only once the window can run, so that a refused window run (no
+// display, unusable shaders or font) leaves no output file behind; a runner
+// that built them already is fine too. Each other engine's scene with its
+// own options (its engine, its folder).
+void initializeScenes(AbstractWindow& scene, const RunOptions& options, const CompareLanes* lanes) {
+  if (!scene.run().world()) scene.initialize(options);
+  if (!lanes) return;
+  for (const CompareLanes::Lane& lane : lanes->lanes())
+    if (!lane.scene->run().world()) lane.scene->initialize(lane.scene->options());
+}
+
+int runWindowWith(AbstractWindow& first, const RunOptions& options,
+                  const std::function<AbstractWindow&(int direction)>& next, const std::function<int(int)>& finish,
+                  CompareLanes* lanes) {
   const ResourceLookup shaders = findShaderDir(options.shaderDir);
   if (!shaders.ok()) {
     std::fprintf(stderr, "error: shaders not found; tried: %s\n", shaders.triedList().c_str());
@@ -386,13 +528,11 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
     // count the new scene's frames from 1.
     auto player = std::make_unique<EventPlayer>(std::move(script), window->sdlWindow());
 #ifdef __EMSCRIPTEN__
-    // Built only now that the window can run, so that a refused window run
-    // (no display, unusable shaders or font) leaves no output file behind.
-    if (!scene->run().world()) scene->initialize(options);
+    initializeScenes(*scene, options, lanes);
     // The frames outlive this call and the caller's options: they keep a
     // copy for the page's life. A page runs one scene (no switching).
     const RunOptions& frameOptions = *new RunOptions(options);
-    auto loop = std::make_unique<FrameLoop>(*scene, frameOptions, *window, *views, *player, *new long long(0));
+    auto loop = std::make_unique<FrameLoop>(*scene, frameOptions, *window, *views, *player, *new long long(0), lanes);
     // The browser calls the frame back; this function never returns, and
     // what the frames use lives as long as the page.
     FrameLoop* frames = loop.get();
@@ -407,11 +547,8 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
     (void)next;
     long long windowFrames = 0;
     for (;;) {
-      // Built only now that the window can run, so that a refused window run
-      // (no display, unusable shaders or font) leaves no output file behind;
-      // a runner that built it already is fine too.
-      if (!scene->run().world()) scene->initialize(options);
-      FrameLoop loop(*scene, options, *window, *views, *player, windowFrames);
+      initializeScenes(*scene, options, lanes);
+      FrameLoop loop(*scene, options, *window, *views, *player, windowFrames, lanes);
       const int status = loop.run();
       if (!next || !scene->session().switchRequested() || stopSignal() != 0) return finish(status);
       // `next` destroys the scene that ended before it makes the next one.
@@ -435,5 +572,7 @@ int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
     return finish(exit_code::RUNTIME_ERROR);
   }
 }
+
+}  // namespace
 
 }  // namespace odelab

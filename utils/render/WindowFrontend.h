@@ -3,6 +3,7 @@
 #include <functional>
 
 #include "../AbstractWindow.h"
+#include "../CompareLanes.h"
 
 namespace odelab {
 
@@ -33,6 +34,13 @@ int runWindow(AbstractWindow& scene, const RunOptions& options, const std::funct
 int runWindowSwitching(AbstractWindow& first, const RunOptions& options,
                        const std::function<AbstractWindow&(int direction)>& next,
                        const std::function<int(int)>& finish);
+
+// The compare window (--compare without --headless; doc/manual.md,
+// "Engines side by side"): runs the lanes' lead, ODE's scene, as runWindow
+// does, with every other lane's scene (another engine's each) built beside
+// it and following it step for step, each in a view of its own under one
+// camera. `finish` gets the status as with runWindow.
+int runCompareWindow(CompareLanes& lanes, const RunOptions& options, const std::function<int(int)>& finish);
 
 // Reads and checks the --events script only, throwing UsageError like
 // runWindow. For the runner to call before the scene is built, so that a bad

@@ -1,4 +1,4 @@
-// The window side's two entry points for the runner (WindowModule.h): as the
+// The window side's entry points for the runner (WindowModule.h): as the
 // module's one exported symbol where it is loaded at run time, or as
 // windowModule() where it is linked in.
 #include "../WindowModule.h"
@@ -6,7 +6,7 @@
 #include "WindowFrontend.h"
 
 namespace {
-const odelab::WindowModule entry{&odelab::runWindow, &odelab::runWindowSwitching};
+const odelab::WindowModule entry{&odelab::runWindow, &odelab::runWindowSwitching, &odelab::runCompareWindow};
 }  // namespace
 
 #ifdef ODELAB_WINDOW_MODULE

@@ -1,0 +1,120 @@
+#include "CompareLanes.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "OdeMessages.h"
+#include "world/EngineCatalog.h"
+
+namespace odelab {
+
+namespace {
+
+std::string versionOf(const std::string& engine) {
+  for (const world::EngineInfo& info : world::knownEngines())
+    if (info.name == engine) return info.version;
+  return {};
+}
+
+// How much of a new frame's figure the smoothed time per step takes.
+constexpr double SMOOTHING = 0.1;
+// Below this real-time factor the window is behind real time.
+constexpr double BEHIND = 0.99;
+
+void addTiming(double& msPerStep, double seconds, long long steps) {
+  if (steps <= 0) return;
+  const double now = 1000.0 * seconds / static_cast<double>(steps);
+  msPerStep = msPerStep > 0.0 ? (1.0 - SMOOTHING) * msPerStep + SMOOTHING * now : now;
+}
+
+std::string millisecondsText(double ms) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", ms);
+  return text;
+}
+
+}  // namespace
+
+CompareLanes::CompareLanes(AbstractWindow& lead, const std::vector<std::pair<std::string, AbstractWindow*>>& others) {
+  const auto laneOf = [](AbstractWindow* scene, const std::string& engine) {
+    Lane lane;
+    lane.scene = scene;
+    lane.engine = engine;
+    return lane;
+  };
+  lanes_.push_back(laneOf(&lead, "ode"));
+  for (const auto& [engine, scene] : others) lanes_.push_back(laneOf(scene, engine));
+  lead.echoInputs([this](const TimelineEvent& event) {
+    for (size_t i = 1; i < lanes_.size(); ++i)
+      if (lanes_[i].failure.empty()) lanes_[i].scene->applyInput(event);
+  });
+}
+
+CompareLanes::~CompareLanes() { lanes_.front().scene->echoInputs(nullptr); }
+
+void CompareLanes::follow(double leadSeconds, long long leadSteps) {
+  const AbstractWindow& lead = *lanes_.front().scene;
+  const long long target = lead.run().steps();
+  addTiming(lanes_.front().msPerStep, leadSeconds, leadSteps);
+  for (size_t i = 1; i < lanes_.size(); ++i) {
+    Lane& lane = lanes_[i];
+    AbstractWindow& scene = *lane.scene;
+    // R or a rewind took the lead back before this engine failed: it follows again.
+    if (!lane.failure.empty() && target < lane.failedAt) {
+      lane.failure.clear();
+      lane.failedAt = -1;
+      if (scene.run().steps() > target) scene.replayTo(target);
+    }
+    if (!lane.failure.empty()) continue;
+    if (scene.run().steps() > target) scene.replayTo(target);  // a rewind
+    const auto start = std::chrono::steady_clock::now();
+    const long long before = scene.run().steps();
+    try {
+      while (scene.run().steps() < target) {
+        if (!scene.stepOnce()) {
+          lane.failure = scene.run().blowUpReason();
+          break;
+        }
+      }
+    } catch (const OdeError& error) {
+      lane.failure = std::string("ODE error: ") + error.what();
+    } catch (const world::EngineError& error) {
+      lane.failure = error.what();
+    }
+    if (!lane.failure.empty()) lane.failedAt = scene.run().steps() + 1;
+    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    addTiming(lane.msPerStep, took, scene.run().steps() - before);
+    lane.steppingSeconds += took;
+  }
+}
+
+std::vector<std::string> CompareLanes::label(const Lane& lane) const {
+  const AbstractWindow& scene = *lane.scene;
+  const std::string version = versionOf(lane.engine);
+  std::string first = lane.engine + (version.empty() ? "" : " " + version);
+  if (&lane == &lanes_.front()) {
+    first += " (the reference)";
+  } else {
+    first += scene.engine().setting() == world::EngineSetting::Best ? " best" : " default";
+    const size_t notes = scene.engine().translationNotes().size();
+    if (notes) first += "   [" + std::to_string(notes) + (notes == 1 ? " note]" : " notes]");
+  }
+  if (!lane.failure.empty()) return {first, "stopped at step " + std::to_string(lane.failedAt) + ": " + lane.failure};
+  const std::string headline = scene.headline();
+  return headline.empty() ? std::vector<std::string>{first} : std::vector<std::string>{first, headline};
+}
+
+std::string CompareLanes::timingLine() const {
+  std::string line = "step ms:";
+  const Lane* slowest = &lanes_.front();
+  for (const Lane& lane : lanes_) {
+    line += "  " + lane.engine + " " + (lane.failure.empty() ? millisecondsText(lane.msPerStep) : "stopped");
+    if (lane.failure.empty() && lane.msPerStep > slowest->msPerStep) slowest = &lane;
+  }
+  const TimeControl& time = lanes_.front().scene->session().time();
+  if (!time.paused() && time.recentRealTimeFactor() < BEHIND)
+    line += "   (behind real time; slowest: " + slowest->engine + ")";
+  return line;
+}
+
+}  // namespace odelab

@@ -1,0 +1,168 @@
+#include "CompareViews.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "../Box.h"
+#include "../Cylindrical.h"
+#include "../Sphere.h"
+
+namespace odelab {
+
+namespace {
+
+const int MARGIN = 6;  // pixels between a view's edge and its label
+const int LABEL_BOX_ALPHA = 120;
+const int CIRCLE_SEGMENTS = 24;
+
+// The outline colours of the other engines, in the order named, and their names for the labels.
+struct Outline {
+  Rgba color;
+  const char* name;
+};
+const Outline OUTLINES[] = {{{255, 140, 30, 255}, "orange"}, {{40, 220, 255, 255}, "cyan"},
+                            {{255, 60, 200, 255}, "magenta"}, {{250, 240, 60, 255}, "yellow"},
+                            {{120, 255, 90, 255}, "green"}};
+constexpr size_t OUTLINE_COUNT = sizeof OUTLINES / sizeof OUTLINES[0];
+
+// The grid for `count` views: columns, rows.
+void gridFor(size_t count, int& columns, int& rows) {
+  columns = count <= 1 ? 1 : count <= 4 ? 2 : 3;
+  rows = static_cast<int>((count + static_cast<size_t>(columns) - 1) / static_cast<size_t>(columns));
+  if (count == 2) rows = 1;
+}
+
+// A geom's point at `local` (its own frame) in the world.
+glm::vec3 at(dGeomID geom, const glm::vec3& local) {
+  dVector3 world;
+  const dReal* p = dGeomGetPosition(geom);
+  const dReal* r = dGeomGetRotation(geom);
+  for (int row = 0; row < 3; ++row)
+    world[row] = p[row] + r[row * 4] * local.x + r[row * 4 + 1] * local.y + r[row * 4 + 2] * local.z;
+  return {static_cast<float>(world[0]), static_cast<float>(world[1]), static_cast<float>(world[2])};
+}
+
+// A circle of `radius` about the geom's `axis` (0, 1, 2) at `offset` along it.
+void circle(VertexList& list, dGeomID geom, int axis, float radius, float offset, Rgba color) {
+  const float step = 2.0f * 3.14159265f / CIRCLE_SEGMENTS;
+  auto point = [&](int i) {
+    glm::vec3 local(0.0f);
+    local[(axis + 1) % 3] = radius * std::cos(step * static_cast<float>(i));
+    local[(axis + 2) % 3] = radius * std::sin(step * static_cast<float>(i));
+    local[axis] = offset;
+    return at(geom, local);
+  };
+  for (int i = 0; i < CIRCLE_SEGMENTS; ++i) list.line(point(i), point(i + 1), color);
+}
+
+void outline(VertexList& list, const AbstractObject& object, Rgba color) {
+  const dGeomID geom = object.getGeom();
+  switch (object.shape()) {
+    case Shape::Box: {
+      dVector3 sides;
+      static_cast<const Box&>(object).sides(sides);
+      const glm::vec3 half(sides[0] / 2, sides[1] / 2, sides[2] / 2);
+      auto corner = [&](int i) {
+        return at(geom, {i & 1 ? half.x : -half.x, i & 2 ? half.y : -half.y, i & 4 ? half.z : -half.z});
+      };
+      // The 12 edges: corners that differ in one bit.
+      for (int i = 0; i < 8; ++i)
+        for (int bit = 1; bit < 8; bit <<= 1)
+          if (!(i & bit)) list.line(corner(i), corner(i | bit), color);
+      break;
+    }
+    case Shape::Sphere: {
+      const float radius = static_cast<float>(static_cast<const Sphere&>(object).radius());
+      for (int axis = 0; axis < 3; ++axis) circle(list, geom, axis, radius, 0.0f, color);
+      break;
+    }
+    case Shape::Capsule:
+    case Shape::Cylinder: {
+      double radius, length;
+      static_cast<const Cylindrical&>(object).dimensions(radius, length);
+      const float r = static_cast<float>(radius), half = static_cast<float>(length / 2);
+      for (const float end : {-half, half}) circle(list, geom, 2, r, end, color);
+      for (int i = 0; i < 4; ++i) {
+        const float angle = 3.14159265f / 2 * static_cast<float>(i);
+        const float x = r * std::cos(angle), y = r * std::sin(angle);
+        list.line(at(geom, {x, y, -half}), at(geom, {x, y, half}), color);
+      }
+      break;
+    }
+    case Shape::Plane:
+      break;  // the ground is every engine's
+  }
+}
+
+}  // namespace
+
+CompareViews::CompareViews(const std::string& shaderDir) : program_(shaderDir) {}
+
+std::vector<CompareViews::Rect> CompareViews::layout(const CompareLanes& lanes, int top, int width, int height) const {
+  const size_t count = merged_ ? 1 : lanes.lanes().size();
+  int columns = 1, rows = 1;
+  gridFor(count, columns, rows);
+  std::vector<Rect> views;
+  for (size_t i = 0; i < count; ++i) {
+    const int column = static_cast<int>(i) % columns, row = static_cast<int>(i) / columns;
+    // Edges at whole fractions of the area, so the views tile it without gaps.
+    const int left = width * column / columns, right = width * (column + 1) / columns;
+    const int upper = height * row / rows, lower = height * (row + 1) / rows;
+    // One pixel of sky between views keeps them apart.
+    const int gap = count > 1 ? 1 : 0;
+    views.push_back({left, top + upper, std::max(1, right - left - gap), std::max(1, lower - upper - gap)});
+  }
+  return views;
+}
+
+void CompareViews::drawLabels(const CompareLanes& lanes, const std::vector<Rect>& views, HudText& text,
+                              int windowWidth, int windowHeight) {
+  const std::vector<CompareLanes::Lane>& all = lanes.lanes();
+  const size_t blocks = merged_ ? 1 : all.size();
+  while (labels_.size() < blocks) {
+    // Small and see-through: the label sits over the view's sky.
+    labels_.push_back(std::make_unique<TextBlock>(LABEL_BOX_ALPHA));
+    labels_.back()->useSmallFont(true);
+  }
+  for (size_t i = 0; i < blocks; ++i) {
+    std::vector<std::string> lines;
+    for (size_t lane = merged_ ? 0 : i; lane < (merged_ ? all.size() : i + 1); ++lane) {
+      std::vector<std::string> label = lanes.label(all[lane]);
+      if (merged_)
+        label.front() = (lane == 0 ? std::string("solid: ") : std::string(OUTLINES[(lane - 1) % OUTLINE_COUNT].name) + ": ") +
+                        label.front();
+      lines.insert(lines.end(), label.begin(), label.end());
+    }
+    text.prepare(*labels_[i], lines, views[i].width - 2 * MARGIN);
+    text.drawAt(*labels_[i], views[i].x + MARGIN, views[i].y + MARGIN, windowWidth, windowHeight);
+  }
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+}
+
+void CompareViews::drawOutlines(const CompareLanes& lanes, const glm::mat4& viewProjection) {
+  outlines_.clear();
+  const std::vector<CompareLanes::Lane>& all = lanes.lanes();
+  for (size_t lane = 1; lane < all.size(); ++lane) {
+    if (!all[lane].failure.empty()) continue;
+    const Rgba color = OUTLINES[(lane - 1) % OUTLINE_COUNT].color;
+    for (const auto& object : all[lane].scene->run().objects())
+      if (object->visible) outline(outlines_, *object, color);
+  }
+  if (outlines_.size() == 0) return;
+  stream_.upload(outlines_);
+  program_.use(viewProjection);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);  // over ODE's bodies: a body inside another shows
+  stream_.draw(GL_LINES, 0, outlines_.size());
+  glEnable(GL_DEPTH_TEST);
+}
+
+std::string CompareViews::hudLine() const {
+  return merged_ ? "compare: others as outlines over ODE (M: side by side)"
+                 : "compare: a view per engine (M: outlines over ODE)";
+}
+
+std::string CompareViews::helpLine() { return "M            compare: one view per engine / merged (outlines over ODE's)"; }
+
+}  // namespace odelab

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "../CompareLanes.h"
+#include "HudText.h"
+#include "Lines.h"
+
+namespace odelab {
+
+// Where a compare window draws: one view per engine in a grid (two side by
+// side, then two by two, then three by two), ODE's top left; or, merged (M),
+// ODE's view alone with every other engine's bodies as outlines over it, so
+// a drift shows at once. Each view carries its label (CompareLanes::label).
+class CompareViews {
+ public:
+  // A view in window pixels from the top left.
+  struct Rect {
+    int x, y, width, height;
+  };
+
+  explicit CompareViews(const std::string& shaderDir);
+
+  // The views of a scene area width x height (below the HUD's strip, which
+  // is `top` pixels high): one per lane, or one when merged.
+  std::vector<Rect> layout(const CompareLanes& lanes, int top, int width, int height) const;
+  bool merged() const { return merged_; }
+  void toggleMerged() { merged_ = !merged_; }
+
+  // Each lane's label at the top left of its view (merged: every label in
+  // one column, each in its engine's colour as a heading). `windowWidth` x
+  // `windowHeight` is the whole window, the viewport when this is called.
+  void drawLabels(const CompareLanes& lanes, const std::vector<Rect>& views, HudText& text, int windowWidth,
+                  int windowHeight);
+  // Merged: every other lane's bodies as outlines in its colour, drawn over
+  // ODE's view with `viewProjection`; the viewport is that view's.
+  void drawOutlines(const CompareLanes& lanes, const glm::mat4& viewProjection);
+
+  // A line for the HUD: the layout and its key.
+  std::string hudLine() const;
+  // The key's line for the help.
+  static std::string helpLine();
+
+ private:
+  LineProgram program_;
+  VertexStream stream_;
+  VertexList outlines_;
+  std::vector<std::unique_ptr<TextBlock>> labels_;
+  bool merged_ = false;
+};
+
+}  // namespace odelab
