@@ -20,9 +20,11 @@ struct Outline {
   Rgba color;
   const char* name;
 };
-const Outline OUTLINES[] = {{{255, 140, 30, 255}, "orange"}, {{40, 220, 255, 255}, "cyan"},
-                            {{255, 60, 200, 255}, "magenta"}, {{250, 240, 60, 255}, "yellow"},
-                            {{120, 255, 90, 255}, "green"}};
+// See-through, so that ODE's solid bodies show under where the others agree.
+const std::uint8_t OUTLINE_ALPHA = 110;
+const Outline OUTLINES[] = {{{255, 140, 30, OUTLINE_ALPHA}, "orange"}, {{40, 220, 255, OUTLINE_ALPHA}, "cyan"},
+                            {{255, 60, 200, OUTLINE_ALPHA}, "magenta"}, {{250, 240, 60, OUTLINE_ALPHA}, "yellow"},
+                            {{120, 255, 90, OUTLINE_ALPHA}, "green"}};
 constexpr size_t OUTLINE_COUNT = sizeof OUTLINES / sizeof OUTLINES[0];
 
 // The grid for `count` views: columns, rows.
@@ -154,8 +156,30 @@ void CompareViews::drawOutlines(const CompareLanes& lanes, const glm::mat4& view
   program_.use(viewProjection);
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);  // over ODE's bodies: a body inside another shows
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   stream_.draw(GL_LINES, 0, outlines_.size());
+  glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
+}
+
+std::vector<LivePlot::Curve> CompareViews::curves(const CompareLanes& lanes) const {
+  std::vector<LivePlot::Curve> curves;
+  const std::vector<CompareLanes::Lane>& all = lanes.lanes();
+  for (size_t lane = 1; lane < all.size(); ++lane) {
+    Rgba color = OUTLINES[(lane - 1) % OUTLINE_COUNT].color;
+    color.a = 255;
+    curves.push_back({&all[lane].scene->session().chart(), color});
+  }
+  return curves;
+}
+
+std::string CompareViews::legend(const CompareLanes& lanes) const {
+  const std::vector<CompareLanes::Lane>& all = lanes.lanes();
+  std::string text = all.front().engine + " blue";
+  for (size_t lane = 1; lane < all.size(); ++lane)
+    text += ", " + all[lane].engine + " " + OUTLINES[(lane - 1) % OUTLINE_COUNT].name;
+  return text;
 }
 
 std::string CompareViews::hudLine() const {

@@ -9,6 +9,7 @@
 #include "../CompareLanes.h"
 #include "HudText.h"
 #include "Lines.h"
+#include "LivePlot.h"
 
 namespace odelab {
 
@@ -39,6 +40,11 @@ class CompareViews {
   // Merged: every other lane's bodies as outlines in its colour, drawn over
   // ODE's view with `viewProjection`; the viewport is that view's.
   void drawOutlines(const CompareLanes& lanes, const glm::mat4& viewProjection);
+
+  // The live plot (L): every other engine's curve in its colour, and the
+  // legend naming each engine's colour (ODE's is the plot's own).
+  std::vector<LivePlot::Curve> curves(const CompareLanes& lanes) const;
+  std::string legend(const CompareLanes& lanes) const;
 
   // A line for the HUD: the layout and its key.
   std::string hudLine() const;

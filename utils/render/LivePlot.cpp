@@ -20,8 +20,17 @@ const int AXIS_LABEL_LINES = 5;
 const Rgba BACKGROUND{12, 14, 18, 185};
 const Rgba FRAME_COLOR{120, 130, 145, 255};
 const Rgba ZERO_COLOR{80, 88, 100, 255};
-const Rgba CURVE_COLOR{110, 220, 255, 255};
 const Rgba CHANGE_COLOR{255, 190, 70, 255};  // where a setting changed
+
+// What the others' curves have drawn: their sample counts and last times summed.
+double othersSignature(const std::vector<LivePlot::Curve>& others) {
+  double sum = 0.0;
+  for (const LivePlot::Curve& curve : others) {
+    sum += static_cast<double>(curve.chart->samples().size());
+    if (!curve.chart->samples().empty()) sum += curve.chart->samples().back().time;
+  }
+  return sum;
+}
 
 std::string number(double value) {
   char text[32];
@@ -33,7 +42,8 @@ std::string number(double value) {
 
 LivePlot::LivePlot(const std::string& shaderDir) : program_(shaderDir) {}
 
-void LivePlot::rebuild(const StripChart& chart, int viewportWidth, int viewportHeight, int lineSkip) {
+void LivePlot::rebuild(const StripChart& chart, const std::vector<Curve>& others, int viewportWidth,
+                       int viewportHeight, int lineSkip) {
   const auto& samples = chart.samples();
   boxWidth_ = std::max(MIN_BOX_WIDTH, title_.width() + 2 * PADDING);
   boxHeight_ = std::max(MIN_BOX_HEIGHT, 11 * lineSkip);
@@ -51,6 +61,12 @@ void LivePlot::rebuild(const StripChart& chart, int viewportWidth, int viewportH
       low = std::min(low, s.value);
       high = std::max(high, s.value);
     }
+  for (const Curve& curve : others)
+    for (const auto& s : curve.chart->samples())
+      if (std::isfinite(s.value)) {
+        low = std::min(low, s.value);
+        high = std::max(high, s.value);
+      }
   if (!(low <= high)) low = high = 0.0;
   if (high - low < 1e-12 * std::max(1.0, std::fabs(high))) {
     const double pad = high != 0.0 ? std::fabs(high) * 0.1 : 1.0;
@@ -91,13 +107,8 @@ void LivePlot::rebuild(const StripChart& chart, int viewportWidth, int viewportH
     // A setting changed (key or panel) at these times: a vertical mark.
     for (const double time : chart.changes())
       if (time >= t0 && time <= t1) vertices_.line({xOf(time), top, 0}, {xOf(time), bottom, 0}, CHANGE_COLOR);
-    // Segments between neighbouring finite samples: a non-finite one leaves a gap.
-    for (std::size_t i = 1; i < samples.size(); ++i) {
-      const auto& a = samples[i - 1];
-      const auto& b = samples[i];
-      if (!std::isfinite(a.value) || !std::isfinite(b.value)) continue;
-      vertices_.line({xOf(a.time), yOf(a.value), 0}, {xOf(b.time), yOf(b.value), 0}, CURVE_COLOR);
-    }
+    addCurve(chart, CURVE_COLOR, t0, span);
+    for (const Curve& curve : others) addCurve(*curve.chart, curve.color, t0, span);
   }
   lineCount_ = vertices_.size() - backgroundCount_;
   stream_.upload(vertices_);
@@ -106,21 +117,45 @@ void LivePlot::rebuild(const StripChart& chart, int viewportWidth, int viewportH
   builtChanges_ = chart.changes().size();
   builtFirst_ = samples.empty() ? 0.0 : samples.front().time;
   builtLast_ = samples.empty() ? 0.0 : samples.back().time;
+  builtOthers_ = othersSignature(others);
   builtWidth_ = viewportWidth;
   builtHeight_ = viewportHeight;
   builtBoxWidth_ = title_.width();
 }
 
-void LivePlot::draw(const StripChart& chart, HudText& text, int viewportWidth, int viewportHeight) {
+// Segments between neighbouring finite samples within the time axis (t0 and
+// its span, the leading chart's): a non-finite one leaves a gap.
+void LivePlot::addCurve(const StripChart& chart, Rgba color, double t0, double span) {
+  const float left = static_cast<float>(plotLeft_), right = static_cast<float>(plotRight_);
+  const float top = static_cast<float>(plotTop_), bottom = static_cast<float>(plotBottom_);
+  const double t1 = t0 + span;
+  auto xOf = [&](double time) { return left + static_cast<float>((time - t0) / span) * (right - left); };
+  auto yOf = [&](double value) {
+    return bottom - static_cast<float>((value - minValue_) / (maxValue_ - minValue_)) * (bottom - top);
+  };
+  const auto& samples = chart.samples();
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    const auto& a = samples[i - 1];
+    const auto& b = samples[i];
+    if (!std::isfinite(a.value) || !std::isfinite(b.value) || a.time < t0 || b.time > t1) continue;
+    vertices_.line({xOf(a.time), yOf(a.value), 0}, {xOf(b.time), yOf(b.value), 0}, color);
+  }
+}
+
+void LivePlot::draw(const StripChart& chart, HudText& text, int viewportWidth, int viewportHeight,
+                    const std::vector<Curve>& others, const std::string& legend) {
   const auto& samples = chart.samples();
   std::string latest = "no samples yet";
   if (!samples.empty()) latest = "latest " + number(samples.back().value) + "  at t = " + number(samples.back().time) + " s";
-  text.prepare(title_, {chart.label.empty() ? std::string("live plot") : chart.label, latest});
+  std::vector<std::string> title{chart.label.empty() ? std::string("live plot") : chart.label, latest};
+  if (!legend.empty()) title.push_back(legend);
+  text.prepare(title_, title);
 
   const bool changed = samples.size() != builtSamples_ || chart.changes().size() != builtChanges_ ||
-                       (!samples.empty() && (samples.front().time != builtFirst_ || samples.back().time != builtLast_));
+                       (!samples.empty() && (samples.front().time != builtFirst_ || samples.back().time != builtLast_)) ||
+                       othersSignature(others) != builtOthers_;
   if (changed || viewportWidth != builtWidth_ || viewportHeight != builtHeight_ || title_.width() != builtBoxWidth_)
-    rebuild(chart, viewportWidth, viewportHeight, text.lineSkip());
+    rebuild(chart, others, viewportWidth, viewportHeight, text.lineSkip());
 
   text.prepare(maxLabel_, {number(maxValue_)});
   text.prepare(minLabel_, {number(minValue_)});

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "../StripChart.h"
 #include "HudText.h"
@@ -18,10 +19,21 @@ class LivePlot {
  public:
   explicit LivePlot(const std::string& shaderDir);
 
-  void draw(const StripChart& chart, HudText& text, int viewportWidth, int viewportHeight);
+  // A curve beside the chart's, on the same axes: a compare window's other engines.
+  struct Curve {
+    const StripChart* chart;
+    Rgba color;
+  };
+  // `others` are drawn over the chart's curve, each in its colour, and
+  // `legend` (one line, "" for none) is shown under the title.
+  void draw(const StripChart& chart, HudText& text, int viewportWidth, int viewportHeight,
+            const std::vector<Curve>& others = {}, const std::string& legend = "");
+  static constexpr Rgba CURVE_COLOR{110, 220, 255, 255};
 
  private:
-  void rebuild(const StripChart& chart, int viewportWidth, int viewportHeight, int lineSkip);
+  void rebuild(const StripChart& chart, const std::vector<Curve>& others, int viewportWidth, int viewportHeight,
+               int lineSkip);
+  void addCurve(const StripChart& chart, Rgba color, double t0, double span);
 
   LineProgram program_;
   VertexStream stream_;
@@ -31,6 +43,7 @@ class LivePlot {
   std::size_t builtSamples_ = static_cast<std::size_t>(-1);
   std::size_t builtChanges_ = 0;
   double builtFirst_ = 0.0, builtLast_ = 0.0;
+  double builtOthers_ = 0.0;  // the others' sample counts and last times, summed
   int builtWidth_ = 0, builtHeight_ = 0, builtBoxWidth_ = 0;
   // Layout of the last build, in window pixels.
   int boxX_ = 0, boxY_ = 0, boxWidth_ = 0, boxHeight_ = 0;

@@ -299,7 +299,11 @@ void FrameLoop::draw() {
   glViewport(0, 0, width, height);
   views_.text.drawHud(width, height);
   const ViewFlags& flags = scene_.session().viewFlags();
-  if (flags.plot) views_.plot.draw(scene_.session().chart(), views_.text, width, height);
+  if (flags.plot && lanes_)
+    views_.plot.draw(scene_.session().chart(), views_.text, width, height, views_.compare.curves(*lanes_),
+                     views_.compare.legend(*lanes_));
+  else if (flags.plot)
+    views_.plot.draw(scene_.session().chart(), views_.text, width, height);
   drawNotice(width, height);
   views_.panel.draw(scene_, windowWidth, height);
   // The help is read, not worked beside: it takes the whole window, over

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The compare window's pictures in doc/screenshots: test5 (plates dropped
+# onto a stack) and test10 (cubes launched at a thin wall) on ODE and three
+# other engines, at 1280x720 and 1024x768, and test5 merged (M: the others
+# as outlines over ODE's stack) at 1280x720. Each is the run's last frame
+# (--screenshot with --seconds). Files: OUT_DIR/compare_<program>_<size>.png
+# and compare_test5_1280x720_merged.png, reduced to 256 colours with
+# pngquant where it is installed.
+#
+#   scripts/compare_screenshots.sh [OUT_DIR]   (default: doc/screenshots)
+#
+# Environment: BUILD_DIR (default: build), ENGINES (default: bullet,havok,jolt;
+# Havok's thesis comparison beside two others). Needs xvfb-run and the
+# engines named (testN --list-engines).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build_dir=${BUILD_DIR:-$root/build}
+engines=${ENGINES:-bullet,havok,jolt}
+out=${1:-$root/doc/screenshots}
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+
+if [ -z "${ODELAB_SCREENSHOTS_INNER:-}" ]; then
+  command -v xvfb-run >/dev/null || { echo "compare_screenshots: xvfb-run not found (apt-get install xvfb xauth)" >&2; exit 1; }
+  ODELAB_SCREENSHOTS_INNER=1 BUILD_DIR=$build_dir ENGINES=$engines exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$out"
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "2 key B" >"$work/launch.events"
+echo "1 key M" >"$work/merge.events"
+
+# shot NAME SIZE PROGRAM ARGS...: the program's compare window, its last frame saved as NAME.
+shot() {
+  local name=$1 size=$2 program=$3
+  shift 3
+  local file=$out/$name.png
+  "$build_dir/tests/$program" --compare "$engines" --width "${size%x*}" --height "${size#*x}" --screenshot "$file" \
+    --out-dir "$work" "$@" >"$work/$name.log" 2>&1 || { echo "compare_screenshots: $name failed:" >&2; cat "$work/$name.log" >&2; exit 1; }
+  if command -v pngquant >/dev/null; then pngquant --force --quality 60-90 --speed 3 --output "$file" "$file" || true; fi
+  echo "$file"
+}
+
+# test5: 40 plates, one every 0.25 s, and a second for the last to settle.
+plates=(--spawn-interval 0.25 --plates 40 --seconds 11)
+# test10: one cube launched at 600 m/s (B), half a second after.
+launch=(--velocity 600 --events "$work/launch.events" --seconds 0.5)
+for size in 1280x720 1024x768; do
+  shot "compare_test5_$size" "$size" test5 "${plates[@]}"
+  shot "compare_test10_$size" "$size" test10 "${launch[@]}"
+done
+shot compare_test5_1280x720_merged 1280x720 test5 "${plates[@]}" --events "$work/merge.events"
