@@ -44,9 +44,19 @@ CompareLanes::CompareLanes(AbstractWindow& lead, const std::vector<std::pair<std
   };
   lanes_.push_back(laneOf(&lead, "ode"));
   for (const auto& [engine, scene] : others) lanes_.push_back(laneOf(scene, engine));
+  // Every lane takes every input, one that stopped too: R or a knob then
+  // holds when a rewind or a reset brings it back.
   lead.echoInputs([this](const TimelineEvent& event) {
-    for (size_t i = 1; i < lanes_.size(); ++i)
-      if (lanes_[i].failure.empty()) lanes_[i].scene->applyInput(event);
+    for (size_t i = 1; i < lanes_.size(); ++i) {
+      Lane& lane = lanes_[i];
+      try {
+        lane.scene->applyInput(event);
+      } catch (const OdeError& error) {
+        stop(lane, std::string("ODE error: ") + error.what());
+      } catch (const world::EngineError& error) {
+        stop(lane, error.what());
+      }
+    }
   });
 }
 
@@ -56,14 +66,16 @@ void CompareLanes::follow(double leadSeconds, long long leadSteps) {
   const AbstractWindow& lead = *lanes_.front().scene;
   const long long target = lead.run().steps();
   addTiming(lanes_.front().msPerStep, leadSeconds, leadSteps);
+  lanes_.front().steppingSeconds += leadSeconds;
   for (size_t i = 1; i < lanes_.size(); ++i) {
     Lane& lane = lanes_[i];
     AbstractWindow& scene = *lane.scene;
-    // R or a rewind took the lead back before this engine failed: it follows again.
+    // R or a rewind took the lead back before the step this engine failed
+    // on: it follows again, from its own record.
     if (!lane.failure.empty() && target < lane.failedAt) {
       lane.failure.clear();
       lane.failedAt = -1;
-      if (scene.run().steps() > target) scene.replayTo(target);
+      scene.replayTo(target);
     }
     if (!lane.failure.empty()) continue;
     if (scene.run().steps() > target) scene.replayTo(target);  // a rewind
@@ -72,20 +84,25 @@ void CompareLanes::follow(double leadSeconds, long long leadSteps) {
     try {
       while (scene.run().steps() < target) {
         if (!scene.stepOnce()) {
-          lane.failure = scene.run().blowUpReason();
+          stop(lane, scene.run().blowUpReason());
           break;
         }
       }
     } catch (const OdeError& error) {
-      lane.failure = std::string("ODE error: ") + error.what();
+      stop(lane, std::string("ODE error: ") + error.what());
     } catch (const world::EngineError& error) {
-      lane.failure = error.what();
+      stop(lane, error.what());
     }
-    if (!lane.failure.empty()) lane.failedAt = scene.run().steps() + 1;
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     addTiming(lane.msPerStep, took, scene.run().steps() - before);
     lane.steppingSeconds += took;
   }
+}
+
+void CompareLanes::stop(Lane& lane, const std::string& why) {
+  if (!lane.failure.empty()) return;  // the first reason stands
+  lane.failure = why;
+  lane.failedAt = lane.scene->run().steps();
 }
 
 std::vector<std::string> CompareLanes::label(const Lane& lane) const {

@@ -21,7 +21,7 @@ class CompareLanes {
     AbstractWindow* scene = nullptr;
     std::string engine;  // "ode", "bullet", ...
     // Why this engine stopped following (a blow-up, a non-finite state, an
-    // ODE error), and at which step; "" while it follows.
+    // ODE error), and the step it failed on; "" while it follows.
     std::string failure;
     long long failedAt = -1;
     // Wall milliseconds a step of this engine takes (its scene's stepOnce,
@@ -50,6 +50,8 @@ class CompareLanes {
   std::string timingLine() const;
 
  private:
+  void stop(Lane& lane, const std::string& why);
+
   std::vector<Lane> lanes_;
 };
 

@@ -56,6 +56,8 @@ struct FrameTotals {
   double seconds = 0.0;
   double busySeconds = 0.0;
   double longestFrame = 0.0;  // seconds, from one frame's start to the next's
+  double drawSeconds = 0.0;   // drawing and the swap
+  double loopSeconds = 0.0;   // from the first frame's start to the last one's end
 };
 
 // Also the process's CPU time so far (all threads: Mesa's software renderer
@@ -66,6 +68,17 @@ void printTotals(const char* what, const FrameTotals& t) {
       what, t.frames, t.seconds, t.seconds > 0 ? static_cast<double>(t.frames) / t.seconds : 0.0,
       t.frames > 0 ? 1000.0 * t.busySeconds / static_cast<double>(t.frames) : 0.0, 1000.0 * t.longestFrame,
       static_cast<double>(std::clock()) / CLOCKS_PER_SEC);
+  std::fflush(stdout);
+}
+
+// A compare window's totals (the compare benchmark reads them): each
+// engine's stepping (its steps, its measurement and, for another engine,
+// the transfers), and the drawing.
+void printCompareTotals(const CompareLanes* lanes, const FrameTotals& t) {
+  if (!lanes) return;
+  std::printf("compare: %lld frames in %.3f s; stepping s:", t.frames, t.loopSeconds);
+  for (const CompareLanes::Lane& lane : lanes->lanes()) std::printf(" %s %.3f", lane.engine.c_str(), lane.steppingSeconds);
+  std::printf("; drawing s: %.3f (the swap included)\n", t.drawSeconds);
   std::fflush(stdout);
 }
 
@@ -146,6 +159,7 @@ class FrameLoop {
   // one a held mouse button began in: a drag stays in its view.
   std::vector<CompareViews::Rect> compareViews_;
   int heldView_ = -1;
+  Uint64 firstFrameStart_ = 0;
   bool idle() const;
   double seconds(Uint64 from, Uint64 to) const { return static_cast<double>(to - from) / ticksPerSecond_; }
 
@@ -426,6 +440,9 @@ double FrameLoop::runFrame() {
   profile_.add(scene_.run().collideWallSeconds() - collideBefore, stepping, seconds(drawStart, drawEnd),
                seconds(drawEnd, swapped), elapsed);
   totals_.busySeconds += busy;
+  totals_.drawSeconds += seconds(drawStart, swapped);
+  if (frame == 1) firstFrameStart_ = start;
+  totals_.loopSeconds = seconds(firstFrameStart_, swapped);
   scene_.session().time().endFrame(elapsed, advanced, stepping, busy, period_);
   if (screenshotNow) {
     std::printf("screenshot: %s (%dx%d, frame %lld)\n", options_.screenshot.c_str(), window_.width(),
@@ -437,6 +454,7 @@ double FrameLoop::runFrame() {
                   views_.compare.merged() ? "merged" : lanes_->lanes()[i].engine.c_str(), r.x, r.y, r.width, r.height);
     }
     printTotals("window", totals_);
+    printCompareTotals(lanes_, totals_);
     return -1.0;
   }
   return busy;
@@ -444,7 +462,10 @@ double FrameLoop::runFrame() {
 
 bool FrameLoop::over() const { return finished(scene_, options_); }
 
-void FrameLoop::end() const { printTotals("window", totals_); }
+void FrameLoop::end() const {
+  printTotals("window", totals_);
+  printCompareTotals(lanes_, totals_);
+}
 
 int FrameLoop::run() {
   while (!over()) {
