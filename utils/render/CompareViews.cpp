@@ -14,6 +14,11 @@ namespace {
 const int MARGIN = 6;  // pixels between a view's edge and its label
 const int LABEL_BOX_ALPHA = 120;
 const int CIRCLE_SEGMENTS = 24;
+// Merged, a body is outlined only where it is this far from ODE's body of
+// the same index (in the world every engine shares): where they agree there
+// is nothing to draw, and where one drifts, it shows.
+const double APART_METRES = 0.005;
+const double APART_DEGREES = 1.0;
 
 // The outline colours of the other engines, in the order named, and their names for the labels.
 struct Outline {
@@ -55,6 +60,23 @@ void circle(VertexList& list, dGeomID geom, int axis, float radius, float offset
     return at(geom, local);
   };
   for (int i = 0; i < CIRCLE_SEGMENTS; ++i) list.line(point(i), point(i + 1), color);
+}
+
+// Whether two geoms' poses differ by more than APART_METRES or APART_DEGREES.
+bool apart(dGeomID a, dGeomID b) {
+  const dReal* p = dGeomGetPosition(a);
+  const dReal* q = dGeomGetPosition(b);
+  const double distance = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                    (p[2] - q[2]) * (p[2] - q[2]));
+  if (distance > APART_METRES) return true;
+  // The angle between them from the trace of Ra^T Rb (ODE's 3x4 rows).
+  const dReal* r = dGeomGetRotation(a);
+  const dReal* t = dGeomGetRotation(b);
+  double trace = 0.0;
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 3; ++column) trace += r[row * 4 + column] * t[row * 4 + column];
+  const double angle = std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979;
+  return angle > APART_DEGREES;
 }
 
 void outline(VertexList& list, const AbstractObject& object, Rgba color) {
@@ -148,8 +170,14 @@ void CompareViews::drawOutlines(const CompareLanes& lanes, const glm::mat4& view
   for (size_t lane = 1; lane < all.size(); ++lane) {
     if (!all[lane].failure.empty()) continue;
     const Rgba color = OUTLINES[(lane - 1) % OUTLINE_COUNT].color;
-    for (const auto& object : all[lane].scene->run().objects())
-      if (object->visible) outline(outlines_, *object, color);
+    const auto& ode = all.front().scene->run().objects();
+    const auto& theirs = all[lane].scene->run().objects();
+    for (size_t i = 0; i < theirs.size(); ++i) {
+      const AbstractObject& object = *theirs[i];
+      if (!object.visible || object.isFixed()) continue;
+      const bool matched = i < ode.size() && ode[i]->shape() == object.shape();
+      if (!matched || apart(ode[i]->getGeom(), object.getGeom())) outline(outlines_, object, color);
+    }
   }
   if (outlines_.size() == 0) return;
   stream_.upload(outlines_);
@@ -183,10 +211,13 @@ std::string CompareViews::legend(const CompareLanes& lanes) const {
 }
 
 std::string CompareViews::hudLine() const {
-  return merged_ ? "compare: others as outlines over ODE (M: side by side)"
+  return merged_ ? "compare: others outlined where 5 mm or 1 deg from ODE's (M: views)"
                  : "compare: a view per engine (M: outlines over ODE)";
 }
 
-std::string CompareViews::helpLine() { return "M            compare: one view per engine / merged (outlines over ODE's)"; }
+std::string CompareViews::helpLine() {
+  return "M            compare: one view per engine / merged: ODE's bodies, and each other engine's outlined where "
+         "it is 5 mm or 1 degree from ODE's";
+}
 
 }  // namespace odelab

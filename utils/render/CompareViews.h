@@ -15,8 +15,9 @@ namespace odelab {
 
 // Where a compare window draws: one view per engine in a grid (two side by
 // side, then two by two, then three by two), ODE's top left; or, merged (M),
-// ODE's view alone with every other engine's bodies as outlines over it, so
-// a drift shows at once. Each view carries its label (CompareLanes::label).
+// ODE's view alone with every other engine's bodies outlined over it where
+// they are apart from ODE's, so a drift shows at once. Each view carries
+// its label (CompareLanes::label).
 class CompareViews {
  public:
   // A view in window pixels from the top left.
@@ -37,8 +38,9 @@ class CompareViews {
   // `windowHeight` is the whole window, the viewport when this is called.
   void drawLabels(const CompareLanes& lanes, const std::vector<Rect>& views, HudText& text, int windowWidth,
                   int windowHeight);
-  // Merged: every other lane's bodies as outlines in its colour, drawn over
-  // ODE's view with `viewProjection`; the viewport is that view's.
+  // Merged: every other lane's moving bodies that are apart from ODE's body
+  // of the same index, outlined in its colour over ODE's view with
+  // `viewProjection`; the viewport is that view's.
   void drawOutlines(const CompareLanes& lanes, const glm::mat4& viewProjection);
 
   // The live plot (L): every other engine's curve in its colour, and the

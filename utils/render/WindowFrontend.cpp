@@ -553,6 +553,7 @@ int runWindowWith(AbstractWindow& first, const RunOptions& options,
     // count the new scene's frames from 1.
     auto player = std::make_unique<EventPlayer>(std::move(script), window->sdlWindow());
 #ifdef __EMSCRIPTEN__
+    (void)next;
     initializeScenes(*scene, options, lanes);
     // The frames outlive this call and the caller's options: they keep a
     // copy for the page's life. A page runs one scene (no switching).
