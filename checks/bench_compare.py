@@ -18,21 +18,18 @@ A configuration whose engines are not all here is named and left out. It
 prints figures; it judges nothing. The machine's load average is printed
 at the start and the end, and written to the CSV's rows."""
 
-import argparse
-import csv
 import datetime
 import json
 import os
 import re
 import shutil
-import statistics
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_engine_overhead import available_engines  # noqa: E402
+from bench_engine_overhead import available_engines, spread, timing_options, write_rows  # noqa: E402
 
 SCENES = {"test2": [], "test5": ["--spawn-interval", "0.25", "--plates", "40"], "test9": []}
 ENGINE_SETS = {2: ["bullet"], 4: ["bullet", "mujoco", "jolt"], 6: ["bullet", "mujoco", "havok", "jolt", "rapier"]}
@@ -62,21 +59,8 @@ def one_run(program, scene_args, engines, seconds, folder):
     return frames / wall, m["ode.real_time_factor"], m["ode.dropped_steps"], shares, inside
 
 
-def spread(values):
-    return statistics.median(values), min(values), max(values)
-
-
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--build", default=str(Path(__file__).resolve().parents[1] / "build"))
-    parser.add_argument("--seconds", type=float, default=3.0, help="simulated seconds per run (default 3)")
-    parser.add_argument("--repeats", type=int, default=5, help="interleaved runs per configuration, at least 5")
-    parser.add_argument("--csv", help="also write the figures to this CSV file")
-    options = parser.parse_args()
-    if options.repeats < 5:
-        parser.error("--repeats: at least 5 (a timing figure is the median and range of five runs or more)")
-    if not options.seconds > 0:
-        parser.error("--seconds: must be > 0")
+    parser, options = timing_options(__doc__.split("\n\n")[0], 3.0)
     if not os.environ.get("DISPLAY"):
         xvfb = shutil.which("xvfb-run")
         if not xvfb:
@@ -122,10 +106,7 @@ def main():
                              load_start=f"{load[0]:.2f}", load_end=f"{end[0]:.2f}",
                              date=datetime.date.today().isoformat()))
     if options.csv and rows:
-        with open(options.csv, "w", newline="") as out:
-            writer = csv.DictWriter(out, fieldnames=list(rows[0]))
-            writer.writeheader()
-            writer.writerows(rows)
+        write_rows(options.csv, rows)
     return 0
 
 

@@ -16,12 +16,16 @@ and left out (their --list-engines line says why)."""
 import argparse
 import csv
 import datetime
+import io
 import json
 import statistics
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "lab"))
+from odelab_report import files  # noqa: E402
 
 SCENES = ("test1", "test2")
 
@@ -56,10 +60,22 @@ def spread(values):
     return statistics.median(values), min(values), max(values)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def write_rows(path, rows):
+    """The rows (dicts of one set of keys) as a CSV file, whole or not at
+    all, by the lab's one writer (lab/odelab_report/files.py)."""
+    text = io.StringIO()
+    writer = csv.DictWriter(text, fieldnames=list(rows[0]), lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(rows)
+    files.write_atomically(path, text.getvalue())
+
+
+def timing_options(description, seconds):
+    """The engine benchmarks' command line: --build, --seconds (simulated
+    seconds per run), --repeats (at least five) and --csv; parsed and checked."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--build", default=str(Path(__file__).resolve().parents[1] / "build"))
-    parser.add_argument("--seconds", type=float, default=10.0, help="simulated seconds per run (default 10)")
+    parser.add_argument("--seconds", type=float, default=seconds, help=f"simulated seconds per run (default {seconds:g})")
     parser.add_argument("--repeats", type=int, default=5, help="interleaved runs per cell, at least 5 (default 5)")
     parser.add_argument("--csv", help="also write the figures to this CSV file")
     options = parser.parse_args()
@@ -67,6 +83,11 @@ def main():
         parser.error("--repeats: at least 5 (a timing figure is the median and range of five runs or more)")
     if not options.seconds > 0:
         parser.error("--seconds: must be > 0")
+    return parser, options
+
+
+def main():
+    _, options = timing_options(__doc__.split("\n\n")[0], 10.0)
     tests = Path(options.build) / "tests"
     engines = available_engines(str(tests / "test1"))
     for name, ok, why in engines:
@@ -92,10 +113,7 @@ def main():
                          outside_us=outside[0], outside_us_min=outside[1], outside_us_max=outside[2],
                          outside_per_engine_step=ratio, date=datetime.date.today().isoformat()))
     if options.csv:
-        with open(options.csv, "w", newline="") as out:
-            writer = csv.DictWriter(out, fieldnames=list(rows[0]))
-            writer.writeheader()
-            writer.writerows(rows)
+        write_rows(options.csv, rows)
     return 0
 
 
