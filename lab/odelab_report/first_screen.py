@@ -313,6 +313,10 @@ def reads_elsewhere(data, claims, setting):
     return sorted(found, key=lambda kind_phrase: kind_phrase[0])[0][1] if found else None
 
 
+# The thesis column of a report whose thesis experiment did not run (--only).
+NO_THESIS = "n/a: not run"
+
+
 def cell(sentences, claims, setting, source, absent):
     """A cell: the first claim that holds, when its source reads the row's
     quantity at the row's setting; else "n/a: <why>"."""
@@ -330,7 +334,7 @@ def table(sentences):
     body = []
     for scene, (defined, setting), figure, thesis, _, cheapest, peer in rows():
         body.append([scene, sentences.say(defined), cell(sentences, figure, setting, "ODE reads", "n/a: not measured"),
-                     cell(sentences, thesis, setting, "the thesis reads", "untested"),
+                     cell(sentences, thesis, setting, "the thesis reads", NO_THESIS),
                      cell(sentences, cheapest, setting, "sweep reads", NO_SWEEP),
                      cell(sentences, peer, setting, "engines read", NO_PEERS)])
     return md.table(COLUMNS, body)
