@@ -137,8 +137,9 @@ def peer_cell(scene, higher_better, figure="{v:k2}", step=0.001):
                    f"{higher_better})] if fair else 0",
               "tied": "[j for j in fair if j != i and vals[j] == vals[i] and lo[j] <= hi[i]]",
               "name": "engines[i]", "v": "vals[i]", "c": "costs[i]", "a": "lo[i]", "b": "hi[i]",
-              # the scene's friction, where it acts (peer_compare.FRICTION_ACTS)
-              "surface": "' mu ' + mus[i]" if scene in FRICTION_ACTS else "''"}
+              # the scene's friction, where it acts (peer_compare.FRICTION_ACTS),
+              # as the matrix writes it (peer_compare.surface_short): "mu ∞"
+              "surface": "' mu ' + ('∞' if mus[i] == 'infinite' else mus[i])" if scene in FRICTION_ACTS else "''"}
     at = "" if step == 0.001 else f" @{md.num(step)}"  # the column's step: said in its header
     return [Claim(f"first.{scene}.peer.tie", f"[tie (see §{PEERS_SECTION})](#exp-peers)", values,
                   "len(fair) > 0 and len(tied) > 0"),

@@ -361,7 +361,7 @@ class EnginesCell(unittest.TestCase):
         lines = ["test7,mujoco,default,0.001,max_joint_error,3.6e-15,infinite,1," + made + ",0.008,0.008,0.008",
                  "test7,bullet,default,0.001,max_joint_error,0.03,infinite,1,,0.0055,0.0054,0.0056"]
         self.assertEqual(self.cell("test7", lines, higher_better=False, figure="{v:k2} m"),
-                         "bullet 0.03 m mu infinite, 0.0055 [0.0054-0.0056]")
+                         "bullet 0.03 m mu ∞, 0.0055 [0.0054-0.0056]")
 
 
 class TuningTies(unittest.TestCase):
