@@ -40,6 +40,7 @@ CompareLanes::CompareLanes(AbstractWindow& lead, const std::vector<std::pair<std
     Lane lane;
     lane.scene = scene;
     lane.engine = engine;
+    lane.version = versionOf(engine);
     return lane;
   };
   lanes_.push_back(laneOf(&lead, "ode"));
@@ -107,8 +108,7 @@ void CompareLanes::stop(Lane& lane, const std::string& why) {
 
 std::vector<std::string> CompareLanes::label(const Lane& lane) const {
   const AbstractWindow& scene = *lane.scene;
-  const std::string version = versionOf(lane.engine);
-  std::string first = lane.engine + (version.empty() ? "" : " " + version);
+  std::string first = lane.engine + (lane.version.empty() ? "" : " " + lane.version);
   if (&lane == &lanes_.front()) {
     first += " (the reference)";
   } else {

@@ -19,7 +19,8 @@ class CompareLanes {
  public:
   struct Lane {
     AbstractWindow* scene = nullptr;
-    std::string engine;  // "ode", "bullet", ...
+    std::string engine;   // "ode", "bullet", ...
+    std::string version;  // its version ("" where unknown), read once
     // Why this engine stopped following (a blow-up, a non-finite state, an
     // ODE error), and the step it failed on; "" while it follows.
     std::string failure;
