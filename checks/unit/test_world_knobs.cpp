@@ -57,7 +57,9 @@ TEST(WorldKnobs, EveryOneHasItsThesisKeyAnOptionAndAHeaderKey) {
     EXPECT_TRUE(knob.appliesToWorld) << knob.name;
     EXPECT_EQ(knob.group, KnobGroup::World) << knob.name;
     EXPECT_EQ(knob.option.rfind("--", 0), 0u) << knob.name;
-    if (knob.key != SDLK_UNKNOWN) EXPECT_TRUE(keys.insert(knob.key).second) << knob.name;
+    if (knob.key != SDLK_UNKNOWN) {
+      EXPECT_TRUE(keys.insert(knob.key).second) << knob.name;
+    }
   }
   EXPECT_EQ(world.knob("erp").key, SDLK_F3);
   EXPECT_EQ(world.knob("cfm").key, SDLK_F4);
