@@ -44,3 +44,11 @@ if(ODELAB_ENGINE_NODE)
                    ${CMAKE_CURRENT_BINARY_DIR}/runs/without_node)
   set_tests_properties(engines_without_node_named_refused_and_skipped PROPERTIES LABELS engines TIMEOUT 900)
 endif()
+
+# The engines' side of the protocol (peers/wasm/src/session.js), which the
+# Node.js server and the page share: replies, an error told in the next
+# reply, a number that is not finite sent as null, quit (node's test runner).
+if("rapier" IN_LIST ODELAB_CHECK_ENGINES)
+  add_test(NAME engine_protocol_session COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/)
+  set_tests_properties(engine_protocol_session PROPERTIES LABELS engines TIMEOUT 120)
+endif()

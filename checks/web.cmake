@@ -88,3 +88,35 @@ foreach(what clock bad-option files)
             --out ${CMAKE_CURRENT_BINARY_DIR}/${name} ${what})
   set_tests_properties(${name} PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 600 PROCESSORS 2)
 endforeach()
+
+# The compare view in the page: test2 and test9 on ODE, Havok, Jolt and
+# Rapier in one canvas, each view showing the bodies, and every engine's
+# figures against the desktop's --engine run of the same options, within
+# the tolerance the scene's own browser check states (above)
+# (scripts/web/check_compare.py). The picture is taken where the engines
+# agree on the bodies' places: test2's pendulum after 3 s, test9's ball at
+# 0.3 s, falling, before its first bounce (0.48 s; each engine bounces its
+# own way after it). The desktop's runs of the web engines need Node.js
+# (peers/engines/CMakeLists.txt).
+set(_window_seconds_test2 3)
+set(_window_seconds_test9 0.3)
+if(ODELAB_ENGINE_NODE)
+  foreach(_scene test2 test9)
+    get_property(_arguments GLOBAL PROPERTY ODELAB_WEB_CHECK_${_scene})
+    cmake_parse_arguments(W "" "SECONDS;DOWNLOAD" "ARGS" ${_arguments})
+    list(GET _arguments 0 _metric)
+    list(GET _arguments 1 _tolerance)
+    set(_length)
+    if(W_SECONDS)
+      set(_length --seconds ${W_SECONDS})
+    endif()
+    add_test(NAME web_compare_${_scene}
+      COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/web/check_compare.py --site ${ODELAB_WEB_SITE}
+              --native $<TARGET_FILE:${_scene}> --out ${CMAKE_CURRENT_BINARY_DIR}/web_compare_${_scene}
+              --engines havok,jolt,rapier --metric ${_metric} --tolerance ${_tolerance}
+              --view-bodies $<TARGET_FILE:view_bodies> --window-seconds ${_window_seconds_${_scene}} ${_length}
+              -- ${W_ARGS})
+    set_tests_properties(web_compare_${_scene} PROPERTIES LABELS "web;compare" SKIP_RETURN_CODE 77 TIMEOUT 900
+                         PROCESSORS 2)
+  endforeach()
+endif()

@@ -85,10 +85,15 @@ install_missing() {  # install_missing [PACKAGE...] (default: the packages above
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
-# The site in build-web/site, and the driver its checks use (web/node_modules).
+# The engines' packages (peers/wasm) and web/'s (esbuild, which bundles them
+# into the site, and the driver the checks use), then the site in build-web/site.
 build_web() {
+  local folder
+  for folder in peers/wasm web; do
+    (cd "$root/$folder" && npm ci --no-audit --no-fund --loglevel=error >&2) ||
+      say "npm ci failed in $folder: the site is built without Havok, Jolt and Rapier"
+  done
   bash "$root/scripts/web/build.sh" "${WEB_BUILD_DIR:-$root/build-web}"
-  (cd "$root/web" && npm ci --no-audit --no-fund --loglevel=error >&2)
 }
 
 # Everything: checks and peers on, also in a folder that `run` configured

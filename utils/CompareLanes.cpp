@@ -122,16 +122,16 @@ std::vector<std::string> CompareLanes::label(const Lane& lane) const {
 }
 
 std::string CompareLanes::timingLine() const {
-  std::string line = "step ms:";
+  std::string steps = "step ms:";
   const Lane* slowest = &lanes_.front();
   for (const Lane& lane : lanes_) {
-    line += "  " + lane.engine + " " + (lane.failure.empty() ? millisecondsText(lane.msPerStep) : "stopped");
+    steps += "  " + lane.engine + " " + (lane.failure.empty() ? millisecondsText(lane.msPerStep) : "stopped");
     if (lane.failure.empty() && lane.msPerStep > slowest->msPerStep) slowest = &lane;
   }
   const TimeControl& time = lanes_.front().scene->session().time();
-  if (!time.paused() && time.recentRealTimeFactor() < BEHIND)
-    line += "   (behind real time; slowest: " + slowest->engine + ")";
-  return line;
+  if (time.paused() || time.recentRealTimeFactor() >= BEHIND) return steps;
+  // First, so that a HUD row too narrow for every engine still names it.
+  return "behind real time, slowest: " + slowest->engine + "   " + steps;
 }
 
 }  // namespace odelab

@@ -1,15 +1,31 @@
 // The list of scenes, from scenes.json (written by the build from
-// tests/scenes/scenes.txt: each scene's name and title).
-fetch("scenes.json")
-  .then((response) => response.json())
-  .then((scenes) => {
-    const list = document.getElementById("scenes");
-    for (const scene of scenes) {
-      const item = document.createElement("li");
-      const link = document.createElement("a");
-      link.href = "scene.html?scene=" + encodeURIComponent(scene.name);
-      link.textContent = scene.name + " - " + scene.title;
-      item.appendChild(link);
-      list.appendChild(item);
+// tests/scenes/scenes.txt: each scene's name and title), each with a link
+// that runs it side by side on the web engines where the site has them
+// (engines/engines.json, written by scripts/web/build.sh: their versions,
+// none when the site was built without them).
+const COMPARED = "havok,jolt,rapier";
+
+function sceneLink(address, text) {
+  const link = document.createElement("a");
+  link.href = address;
+  link.textContent = text;
+  return link;
+}
+
+Promise.all([
+  fetch("scenes.json").then((response) => response.json()),
+  fetch("engines/engines.json").then((response) => (response.ok ? response.json() : {}), () => ({})),
+]).then(([scenes, engines]) => {
+  const haveEngines = COMPARED.split(",").every((name) => name in engines);
+  const list = document.getElementById("scenes");
+  for (const scene of scenes) {
+    const item = document.createElement("li");
+    const address = "scene.html?scene=" + encodeURIComponent(scene.name);
+    item.appendChild(sceneLink(address, scene.name + " - " + scene.title));
+    if (haveEngines) {
+      item.append(" \u00b7 ");
+      item.appendChild(sceneLink(address + "&compare=" + COMPARED, "beside Havok, Jolt and Rapier"));
     }
-  });
+    list.appendChild(item);
+  }
+});

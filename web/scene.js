@@ -1,5 +1,6 @@
 // Runs one scene: scene.html?scene=test2&erp=0.4&pause gives the program
-// the arguments --erp 0.4 --pause. The run's folder (/run in the module's
+// the arguments --erp 0.4 --pause; compare=havok,jolt runs it on those
+// engines beside ODE's, each in a view of the one canvas. The run's folder (/run in the module's
 // memory file system) is listed under the picture, each file a download.
 // window.odelabRun tells a driver (checks/web.cmake's) how the run stands.
 "use strict";
@@ -139,6 +140,27 @@ function start(factory) {
   });
 }
 
+// The engines other than ODE that the address names (compare=havok,jolt
+// or engine=rapier; list-engines: all), loaded into the page before the
+// scene starts (engines/, bundled from web/engines/). One that does not
+// load is the scene's to report: --list-engines and --engine say why.
+function enginesNamed() {
+  if (params.has("list-engines")) return ["havok", "jolt", "rapier"];
+  const names = (params.get("compare") || "").split(",").concat([params.get("engine") || ""]);
+  return names.map((name) => name.trim()).filter((name) => name !== "" && name !== "ode");
+}
+
+async function loadEngines(names) {
+  if (names.length === 0) return;
+  statusLine.textContent = "loading " + names.join(", ");
+  try {
+    await import("./engines/index.js");
+    await globalThis.odelabEngines.load(names);
+  } catch (error) {
+    say("this site's engines did not load (" + error.message + ")");
+  }
+}
+
 // A scene of the site's list (scenes.json, from tests/scenes/scenes.txt), or a message.
 fetch("scenes.json")
   .then((response) => response.json())
@@ -149,7 +171,7 @@ fetch("scenes.json")
     }
     const script = document.createElement("script");
     script.src = sceneName + ".js";
-    script.onload = () => start(window["create_" + sceneName]);
+    script.onload = () => loadEngines(enginesNamed()).then(() => start(window["create_" + sceneName]));
     script.onerror = () => (statusLine.textContent = "no scene '" + sceneName + "' in this site (" + script.src + " did not load)");
     document.body.appendChild(script);
   })

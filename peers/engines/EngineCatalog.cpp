@@ -1,10 +1,15 @@
-#include <algorithm>
-
 #include "Adapters.h"
+#include "WasmEngines.h"
 
 namespace odelab::engines {
 
 namespace {
+
+#ifdef __EMSCRIPTEN__
+constexpr bool BROWSER = true;
+#else
+constexpr bool BROWSER = false;
+#endif
 
 // The engines other than ODE in the order --list-engines prints them, each
 // whether or not it was built, so that a missing one is named with its cure.
@@ -20,11 +25,8 @@ const std::vector<std::string>& engineNames() {
   return info;
 }
 
-#ifdef ODELAB_ENGINE_NODE
-bool isNodeEngine(const std::string& name) {
-  const std::vector<std::string> names = nodeEngineNames();
-  return std::find(names.begin(), names.end(), name) != names.end();
-}
+#if defined(ODELAB_ENGINE_NODE) || defined(ODELAB_ENGINE_BROWSER)
+bool isWasmEngine(const std::string& name) { return wasmEngineKind(name) != nullptr; }
 #endif
 
 world::EngineInfo infoOf(const std::string& name) {
@@ -32,20 +34,26 @@ world::EngineInfo infoOf(const std::string& name) {
 #ifdef ODELAB_ENGINE_BULLET
     return bulletInfo();
 #else
-    return notBuilt(name, "this build has no Bullet: install Debian's libbullet-dev and configure again");
+    return notBuilt(name, BROWSER ? "the browser build has no Bullet: its adapter is C++ on Debian's native library"
+                                  : "this build has no Bullet: install Debian's libbullet-dev and configure again");
 #endif
   }
   if (name == "mujoco") {
 #ifdef ODELAB_ENGINE_MUJOCO
     return mujocoInfo();
 #else
-    return notBuilt(name, "this build has no MuJoCo: install Debian's libmujoco-dev and libqhull-dev and configure again");
+    return notBuilt(name, BROWSER ? "the browser build has no MuJoCo: its adapter is C++ on Debian's native library, "
+                                    "and MuJoCo's WebAssembly build (npm mujoco-js) has no adapter yet"
+                                  : "this build has no MuJoCo: install Debian's libmujoco-dev and libqhull-dev and "
+                                    "configure again");
 #endif
   }
-#ifdef ODELAB_ENGINE_NODE
+#if defined(ODELAB_ENGINE_NODE)
   return nodeEngineInfo(name);
+#elif defined(ODELAB_ENGINE_BROWSER)
+  return browserEngineInfo(name);
 #else
-  return notBuilt(name, "this build cannot start Node.js engines (Windows and browser builds run ODE alone)");
+  return notBuilt(name, "this build cannot start Node.js engines (the Windows build runs ODE alone)");
 #endif
 }
 
@@ -64,8 +72,10 @@ std::unique_ptr<world::Engine> make(const std::string& name, world::EngineSettin
 #ifdef ODELAB_ENGINE_MUJOCO
   if (name == "mujoco") return makeMujoco(setting);
 #endif
-#ifdef ODELAB_ENGINE_NODE
-  if (isNodeEngine(name)) return makeNodeEngine(name, setting);
+#if defined(ODELAB_ENGINE_NODE)
+  if (isWasmEngine(name)) return makeNodeEngine(name, setting);
+#elif defined(ODELAB_ENGINE_BROWSER)
+  if (isWasmEngine(name)) return makeBrowserEngine(name, setting);
 #endif
   (void)setting;
   throw world::EngineError("engine '" + name + "' is not one of ode, bullet, mujoco, havok, jolt, rapier");

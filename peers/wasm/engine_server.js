@@ -10,8 +10,8 @@
 // Started again with node's --no-concurrent-recompilation where it lacks it:
 // src/safe_exit.js says why (Node can hang at exit in these WASM builds).
 const readline = require('readline');
+const { Session } = require('./src/session');
 
-const REPLYING = new Set(['build', 'add', 'step']);  // the messages that take a reply
 const ENGINES = { havok: './src/engines/havok', jolt: './src/engines/jolt', rapier: './src/engines/rapier' };
 
 function fail(message) {
@@ -28,106 +28,28 @@ function info(name) {
   process.stdout.write(`${JSON.stringify({ name, package: adapter.packageName, version, precision: adapter.precision })}\n`);
 }
 
-// Non-finite numbers are not JSON: a state with NaN or infinity sends null
-// in their place, which the C++ side reads back as NaN.
-const finiteOrNull = (x) => (Number.isFinite(x) ? x : null);
-
-function statesOf(engine, count) {
-  const states = [];
-  for (let i = 0; i < count; ++i) {
-    const s = engine.state(i);
-    states.push(s ? s.map(finiteOrNull) : null);
-  }
-  return states;
-}
-
-// A body index the program may name: one of the world's.
-function bodyIndex(message, session) {
-  const i = message.body;
-  if (!Number.isInteger(i) || i < 0 || i >= session.bodies) throw new Error(`no body ${JSON.stringify(i)} (the world has ${session.bodies})`);
-  return i;
-}
-
-// One message; returns the reply or undefined (a message without one).
-function handle(engine, message, session) {
-  switch (message.op) {
-    case 'build':
-      engine.build(message.world, message.removed || []);
-      session.bodies = (message.world.bodies || []).length;
-      return { ok: true, notes: engine.notes.fresh(), states: statesOf(engine, session.bodies) };
-    case 'add':
-      engine.add(message.world, message.first_body, message.first_geom, message.first_joint);
-      session.bodies = (message.world.bodies || []).length;
-      return { ok: true, notes: engine.notes.fresh(), states: statesOf(engine, session.bodies) };
-    case 'remove':
-      engine.remove(bodyIndex(message, session));
-      return undefined;
-    case 'set_state':
-      engine.setState(bodyIndex(message, session), message.state);
-      return undefined;
-    case 'force':
-      engine.applyForce(bodyIndex(message, session), message.force, message.torque);
-      return undefined;
-    case 'settings':
-      engine.changeSettings(message.world);
-      return undefined;
-    case 'step': {
-      const count = message.count === undefined ? 1 : message.count;
-      for (let n = 0; n < count; ++n) engine.step();
-      return {
-        states: statesOf(engine, session.bodies),
-        contacts: engine.contactCount(),
-        engine_wall_s: engine.wallSeconds(),
-        engine_cpu_s: engine.cpuSeconds(),
-        notes: engine.notes.fresh(),
-      };
-    }
-    default:
-      throw new Error(`unknown op ${JSON.stringify(message.op)}`);
-  }
+// The engine's WebAssembly module, its .wasm file read here where the
+// build does not inline it.
+function loadEngine(adapter) {
+  const wasmBinary = adapter.wasmFile ? require('fs').readFileSync(require.resolve(adapter.wasmFile)) : undefined;
+  return adapter.load({ wasmBinary });
 }
 
 async function serve(name, setting) {
-  let engine;
+  let session;
   try {
-    engine = await require(ENGINES[name]).create(setting);
+    const adapter = require(ENGINES[name]);
+    session = new Session(adapter.make(await loadEngine(adapter), setting));
   } catch (error) {
     // The first reply the C++ side reads says why.
     process.stdout.write(`${JSON.stringify({ error: `cannot load ${name}: ${error.message}; run \`npm ci\` in peers/wasm` })}\n`);
     process.exit(1);
   }
-  const session = { bodies: 0 };
-  let pending = null;  // an error in a message without a reply, told in the next reply
   const input = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
   input.on('line', (line) => {
-    if (!line.trim()) return;
-    let message;
-    try {
-      message = JSON.parse(line);
-    } catch (error) {
-      pending = pending || `a message that is not JSON (${error.message})`;
-      message = null;
-    }
-    if (message && message.op === 'quit') {
-      input.close();
-      return;
-    }
-    let reply;
-    if (message) {
-      try {
-        reply = handle(engine, message, session);
-      } catch (error) {
-        const what = `${message.op}: ${error.message}`;
-        if (REPLYING.has(message.op)) reply = { error: what };
-        else pending = pending || what;
-      }
-    }
-    if (!(message && REPLYING.has(message.op))) return;
-    if (pending) {
-      reply = { error: pending };
-      pending = null;
-    }
-    process.stdout.write(`${JSON.stringify(reply)}\n`);
+    const reply = session.line(line);
+    if (reply !== null) process.stdout.write(`${reply}\n`);
+    if (session.quit) input.close();
   });
   // Stdin closed (quit, or the program gone): end now, without waiting on
   // the WebAssembly runtime's background work.

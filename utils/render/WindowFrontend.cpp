@@ -131,7 +131,7 @@ class FrameLoop {
   int run();
   double runFrame();
   bool over() const;
-  void end() const;
+  void end();  // prints the totals once (a screenshot at the end prints them already)
 
  private:
   void pollEvents(long long frame);
@@ -165,6 +165,7 @@ class FrameLoop {
 
   WindowInput input_{scene_};  // after scene_: it takes the tuning the scene starts with
   FrameTotals totals_;
+  bool totalsPrinted_ = false;
   double ticksPerSecond_ = static_cast<double>(SDL_GetPerformanceFrequency());
   std::string notice_;
   double noticeUntil_ = 0.0;
@@ -453,8 +454,7 @@ double FrameLoop::runFrame() {
       std::printf("view %s: x %d y %d width %d height %d (pixels from the top left)\n",
                   views_.compare.merged() ? "merged" : lanes_->lanes()[i].engine.c_str(), r.x, r.y, r.width, r.height);
     }
-    printTotals("window", totals_);
-    printCompareTotals(lanes_, totals_);
+    end();
     return -1.0;
   }
   return busy;
@@ -462,7 +462,9 @@ double FrameLoop::runFrame() {
 
 bool FrameLoop::over() const { return finished(scene_, options_); }
 
-void FrameLoop::end() const {
+void FrameLoop::end() {
+  if (totalsPrinted_) return;
+  totalsPrinted_ = true;
   printTotals("window", totals_);
   printCompareTotals(lanes_, totals_);
 }

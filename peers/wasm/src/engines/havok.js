@@ -21,8 +21,7 @@
 // by default 1/60 s and rescaled for others), no damping (Havok's default
 // angular damping is 0.1) and the speed caps out of reach (200 m/s and
 // 100 rad/s by default), so nothing slows a body that ODE would not.
-const { packageVersion } = require('./package');
-const fs = require('fs');
+const { StepClock } = require('./clock');
 const { World } = require('./world');
 const { Notes, fmt } = require('./notes');
 const m = require('./math');
@@ -50,14 +49,12 @@ class HavokEngine {
     this.HK = HK;
     this.best = best;
     this.notes = new Notes();
-    this.version = packageVersion(PACKAGE);
     this.bodies = [];     // per body index: { id, joints: [constraint ids] } or null once removed
     this.shapes = [];     // per geom index: the leaf shape, or null
     this.statics = [];    // static bodies of static geoms
     this.anchor = null;   // a static body with no shape: "the world" for joints
     this.removedSet = new Set();
-    this.wall = 0n;
-    this.cpu = 0;
+    this.clock = new StepClock();
   }
 
   build(json, removed = []) {
@@ -327,11 +324,7 @@ class HavokEngine {
   }
 
   step() {
-    const wall = process.hrtime.bigint(), cpu = process.cpuUsage();
-    this.HK.HP_World_Step(this.id, this.h);
-    const used = process.cpuUsage(cpu);
-    this.wall += process.hrtime.bigint() - wall;
-    this.cpu += (used.user + used.system) / 1e6;
+    this.clock.time(() => this.HK.HP_World_Step(this.id, this.h));
   }
 
   state(index) {
@@ -348,19 +341,23 @@ class HavokEngine {
   }
 
   wallSeconds() {
-    return Number(this.wall) / 1e9;
+    return this.clock.wallSeconds();
   }
 
   cpuSeconds() {
-    return this.cpu;
+    return this.clock.cpuSeconds();
   }
 }
 
-async function create(setting) {
-  const HavokPhysics = require(PACKAGE);
-  const wasmBinary = fs.readFileSync(require.resolve(`${PACKAGE}/lib/umd/HavokPhysics.wasm`));
-  const HK = await HavokPhysics({ wasmBinary });
-  return new HavokEngine(HK, setting === 'best');
+// The WebAssembly module, loaded once per process or page. Havok's build
+// reads its .wasm file beside it; the host hands over its bytes
+// (`wasmBinary`: Node reads WASM_FILE, a page fetches it).
+const WASM_FILE = `${PACKAGE}/lib/umd/HavokPhysics.wasm`;
+function load({ wasmBinary }) {
+  return require('@babylonjs/havok')({ wasmBinary });
 }
 
-module.exports = { create, packageName: PACKAGE, precision: 'float32' };
+// One engine (one Havok world at a time) on a loaded module.
+const make = (HK, setting) => new HavokEngine(HK, setting === 'best');
+
+module.exports = { load, make, wasmFile: WASM_FILE, packageName: PACKAGE, precision: 'float32' };

@@ -23,7 +23,7 @@
 // world's own bounce velocity (default: none below 1 m/s), speed caps out of
 // reach (default 500 m/s, 47 rad/s), and swept motion (LinearCast) for every
 // moving body, which Jolt uses only when a body moves far in a step.
-const { packageVersion } = require('./package');
+const { StepClock } = require('./clock');
 const { World } = require('./world');
 const { Notes, fmt } = require('./notes');
 const m = require('./math');
@@ -42,12 +42,10 @@ class JoltEngine {
     this.J = J;
     this.best = best;
     this.notes = new Notes();
-    this.version = packageVersion(PACKAGE);
     this.bodies = [];   // per body index: { body, id, joints } or null once removed
     this.removedSet = new Set();
     this.contacts = 0;
-    this.wall = 0n;
-    this.cpu = 0;
+    this.clock = new StepClock();
   }
 
   v3(a) { return new this.J.Vec3(a[0], a[1], a[2]); }
@@ -416,11 +414,7 @@ class JoltEngine {
 
   step() {
     this.contacts = 0;
-    const wall = process.hrtime.bigint(), cpu = process.cpuUsage();
-    this.jolt.Step(this.h, 1);
-    const used = process.cpuUsage(cpu);
-    this.wall += process.hrtime.bigint() - wall;
-    this.cpu += (used.user + used.system) / 1e6;
+    this.clock.time(() => this.jolt.Step(this.h, 1));
   }
 
   state(index) {
@@ -437,17 +431,22 @@ class JoltEngine {
   }
 
   wallSeconds() {
-    return Number(this.wall) / 1e9;
+    return this.clock.wallSeconds();
   }
 
   cpuSeconds() {
-    return this.cpu;
+    return this.clock.cpuSeconds();
   }
 }
 
-async function create(setting) {
+// The WebAssembly module (inlined in the package's wasm-compat build),
+// loaded once per process or page.
+async function load() {
   const { default: initJolt } = await import('jolt-physics/wasm-compat');
-  return new JoltEngine(await initJolt(), setting === 'best');
+  return initJolt();
 }
 
-module.exports = { create, packageName: PACKAGE, precision: 'float32' };
+// One engine on a loaded module.
+const make = (J, setting) => new JoltEngine(J, setting === 'best');
+
+module.exports = { load, make, wasmFile: null, packageName: PACKAGE, precision: 'float32' };

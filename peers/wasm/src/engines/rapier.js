@@ -25,7 +25,7 @@
 // the speed cap (400 m/s times lengthUnit) moved out of reach by a
 // lengthUnit of 1000 with the two length tolerances the JS API exposes
 // divided by as much, so that in metres they stay Rapier's defaults.
-const { packageVersion } = require('./package');
+const { StepClock } = require('./clock');
 const { World } = require('./world');
 const { Notes, fmt } = require('./notes');
 const m = require('./math');
@@ -48,14 +48,12 @@ class RapierEngine {
     this.R = R;
     this.best = best;
     this.notes = new Notes();
-    this.version = packageVersion(PACKAGE);
     this.bodies = [];      // per body index: the rigid body, or null once removed
     this.colliders = [];   // per geom index: the collider, or null
     this.geomOf = new Map();  // collider handle -> geom index
     this.forced = new Set();  // bodies with a force to reset after the step
     this.removedSet = new Set();
-    this.wall = 0n;
-    this.cpu = 0;
+    this.clock = new StepClock();
   }
 
   build(json, removed = []) {
@@ -273,11 +271,7 @@ class RapierEngine {
   }
 
   step() {
-    const wall = process.hrtime.bigint(), cpu = process.cpuUsage();
-    this.rapier.step(this.hooks && this.events, this.hooks);
-    const used = process.cpuUsage(cpu);
-    this.wall += process.hrtime.bigint() - wall;
-    this.cpu += (used.user + used.system) / 1e6;
+    this.clock.time(() => this.rapier.step(this.hooks && this.events, this.hooks));
     for (const i of this.forced) if (this.bodies[i]) this.bodies[i].resetForces(false);
     this.forced.clear();
   }
@@ -294,19 +288,24 @@ class RapierEngine {
   }
 
   wallSeconds() {
-    return Number(this.wall) / 1e9;
+    return this.clock.wallSeconds();
   }
 
   cpuSeconds() {
-    return this.cpu;
+    return this.clock.cpuSeconds();
   }
 }
 
-async function create(setting) {
-  const R = require(PACKAGE);
+// The WebAssembly module (inlined in the compat package), loaded once per
+// process or page.
+async function load() {
+  const R = require('@dimforge/rapier3d-compat');
   // init() prints a deprecation warning about its arguments on stderr; harmless.
   await R.init();
-  return new RapierEngine(R, setting === 'best');
+  return R;
 }
 
-module.exports = { create, packageName: PACKAGE, precision: 'float32' };
+// One engine (a world of its own) on a loaded module.
+const make = (R, setting) => new RapierEngine(R, setting === 'best');
+
+module.exports = { load, make, wasmFile: null, packageName: PACKAGE, precision: 'float32' };
