@@ -52,6 +52,18 @@ if(_compare_window_engines AND XVFB_RUN)
                    --skipped "${_compare_skipped_list}" -- --seconds 3)
   set_tests_properties(compare_window_test2_views_and_figures PROPERTIES LABELS compare TIMEOUT 600)
 endif()
+# The panel's tick of an engine hides its view (checks/scripts/
+# compare_panel_hides.events clicks Jolt's off): the others fill the window,
+# each still showing the pendulum, and Jolt steps on unseen.
+if(_compare_window_list STREQUAL "bullet,jolt,rapier" AND XVFB_RUN)
+  add_test(NAME compare_window_panel_hides_an_engine
+           COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x800x24" ${Python3_EXECUTABLE}
+                   ${ODELAB_CHECK_SCRIPTS}/compare_same_runs.py
+                   --panel-hides ${ODELAB_CHECK_SCRIPTS}/compare_panel_hides.events --hidden jolt
+                   --view-bodies $<TARGET_FILE:view_bodies> --program $<TARGET_FILE:test2>
+                   --engines bullet,jolt,rapier -- --seconds 2)
+  set_tests_properties(compare_window_panel_hides_an_engine PROPERTIES LABELS compare TIMEOUT 300)
+endif()
 # Keys, a drag, R and the panel's typed field reach every engine at ODE's step.
 if(ODELAB_ENGINE_BULLET AND XVFB_RUN)
   add_test(NAME compare_window_inputs_reach_every_engine

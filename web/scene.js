@@ -1,7 +1,8 @@
 // Runs one scene: scene.html?scene=test2&erp=0.4&pause gives the program
 // the arguments --erp 0.4 --pause; compare=havok,jolt runs it on those
-// engines beside ODE's, each in a view of the one canvas. The run's folder (/run in the module's
-// memory file system) is listed under the picture, each file a download.
+// engines beside ODE's, each in a view of the one canvas. The run's folder
+// (/run in the module's memory file system) is listed under the picture,
+// each file a download.
 // window.odelabRun tells a driver (checks/web.cmake's) how the run stands.
 "use strict";
 

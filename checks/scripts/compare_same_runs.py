@@ -35,6 +35,16 @@ OUT/<engine>/) must list the same inputs at the same steps as ODE's, at
 least MIN_INPUTS of them, and every engine's block must end at ODE's step
 with ODE's ERP and CFM and a drag_end_distance of its own.
 
+  compare_same_runs.py --panel-hides checks/scripts/compare_panel_hides.events --hidden jolt
+                       --view-bodies build/checks/view_bodies --program build/tests/test2
+                       --engines bullet,jolt,rapier -- --seconds 2
+
+plays the --events script, which clicks the panel's tick of the engine
+--hidden off, in a compare window (under Xvfb, which the caller starts)
+with --screenshot of its last frame: the window names a view for every
+engine but that one, each showing the bodies where ODE's does, and the
+hidden engine's block still ends at ODE's step (it stepped unseen).
+
   compare_same_runs.py --program build/tests/test2 --refusals
 
 checks what is refused with status 2 before anything is written: --compare
@@ -201,6 +211,31 @@ def same_inputs(args):
     return 1 if failures else 0
 
 
+def panel_hides(args, rest):
+    """The panel's tick hides one engine's view; the others fill the window
+    and the hidden one keeps stepping."""
+    engines = [e for e in args.engines.split(",") if e]
+    name = os.path.basename(args.program)
+    with tempfile.TemporaryDirectory() as root:
+        done = run([args.program, "--compare", ",".join(engines), "--events", os.path.abspath(args.panel_hides),
+                    "--screenshot", SHOT, "--width", str(WIDTH), "--height", str(HEIGHT), *rest,
+                    "--metrics-json", METRICS], root)
+        if done.returncode != 0:
+            print(f"FAIL: the compare window ended with status {done.returncode}: {done.stderr.strip()}")
+            return 1
+        shown = ["ode", *[e for e in engines if e != args.hidden]]
+        failures = views_shown(args, done.stdout, os.path.join(root, SHOT), shown)
+        with open(os.path.join(root, METRICS)) as f:
+            metrics = json.load(f)
+        steps = {engine: metrics.get(f"{engine}.steps") for engine in ["ode", *engines]}
+        if len(set(steps.values())) != 1:
+            failures.append(f"the engines ended at different steps: {steps}")
+        print(f"{name}: views of {', '.join(shown)} with {args.hidden} hidden; steps {steps}")
+    for failure in failures:
+        print("FAIL", failure)
+    return 1 if failures else 0
+
+
 def refusals(args):
     name = os.path.basename(args.program)
     cases = [
@@ -253,7 +288,9 @@ def main():
     parser.add_argument("--refusals", action="store_true", help="check the refusals instead")
     parser.add_argument("--window", action="store_true", help="the compare run in a window, with a screenshot")
     parser.add_argument("--inputs", help="an --events script to play in a compare window instead")
-    parser.add_argument("--view-bodies", help="the view_bodies tool, for --window")
+    parser.add_argument("--view-bodies", help="the view_bodies tool, for --window and --panel-hides")
+    parser.add_argument("--panel-hides", help="an --events script whose clicks hide --hidden's view by the panel")
+    parser.add_argument("--hidden", help="the engine the --panel-hides script hides")
     args, rest = parser.parse_known_args()
     args.program = os.path.abspath(args.program)  # the runs are in folders of their own
     if args.launcher:
@@ -266,6 +303,10 @@ def main():
         parser.error("--engines: name at least one")
     if args.inputs:
         return same_inputs(args)
+    if args.panel_hides:
+        if not (args.hidden and args.view_bodies):
+            parser.error("--panel-hides needs --hidden and --view-bodies")
+        return panel_hides(args, rest)
     if args.window and not args.view_bodies:
         parser.error("--window needs --view-bodies")
     return same_runs(args, rest)

@@ -122,8 +122,17 @@ void outline(VertexList& list, const AbstractObject& object, Rgba color) {
 
 CompareViews::CompareViews(const std::string& shaderDir) : program_(shaderDir) {}
 
+void CompareViews::setShown(size_t lane, bool shown) {
+  if (lane == 0) return;
+  if (hidden_.size() <= lane) hidden_.resize(lane + 1, false);
+  hidden_[lane] = !shown;
+}
+
 std::vector<CompareViews::Rect> CompareViews::layout(const CompareLanes& lanes, int top, int width, int height) const {
-  const size_t count = merged_ ? 1 : lanes.lanes().size();
+  std::vector<size_t> drawn{0};
+  for (size_t lane = 1; !merged_ && lane < lanes.lanes().size(); ++lane)
+    if (shown(lane)) drawn.push_back(lane);
+  const size_t count = drawn.size();
   int columns = 1, rows = 1;
   gridFor(count, columns, rows);
   std::vector<Rect> views;
@@ -134,7 +143,7 @@ std::vector<CompareViews::Rect> CompareViews::layout(const CompareLanes& lanes, 
     const int upper = height * row / rows, lower = height * (row + 1) / rows;
     // One pixel of sky between views keeps them apart.
     const int gap = count > 1 ? 1 : 0;
-    views.push_back({left, top + upper, std::max(1, right - left - gap), std::max(1, lower - upper - gap)});
+    views.push_back({left, top + upper, std::max(1, right - left - gap), std::max(1, lower - upper - gap), drawn[i]});
   }
   return views;
 }
@@ -142,15 +151,16 @@ std::vector<CompareViews::Rect> CompareViews::layout(const CompareLanes& lanes, 
 void CompareViews::drawLabels(const CompareLanes& lanes, const std::vector<Rect>& views, HudText& text,
                               int windowWidth, int windowHeight) {
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
-  const size_t blocks = merged_ ? 1 : all.size();
-  while (labels_.size() < blocks) {
+  while (labels_.size() < views.size()) {
     // Small and see-through: the label sits over the view's sky.
     labels_.push_back(std::make_unique<TextBlock>(LABEL_BOX_ALPHA));
     labels_.back()->useSmallFont(true);
   }
-  for (size_t i = 0; i < blocks; ++i) {
+  for (size_t i = 0; i < views.size(); ++i) {
     std::vector<std::string> lines;
-    for (size_t lane = merged_ ? 0 : i; lane < (merged_ ? all.size() : i + 1); ++lane) {
+    // Merged: every shown engine's label in the one view, each headed by its colour.
+    for (size_t lane = merged_ ? 0 : views[i].lane; lane < (merged_ ? all.size() : views[i].lane + 1); ++lane) {
+      if (!shown(lane)) continue;
       std::vector<std::string> label = lanes.label(all[lane]);
       if (merged_)
         label.front() = (lane == 0 ? std::string("solid: ") : std::string(OUTLINES[(lane - 1) % OUTLINE_COUNT].name) + ": ") +
@@ -168,7 +178,7 @@ void CompareViews::drawOutlines(const CompareLanes& lanes, const glm::mat4& view
   outlines_.clear();
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
   for (size_t lane = 1; lane < all.size(); ++lane) {
-    if (!all[lane].failure.empty()) continue;
+    if (!all[lane].failure.empty() || !shown(lane)) continue;
     const Rgba color = OUTLINES[(lane - 1) % OUTLINE_COUNT].color;
     const auto& ode = all.front().scene->run().objects();
     const auto& theirs = all[lane].scene->run().objects();
@@ -195,6 +205,7 @@ std::vector<LivePlot::Curve> CompareViews::curves(const CompareLanes& lanes) con
   std::vector<LivePlot::Curve> curves;
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
   for (size_t lane = 1; lane < all.size(); ++lane) {
+    if (!shown(lane)) continue;
     Rgba color = OUTLINES[(lane - 1) % OUTLINE_COUNT].color;
     color.a = 255;
     curves.push_back({&all[lane].scene->session().chart(), color});
@@ -206,7 +217,7 @@ std::string CompareViews::legend(const CompareLanes& lanes) const {
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
   std::string text = all.front().engine + " blue";
   for (size_t lane = 1; lane < all.size(); ++lane)
-    text += ", " + all[lane].engine + " " + OUTLINES[(lane - 1) % OUTLINE_COUNT].name;
+    if (shown(lane)) text += ", " + all[lane].engine + " " + OUTLINES[(lane - 1) % OUTLINE_COUNT].name;
   return text;
 }
 

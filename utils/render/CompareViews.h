@@ -13,16 +13,19 @@
 
 namespace odelab {
 
-// Where a compare window draws: one view per engine in a grid (two side by
-// side, then two by two, then three by two), ODE's top left; or, merged (M),
-// ODE's view alone with every other engine's bodies outlined over it where
-// they are apart from ODE's, so a drift shows at once. Each view carries
-// its label (CompareLanes::label).
+// Where a compare window draws: one view per engine shown in a grid (two
+// side by side, then two by two, then three by two), ODE's top left; or,
+// merged (M), ODE's view alone with every other shown engine's bodies
+// outlined over it where they are apart from ODE's, so a drift shows at
+// once. Each view carries its label (CompareLanes::label). An engine the
+// panel hides still steps with the others; only its view is left out.
 class CompareViews {
  public:
-  // A view in window pixels from the top left.
+  // A view in window pixels from the top left, and the lane it shows
+  // (merged: ODE's, 0).
   struct Rect {
     int x, y, width, height;
+    size_t lane = 0;
   };
 
   explicit CompareViews(const std::string& shaderDir);
@@ -32,6 +35,9 @@ class CompareViews {
   std::vector<Rect> layout(const CompareLanes& lanes, int top, int width, int height) const;
   bool merged() const { return merged_; }
   void toggleMerged() { merged_ = !merged_; }
+  // Whether lane `lane`'s engine is drawn (ODE's always is).
+  bool shown(size_t lane) const { return lane == 0 || lane >= hidden_.size() || !hidden_[lane]; }
+  void setShown(size_t lane, bool shown);
 
   // Each lane's label at the top left of its view (merged: every label in
   // one column, each in its engine's colour as a heading). `windowWidth` x
@@ -59,6 +65,7 @@ class CompareViews {
   VertexList outlines_;
   std::vector<std::unique_ptr<TextBlock>> labels_;
   bool merged_ = false;
+  std::vector<bool> hidden_;  // per lane
 };
 
 }  // namespace odelab

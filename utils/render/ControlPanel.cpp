@@ -330,6 +330,32 @@ void ControlPanel::viewToggles(AbstractWindow& scene) {
   if (flowButton("smaller")) scene.handleKey(SDLK_F2, true);
 }
 
+void ControlPanel::engineTicks() {
+  if (!compareViews_ || !compareLanes_) return;
+  if (!ImGui::CollapsingHeader("Engines (views)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const std::vector<CompareLanes::Lane>& lanes = compareLanes_->lanes();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float room = ImGui::GetContentRegionAvail().x;
+  float rowWidth = 0;
+  for (size_t lane = 0; lane < lanes.size(); ++lane) {
+    // As many to a row as fit.
+    const float width = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(lanes[lane].engine.c_str()).x;
+    if (lane > 0 && rowWidth + style.ItemSpacing.x + width <= room) {
+      ImGui::SameLine();
+      rowWidth += style.ItemSpacing.x + width;
+    } else {
+      rowWidth = width;
+    }
+    // ODE's view leads: the camera, the drag and the merged view are its.
+    bool shown = compareViews_->shown(lane);
+    ImGui::BeginDisabled(lane == 0 || compareViews_->merged());
+    if (ImGui::Checkbox(lanes[lane].engine.c_str(), &shown)) compareViews_->setShown(lane, shown);
+    ImGui::EndDisabled();
+  }
+  bool merged = compareViews_->merged();
+  if (ImGui::Checkbox("merged (M)", &merged)) compareViews_->toggleMerged();
+}
+
 void ControlPanel::knobs(AbstractWindow& scene) {
   // Every knob, under its group's header: World open, the contact choices
   // and the scene's values closed (open, a scene's dozen values would push
@@ -460,6 +486,7 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
     // line names is tuned in one place; then the scene's keys and the drawing.
     sceneList(scene);
     timeButtons(scene);
+    engineTicks();
     ImGui::Separator();
     knobs(scene);
     copyCommandLine(scene);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../AbstractWindow.h"
+#include "CompareViews.h"
 
 namespace odelab {
 
@@ -34,6 +35,12 @@ class ControlPanel {
   int coveredWidth() const { return visible_ ? static_cast<int>(width_) + 2 * MARGIN : 0; }
   // Builds and draws this frame's panel over the scene.
   void draw(AbstractWindow& scene, int windowWidth, int windowHeight);
+  // A compare window's engines, each ticked to show its view or not, and
+  // the merged view (M), at the top of the panel.
+  void showEngines(CompareViews& views, const CompareLanes& lanes) {
+    compareViews_ = &views;
+    compareLanes_ = &lanes;
+  }
 
  private:
   static constexpr int MARGIN = 10;
@@ -46,6 +53,7 @@ class ControlPanel {
   // forth again) to any of them.
   void timelineSlider(AbstractWindow& scene);
   void copyCommandLine(const AbstractWindow& scene);
+  void engineTicks();                       // showEngines' ticks
   void sceneKeys(AbstractWindow& scene);    // the scene's own keys as buttons
   void viewToggles(AbstractWindow& scene);  // C, J, X, V, L, H and the F2 increment
   void knobs(AbstractWindow& scene);
@@ -86,6 +94,8 @@ class ControlPanel {
   bool scrubbing_ = false;                       // the timeline slider is being dragged
   long long scrubStep_ = 0;
   bool dragged_ = false;                         // the active slider has been dragged
+  CompareViews* compareViews_ = nullptr;
+  const CompareLanes* compareLanes_ = nullptr;
 };
 
 }  // namespace odelab

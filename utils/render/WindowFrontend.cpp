@@ -126,7 +126,9 @@ class FrameLoop {
         views_(views),
         player_(player),
         windowFrames_(windowFrames),
-        lanes_(lanes) {}
+        lanes_(lanes) {
+    if (lanes_) views_.panel.showEngines(views_.compare, *lanes_);
+  }
 
   int run();
   double runFrame();
@@ -341,15 +343,14 @@ void FrameLoop::drawCompare(int width, int height, int sceneHeight) {
   views_.renderer.clearWindow();
   glm::vec3 grabbed, target;
   const bool dragging = input_.dragLine(scene_, grabbed, target);
-  for (size_t i = 0; i < compareViews_.size(); ++i) {
-    AbstractWindow& lane = *lanes_->lanes()[i].scene;
+  for (const CompareViews::Rect& r : compareViews_) {
+    AbstractWindow& lane = *lanes_->lanes()[r.lane].scene;
     if (&lane != &scene_) {
       lane.camera() = scene_.camera();
       lane.session().showAs(scene_.session().viewFlags());
     }
-    const CompareViews::Rect& r = compareViews_[i];
     views_.renderer.renderView(lane, scene_.camera(), r.x, height - r.y - r.height, r.width, r.height);
-    views_.debug.draw(lane, views_.renderer.viewProjection(), dragging && i == 0, grabbed, target);
+    views_.debug.draw(lane, views_.renderer.viewProjection(), dragging && r.lane == 0, grabbed, target);
     if (views_.compare.merged()) views_.compare.drawOutlines(*lanes_, views_.renderer.viewProjection());
     views_.renderer.present();
   }
@@ -452,7 +453,8 @@ double FrameLoop::runFrame() {
     for (size_t i = 0; lanes_ && i < compareViews_.size(); ++i) {
       const CompareViews::Rect& r = compareViews_[i];
       std::printf("view %s: x %d y %d width %d height %d (pixels from the top left)\n",
-                  views_.compare.merged() ? "merged" : lanes_->lanes()[i].engine.c_str(), r.x, r.y, r.width, r.height);
+                  views_.compare.merged() ? "merged" : lanes_->lanes()[r.lane].engine.c_str(), r.x, r.y, r.width,
+                  r.height);
     }
     end();
     return -1.0;
