@@ -27,7 +27,6 @@ fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-echo "2 key B" >"$work/launch.events"
 echo "1 key M" >"$work/merge.events"
 
 # shot NAME SIZE PROGRAM ARGS...: the program's compare window, its last frame saved as NAME.
@@ -43,8 +42,10 @@ shot() {
 
 # test5: 40 plates, one every 0.25 s, and a second for the last to settle.
 plates=(--spawn-interval 0.25 --plates 40 --seconds 11)
-# test10: one cube launched at 600 m/s (B), half a second after.
-launch=(--velocity 600 --events "$work/launch.events" --seconds 0.5)
+# test10: its first cube, launched at once at 600 m/s, half a second after.
+# (A second one launched with B a frame later would start inside the first
+# on a fast machine, and the two would knock each other off course.)
+launch=(--velocity 600 --seconds 0.5)
 for size in 1280x720 1024x768; do
   shot "compare_test5_$size" "$size" test5 "${plates[@]}"
   shot "compare_test10_$size" "$size" test10 "${launch[@]}"
