@@ -192,6 +192,20 @@ class ProcessGroups(RunnerCase):
             time.sleep(0.05)
         self.assertFalse(alive(child), f"the wrapper's child {child} outlived the abort")
 
+    def test_a_program_that_starts_as_the_abort_comes_is_ended(self):
+        # An abort between a program's start and the executor's note of it
+        # cannot see it: the executor ends it as it notes it (seen once under
+        # load, where the wrapper above then ran out its 300 s).
+        program = self.tmp / "sleeper"
+        program.write_text("#!/bin/sh\nsleep 300\n")
+        program.chmod(0o755)
+        executor = LocalExecutor()
+        executor.abort()
+        started = time.monotonic()
+        done = executor.execute([str(program)], self.tmp, 600, False)
+        self.assertLess(time.monotonic() - started, 10)
+        self.assertEqual(done["rc"], -9)
+
     def test_what_a_finished_program_left_running_is_ended(self):
         program = self.tmp / "leaver"
         program.write_text("#!/bin/sh\nsleep 300 &\necho $! >child.pid\n"

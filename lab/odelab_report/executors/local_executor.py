@@ -16,6 +16,7 @@ class LocalExecutor:
         self.timing_host = socket.gethostname()
         self._running = set()
         self._lock = threading.Lock()
+        self._aborted = False
 
     def missing_programs(self, paths):
         return {}  # the lab checks its own build before it starts
@@ -24,6 +25,10 @@ class LocalExecutor:
         def started(process):
             with self._lock:
                 self._running.add(process)
+                aborted = self._aborted
+            # An abort between the start and here did not see this program.
+            if aborted:
+                kill_group(process)
         try:
             return run_in_folder(argv, folder, timeout, started)
         finally:
@@ -32,6 +37,7 @@ class LocalExecutor:
 
     def abort(self):
         with self._lock:
+            self._aborted = True  # a program starting now ends itself (execute's `started`)
             running = list(self._running)
         for process in running:
             # The program's whole group: a wrapper that does not exec leaves

@@ -54,6 +54,9 @@ class SrunExecutor:
                                  stdin=subprocess.DEVNULL, start_new_session=True)
         with self._lock:
             self._running.add(child)
+            aborted = self._aborted
+        if aborted:  # an abort between the start and here did not see this step
+            child.send_signal(signal.SIGTERM)
         try:
             out, err = child.communicate()
         finally:
@@ -71,8 +74,8 @@ class SrunExecutor:
 
     def abort(self):
         """Ends every running step (Ctrl-C): srun passes SIGTERM to its step."""
-        self._aborted = True
         with self._lock:
+            self._aborted = True  # a step starting now ends itself (execute)
             running = list(self._running)
         for child in running:
             try:
