@@ -146,17 +146,18 @@ function start(factory) {
 // scene starts (engines/, bundled from web/engines/). One that does not
 // load is the scene's to report: --list-engines and --engine say why.
 function enginesNamed() {
-  if (params.has("list-engines")) return ["havok", "jolt", "rapier"];
+  if (params.has("list-engines")) return "all";
   const names = (params.get("compare") || "").split(",").concat([params.get("engine") || ""]);
   return names.map((name) => name.trim()).filter((name) => name !== "" && name !== "ode");
 }
 
 async function loadEngines(names) {
   if (names.length === 0) return;
-  statusLine.textContent = "loading " + names.join(", ");
+  statusLine.textContent = "loading " + (names === "all" ? "the engines" : names.join(", "));
   try {
     await import("./engines/index.js");
-    await globalThis.odelabEngines.load(names);
+    const engines = globalThis.odelabEngines;
+    await engines.load(names === "all" ? engines.names : names);
   } catch (error) {
     say("this site's engines did not load (" + error.message + ")");
   }

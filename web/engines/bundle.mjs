@@ -5,6 +5,7 @@
 //   node web/engines/bundle.mjs OUT
 import { build } from "esbuild";
 import { readFileSync, writeFileSync } from "node:fs";
+import { createRequire } from "node:module";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 
@@ -16,10 +17,14 @@ if (!out) {
   process.exit(2);
 }
 
-const PACKAGES = { havok: "@babylonjs/havok", jolt: "jolt-physics", rapier: "@dimforge/rapier3d-compat" };
+// Each engine's npm package as its adapter names it (loading an adapter
+// loads no engine: that waits for its load()).
+const require = createRequire(import.meta.url);
 const versions = {};
-for (const [name, pkg] of Object.entries(PACKAGES))
-  versions[name] = JSON.parse(readFileSync(join(packages, pkg, "package.json"), "utf8")).version;
+for (const name of ["havok", "jolt", "rapier"]) {
+  const { packageName } = require(`../../peers/wasm/src/engines/${name}.js`);
+  versions[name] = JSON.parse(readFileSync(join(packages, packageName, "package.json"), "utf8")).version;
+}
 
 await build({
   entryPoints: [join(here, "index.js")],
