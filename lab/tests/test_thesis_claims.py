@@ -98,6 +98,18 @@ class HavokRules(unittest.TestCase):
         self.assertEqual(havok.test2(results(-0.45), False, 20, 40)["verdict"], "reproduced")
         self.assertEqual(havok.test2(results(-0.23), False, 20, 40)["verdict"], "differs")
 
+    def test_a_scan_ended_by_the_speed_cap_is_not_the_walls_limit(self):
+        capped = Fake(max_velocity=202.0, first_slowed_velocity=230.0, first_failure_velocity=0.0)
+        walled = Fake(max_velocity=380.0, first_slowed_velocity=0.0, first_failure_velocity=400.0)
+        # Default capped at about 200 m/s, the wall's limit (caps raised) near the thesis's 350 m/s.
+        row = havok.test10({"h10": capped, "h10_best": walled}, False, 20, 40)
+        self.assertEqual(row["verdict"], "reproduced")
+        self.assertIn("speed cap", row["havok_measured"])
+        self.assertIn("380 m/s", row["havok_measured"])
+        # A default scan that reached the wall is read as it is.
+        row = havok.test10({"h10": walled, "h10_best": Fake(max_velocity=4000.0)}, False, 20, 40)
+        self.assertEqual((row["havok_measured"], row["verdict"]), ("380 m/s", "reproduced"))
+
 
 if __name__ == "__main__":
     unittest.main()

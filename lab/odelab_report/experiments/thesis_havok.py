@@ -11,7 +11,7 @@ from ..claims import Claim, q as column, slot
 from ..runner import RunSpec, median
 from .base import Experiment, Outcome
 from .limit_test5 import SETTLE, SPAWN_INTERVAL
-from .peers import list_engines
+from .peers import list_engines, scan_ended_at_speed_cap
 
 CLOSE = 1.5              # as thesis.py: "about X" within this factor
 THESIS_LOST = 0.50       # 5.3: Havok lost up to 50% of the energy within a minute
@@ -70,6 +70,7 @@ class ThesisHavok(Experiment):
             "h9": havok("test9", "--seconds", 21),
             "h9_best": havok("test9", "--seconds", 21, setting="best"),
             "h10": havok("test10", "--find-max-velocity"),
+            "h10_best": havok("test10", "--find-max-velocity", setting="best"),
         }
         repeats = 2 if q else 5
         timed = {"o5": ("test5", stack), "h5": ("test5", ["--engine", "havok", "--step", 0.001, *stack])}
@@ -189,13 +190,23 @@ def test9(r, q, h4, plates):
 
 
 def test10(r, q, h4, plates):
-    v = r["h10"].m("max_velocity")
-    return row("test10", "Havok stopped every cube up to 350 m/s", f"{v:.4g} m/s", "see the test10 rows above",
+    """Havok at its defaults caps every body's speed: a scan that ends at
+    the cap measured the cap, not the wall, so the wall's limit is read with
+    the caps raised (best) and the row says so."""
+    default, best = r["h10"], r["h10_best"]
+    if scan_ended_at_speed_cap(default):
+        v = best.m("max_velocity")
+        text = (f"default: its speed cap slows the cubes before the wall (scan ended at "
+                f"{default.m('first_slowed_velocity'):.4g} m/s); caps raised (best): {v:.4g} m/s")
+    else:
+        v = default.m("max_velocity")
+        text = f"{v:.4g} m/s"
+    return row("test10", "Havok stopped every cube up to 350 m/s", text, "see the test10 rows above",
                THESIS_HAVOK_MS / CLOSE <= v <= THESIS_HAVOK_MS * CLOSE,
                "today's Havok keeps speculative contacts always on (doc/peers.md)",
-               f"reproduced when Havok's limit is within {CLOSE}x of {THESIS_HAVOK_MS:g} m/s (its gradual failures "
-               "above the limit are not tested: the scene's scan stops at the first)",
-               "test10 --engine havok --find-max-velocity")
+               f"reproduced when Havok's limit at the wall is within {CLOSE}x of {THESIS_HAVOK_MS:g} m/s (its gradual "
+               "failures above the limit are not tested: the scene's scan stops at the first)",
+               "test10 --engine havok --find-max-velocity [--engine-setting best]")
 
 
 JUDGES = [test1, test2, test4, test5, test6, test7, test9, test10]
