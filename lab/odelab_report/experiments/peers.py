@@ -163,7 +163,7 @@ SCENES = [
           [], [0.001, 0.0005], lambda q: ["--seconds", 20], in_quick=False, not_reached="not even 50 kg"),
     Scene("test10", "max_velocity_stopped", "max_velocity", "highest velocity with every launch stopped (m/s)", False,
           [0.001], [0.01, 0.001, 0.0001], lambda q: ["--find-max-velocity"],
-          voided_by=(lambda r: scan_ended_at_speed_cap(r), SPEED_CAP_VOIDS)),
+          voided_by=(scan_ended_at_speed_cap, SPEED_CAP_VOIDS)),
 ]
 # Arguments every engine's run of a scene gets (the same program for all):
 # no output file rows; test10's scan stops at its first failure; test7 without
