@@ -3,7 +3,12 @@
 // that runs it side by side on the web engines where the site has them
 // (engines/engines.json, written by scripts/web/build.sh: their versions,
 // none when the site was built without them).
-const COMPARED = "havok,jolt,rapier";
+
+// "Havok, Jolt and Rapier" from the engines' names.
+function spoken(names) {
+  const words = names.map((name) => name.charAt(0).toUpperCase() + name.slice(1));
+  return words.length < 2 ? words.join("") : words.slice(0, -1).join(", ") + " and " + words[words.length - 1];
+}
 
 function sceneLink(address, text) {
   const link = document.createElement("a");
@@ -16,15 +21,15 @@ Promise.all([
   fetch("scenes.json").then((response) => response.json()),
   fetch("engines/engines.json").then((response) => (response.ok ? response.json() : {}), () => ({})),
 ]).then(([scenes, engines]) => {
-  const haveEngines = COMPARED.split(",").every((name) => name in engines);
+  const compared = Object.keys(engines);
   const list = document.getElementById("scenes");
   for (const scene of scenes) {
     const item = document.createElement("li");
     const address = "scene.html?scene=" + encodeURIComponent(scene.name);
     item.appendChild(sceneLink(address, scene.name + " - " + scene.title));
-    if (haveEngines) {
+    if (compared.length > 0) {
       item.append(" \u00b7 ");
-      item.appendChild(sceneLink(address + "&compare=" + COMPARED, "beside Havok, Jolt and Rapier"));
+      item.appendChild(sceneLink(address + "&compare=" + compared.join(","), "beside " + spoken(compared)));
     }
     list.appendChild(item);
   }

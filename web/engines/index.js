@@ -45,7 +45,7 @@ async function load(names) {
 function info(name) {
   const entry = loaded[name];
   let missing = "";
-  if (!ADAPTERS[name]) missing = "not one of havok, jolt, rapier";
+  if (!ADAPTERS[name]) missing = "not one of " + Object.keys(ADAPTERS).join(", ");
   else if (!entry) missing = `this page did not load it (name it in the address: compare=${name} or engine=${name})`;
   else if (entry.error) missing = entry.error;
   return JSON.stringify({ version: VERSIONS[name] || "", missing });
