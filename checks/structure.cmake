@@ -1,9 +1,3 @@
-# Size target of every test program, each read as its thesis chapter
-# (checks/scripts/size_targets.sh).
-add_test(NAME framework_files_within_size_targets
-         COMMAND sh ${ODELAB_CHECK_SCRIPTS}/size_targets.sh ${CMAKE_SOURCE_DIR})
-set_tests_properties(framework_files_within_size_targets PROPERTIES LABELS unit)
-
 # A twelfth scene is one line of tests/scenes/scenes.txt, its source and its
 # checks file: in a scratch copy of the tree, a copy of test9 listed as
 # test11 gets every check test9 has, the launcher's list, its name in its
