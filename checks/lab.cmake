@@ -27,9 +27,11 @@ endif()
 # Every sentence of the committed doc/results/RESULTS.md (first table,
 # headline findings, the engines' included, sections' conclusions),
 # recomputed from the committed CSVs by its rule (claims.csv), each rule
-# reading its data; every measured figure in README.md and doc/ held by a
-# committed CSV, and a cited figure by the row it cites (lab/check_docs.py
-# says which numbers count).
+# reading its data; every measured figure in README.md and doc/ cited to the
+# committed CSV cell it equals or inside a block the lab generates (and
+# regenerated to compare), a setting written as code; the pages not yet
+# converted counted exactly in lab/reference/docs-uncited.txt
+# (lab/check_docs.py says which numbers count).
 add_test(NAME lab_committed_report_claims
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_report.py ${CMAKE_SOURCE_DIR}/doc/results)
 set_tests_properties(lab_committed_report_claims PROPERTIES LABELS lab)
@@ -49,8 +51,9 @@ set_tests_properties(lab_file_rules PROPERTIES LABELS lab TIMEOUT 60)
 
 # Every sentence a rule on its own data: the engines' headline findings are
 # claims on peers.csv, a typed one or a rule that reads none of its values is
-# refused. The docs cite the row they quote: a figure not in the row its
-# citation selects is refused. (Both also part of lab_executor_units.)
+# refused. The docs cite the cell they quote: a figure not in the cell its
+# citation names is refused, and a fabricated figure and a changed cited cell
+# planted in a copy of the docs fail. (Both also part of lab_executor_units.)
 add_test(NAME lab_sentence_rules
          COMMAND ${Python3_EXECUTABLE} -m unittest discover -s ${CMAKE_SOURCE_DIR}/lab/tests -p test_sentence_rules.py)
 set_tests_properties(lab_sentence_rules PROPERTIES LABELS lab TIMEOUT 60)

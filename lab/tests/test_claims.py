@@ -140,55 +140,5 @@ class DocsFigures(unittest.TestCase):
                                                                        "11900", "0.0640")], [1, 1, 1, 1, 2, 2, 2, 3, 3])
 
 
-class DocsShortFigures(unittest.TestCase):
-    """A short figure (one or two significant digits) must be held by the
-    page's own data: a stale "0.2" is no longer passed by some other
-    scene's CSV that happens to hold 0.21."""
-
-    def setUp(self):
-        self.root = Path(tempfile.mkdtemp())
-        (self.root / "doc" / "tests").mkdir(parents=True)
-        (self.root / "doc" / "results").mkdir()
-        (self.root / "doc" / "results" / "limit-test4.csv").write_text("solver,kg,share\nQuickStep 20,11892,0.21\n")
-        (self.root / "doc" / "results" / "thesis.csv").write_text("test,value\ntest9,0.0031\ntest4,0.64\n")
-        # These pages quote without citing rows: the rules for held figures apply.
-        (self.root / "lab" / "reference").mkdir(parents=True)
-        self.uncited = "doc/tests/test4.md uncited\ndoc/tests/test9.md uncited\n"
-        (self.root / "lab" / "reference" / "docs-pending.txt").write_text(self.uncited)
-
-    def problems(self, page, text):
-        (self.root / "doc" / "tests" / page).write_text(text)
-        return [p for waiting, p in check_docs.check(self.root)[0] if not waiting]
-
-    def test_a_scenes_own_figures_pass(self):
-        # test4's CSV (its name) and test4's row of thesis.csv; 11900 (three digits) from anywhere.
-        self.assertEqual(self.problems("test4.md", "QuickStep holds 11900 kg, a share of 0.2 and 0.64 of it.\n"), [])
-
-    def test_a_stale_short_figure_now_fails(self):
-        # 0.0031 is in thesis.csv, but in test9's row: on test4's page it is a coincidence.
-        problems = self.problems("test4.md", "the error is 0.003 after 20 bounces.\n")
-        self.assertEqual(len(problems), 1, problems)
-        self.assertIn("0.003 (short)", problems[0])
-
-    def test_a_page_names_its_csv(self):
-        text = "From [the limits](../results/limit-test4.csv): a share of 0.2.\n"
-        self.assertEqual(self.problems("test9.md", text), [])
-        self.assertEqual(len(self.problems("test9.md", "a share of 0.2.\n")), 1)
-
-    def test_pending_lines_hold_back_a_page_its_short_figures_or_one_figure(self):
-        pending = self.root / "lab" / "reference" / "docs-pending.txt"
-        text = "the error is 0.003 after 20 bounces; the build took 366 s.\n"
-        self.assertEqual(len(self.problems("test4.md", text)), 2)
-        pending.write_text(self.uncited + 'doc/tests/test4.md short  # why\ndoc/tests/test4.md "366 s"  # too long\n')
-        self.assertEqual(self.problems("test4.md", text), [])
-        pending.write_text(self.uncited + 'doc/tests/test4.md "366 s"  # too long to redo\n')
-        self.assertEqual(len(self.problems("test4.md", text)), 1)
-
-    def test_the_committed_tree_passes(self):
-        root = Path(__file__).resolve().parents[2]
-        failing = [p for waiting, p in check_docs.check(root)[0] if not waiting]
-        self.assertEqual(failing, [])
-
-
 if __name__ == "__main__":
     unittest.main()

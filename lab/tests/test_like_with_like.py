@@ -22,7 +22,7 @@ from odelab_report import first_screen, peer_compare, peers_notes, timing, timin
 from odelab_report.claims import Data, Sentences  # noqa: E402
 from odelab_report import remedy_test4_claims as remedy_test4  # noqa: E402
 from odelab_report.runner import RunResult, RunSpec  # noqa: E402
-import refresh_doc_figures  # noqa: E402
+import write_doc_blocks  # noqa: E402
 
 HEADER = "# ODE: test\n"
 COLUMNS = ("scene,engine,setting,step,quantity,value,mu,like_ode_surface,by_construction,"
@@ -262,7 +262,7 @@ class Notes(unittest.TestCase):
         self.assertEqual(new, f"# Peers\n\nThe lead's text.\n\n{peers_notes.BEGIN}\nnew block\n{peers_notes.END}\n")
         self.assertIsNone(peers_notes.with_block("# no markers\n", "x"))
 
-    def test_refresh_doc_figures_writes_the_block_from_the_committed_csv(self):
+    def test_write_doc_blocks_writes_the_block_from_the_committed_csv(self):
         root = Path(tempfile.mkdtemp())
         self.addCleanup(shutil.rmtree, root)
         (root / "doc" / "results").mkdir(parents=True)
@@ -271,11 +271,13 @@ class Notes(unittest.TestCase):
                          self.rows())
         page = f"# Peers\n\nAbove.\n\n{peers_notes.BEGIN}\n(none yet)\n{peers_notes.END}\n"
         (root / "doc" / "peers.md").write_text(page)
-        text, changed = refresh_doc_figures.notes_block(root)
-        self.assertTrue(changed)
+        self.assertEqual(write_doc_blocks.main(["--check", str(root)]), 1)  # stale: reported, not written
+        self.assertEqual((root / "doc" / "peers.md").read_text(), page)
+        self.assertEqual(write_doc_blocks.main([str(root)]), 0)
+        text = (root / "doc" / "peers.md").read_text()
         self.assertTrue(text.startswith("# Peers\n\nAbove.\n\n" + peers_notes.BEGIN))
         self.assertIn("- **test9**:\n  - Jolt bounces only above 1 m/s (default only).", text)
-        self.assertEqual((root / "doc" / "peers.md").read_text(), page)  # written only by main(--write)
+        self.assertEqual(write_doc_blocks.main(["--check", str(root)]), 0)
 
     def test_doc_peers_md_has_the_markers_at_its_end(self):
         text = (Path(__file__).resolve().parents[2] / "doc" / "peers.md").read_text()

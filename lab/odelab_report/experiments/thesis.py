@@ -17,6 +17,7 @@ from .limit_test8 import estimate, run_spec as test8_spec
 from .limit_test10 import scan_spec
 from . import thesis_choices as choices
 from . import thesis_claims as claims
+from . import thesis_statements as statements
 
 REFERENCE = Path(__file__).resolve().parents[2] / "reference" / "thesis-figures.csv"
 CLOSE = 1.5  # "about X" is reproduced when this build's figure is within a factor 1.5 of X
@@ -187,6 +188,7 @@ class Thesis(Experiment):
         second = self.second_build(ctx, specs, timed, keys)
         rows = []
         rebuilt = choices.rebuild_rows()
+        quoted = statements.read()
         derived = self.derived_sensitivity(results, n_large)
         for key, reference, judge in zip(ROW_KEYS, reference_rows(),
                                          self.judges(results, q, h4, s8, n_small, n_large)):
@@ -202,7 +204,8 @@ class Thesis(Experiment):
                              thesis_ode_0_11_1=reference["ode_0_11_1_thesis"], thesis_figure=reference["figure"],
                              ode_0_11_1_rebuild=choices.rebuild_figure(key, rebuilt),
                              havok_6_5_quoted=reference["havok_6_5_quoted_by_thesis"],
-                             thesis_note=reference["note"], this_build=measured, verdict=verdict, how=how,
+                             thesis_note=reference["note"], thesis_quotes=statements.quotes_for(key, quoted),
+                             this_build=measured, verdict=verdict, how=how,
                              sensitivity=sensitivity, rule=rule, command=command))
             if second:
                 rows[-1][second["column"]] = second["rows"][len(rows) - 1]
@@ -219,6 +222,10 @@ class Thesis(Experiment):
                                         "from its tag)",
                                         "sensitivity: the thesis's unstated choices varied for the rows not "
                                         "reproduced (experiments/thesis_choices.py)"] + second_note)
+        statements_name = ctx.write_csv("thesis-statements", statements.COLUMNS, statements.report_rows(rows),
+                                        notes=["every checkable statement of the thesis, quoted (Czech, verbatim) "
+                                               "with its section: the rows that judge it and their verdicts, or "
+                                               "the reason it has no row (lab/reference/thesis-statements.csv)"])
         rebuild_commit = choices.rebuild_commit()
         extra = [second["column"]] if second else []
         table = md.table(["test", "quantity", "conditions", "thesis ODE 0.11.1",
@@ -244,7 +251,10 @@ Rules and commands (every command adds `--headless`):
 
 {commands}
 
-{md.files_line([csv_name, values_name])}"""
+The thesis's checkable statements, each quoted with its section, point at these rows or say why they have
+none: {statements_name}.
+
+{md.files_line([csv_name, values_name, statements_name])}"""
         return Outcome(text, [HEADLINE], claims={"counts": COUNTS})
 
     def second_build(self, ctx, specs, timed, keys):
