@@ -4,7 +4,8 @@ has none, and every figure lab/reference/thesis-figures.csv attributes to
 the thesis is written in a quoted sentence.
 
 The quotes are held to the thesis's text where it is on this machine
-(ODELAB_THESIS_TEXT, else the project's seed copy); the figures are held to
+(ODELAB_THESIS_TEXT, else the seed copy in the shared folder beside the
+checkout); the figures are held to
 the quotes everywhere.
 Run: /usr/bin/python3 -m unittest discover -s lab/tests."""
 
@@ -22,7 +23,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 REFERENCE = Path(__file__).resolve().parents[1] / "reference"
 STATEMENTS = REFERENCE / "thesis-statements.csv"
 FIGURES = REFERENCE / "thesis-figures.csv"
-SEED_GLOB = "/work/shared/seeds/000_*.txt"
+# The project's shared folder lies beside the checkout (and beside CI's clone).
+SEED_GLOB = str(Path(__file__).resolve().parents[2].parent / "shared" / "seeds" / "000_*.txt")
 
 # Rows of thesis-figures.csv, in order (as thesis.ROW_KEYS, read here without
 # importing the experiments, which need matplotlib).
