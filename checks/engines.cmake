@@ -49,6 +49,15 @@ endif()
 # Node.js server and the page share: replies, an error told in the next
 # reply, a number that is not finite sent as null, quit (node's test runner).
 if("rapier" IN_LIST ODELAB_CHECK_ENGINES)
-  add_test(NAME engine_protocol_session COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/)
+  add_test(NAME engine_protocol_session
+           COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/session.test.js)
   set_tests_properties(engine_protocol_session PROPERTIES LABELS engines TIMEOUT 120)
+endif()
+# The PhysX adapter on cases with a known answer (peers/wasm/test/physx.test.js):
+# a dropped ball's fall against 1/2 g t^2, a hinged pendulum's energy, a
+# cylinder refused, the notes.
+if("physx" IN_LIST ODELAB_CHECK_ENGINES)
+  add_test(NAME engine_physx_adapter_analytic
+           COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/physx.test.js)
+  set_tests_properties(engine_physx_adapter_analytic PROPERTIES LABELS engines TIMEOUT 300)
 endif()

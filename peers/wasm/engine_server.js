@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 'use strict';
-// engine_server: one of Havok, Jolt, PhysX and Rapier (src/engines/) behind a pipe,
+// engine_server: one of Havok, Jolt, Rapier and PhysX (src/engines/names.js) behind a pipe,
 // for the C++ adapter peers/engines/NodeEngine.cpp, which starts it as
 //   node --no-concurrent-recompilation engine_server.js ENGINE default|best
 // and speaks doc/engine-protocol.md: one JSON message a line on stdin, one
@@ -12,10 +12,8 @@
 const readline = require('readline');
 const { Session } = require('./src/session');
 
-const ENGINES = {
-  havok: './src/engines/havok', jolt: './src/engines/jolt', physx: './src/engines/physx', rapier: './src/engines/rapier',
-};
-const NAMES = Object.keys(ENGINES);
+const NAMES = require('./src/engines/names');
+const ENGINES = Object.fromEntries(NAMES.map((name) => [name, `./src/engines/${name}`]));
 
 function fail(message) {
   process.stderr.write(`engine_server: ${message}\n`);

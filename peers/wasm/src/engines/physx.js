@@ -235,7 +235,11 @@ class PhysxEngine {
       actor.setRigidBodyFlag(P.PxRigidBodyFlagEnum.eENABLE_CCD, true);
     } else {
       this.notes.add(`PhysX damps every body by default (linear ${fmt(actor.getLinearDamping())}, angular ${fmt(actor.getAngularDamping())}); the world has no damping (best sets it to 0)`);
-      this.notes.add(`PhysX caps every body's speed at ${fmt(actor.getMaxLinearVelocity())} m/s and ${fmt(actor.getMaxAngularVelocity())} rad/s, and its push out of penetration at ${fmt(actor.getMaxDepenetrationVelocity())} m/s (its defaults; best raises them out of reach)`);
+      // (Its default linear cap, 1e16 m/s, and its cap on the push out of
+      // penetration, 1e32 m/s, are none; the angular cap is.)
+      const caps = [[actor.getMaxLinearVelocity(), 'm/s'], [actor.getMaxAngularVelocity(), 'rad/s']]
+        .filter(([cap]) => cap < NO_SPEED_LIMIT).map(([cap, unit]) => `${fmt(cap)} ${unit}`);
+      if (caps.length) this.notes.add(`PhysX caps every body's speed at ${caps.join(' and ')} (its default; best raises it out of reach)`);
     }
     if (body.maxAngularSpeed !== Infinity) actor.setMaxAngularVelocity(body.maxAngularSpeed);
     if (!body.gravity) actor.setActorFlag(P.PxActorFlagEnum.eDISABLE_GRAVITY, true);
