@@ -36,7 +36,7 @@ foreach(_program IN LISTS ODELAB_PROGRAMS)
                   --engine-setting=better)
 endforeach()
 
-# Without Node.js: the three engines it runs are named as missing, refused
+# Without Node.js: the engines it runs are named as missing, refused
 # cleanly, and skipped (and said) by the lab (scripts/without_node.sh).
 if(ODELAB_ENGINE_NODE)
   add_test(NAME engines_without_node_named_refused_and_skipped
