@@ -88,6 +88,9 @@ class PhysxEngine {
       if (g.shape === 'cylinder') throw new Error('PhysX 5 has no cylinder shape (only as a convex mesh, which this adapter does not make): a world with a cylinder cannot be built');
     const sdk = sdkOf(P);
     this.physics = sdk.physics;
+    // A world built again (the scene reset): the old scene goes, with its
+    // actors and joints, from the module's memory, which every session shares.
+    if (this.scene) this.releaseScene();
     const desc = new P.PxSceneDesc(sdk.tolerances);
     desc.gravity = this.v3(this.world.settings.gravity);
     desc.cpuDispatcher = sdk.dispatcher;
@@ -356,6 +359,18 @@ class PhysxEngine {
         throw new Error(`PhysX: no joint type '${joint.type}'`);
     }
     for (const b of [joint.body1, joint.body2]) if (b >= 0) (this.bodies[b].joints = this.bodies[b].joints || []).push(created);
+  }
+
+  releaseScene() {
+    const joints = new Set();  // a joint is in both its bodies' lists
+    for (const entry of this.bodies) for (const joint of (entry && entry.joints) || []) joints.add(joint);
+    for (const joint of joints) joint.release();
+    for (const entry of this.bodies) if (entry) entry.actor.release();
+    for (const actor of this.statics) actor.release();
+    this.scene.release();
+    this.bodies = [];
+    this.shapes = [];
+    this.statics = [];
   }
 
   remove(index) {
