@@ -55,7 +55,8 @@ if("rapier" IN_LIST ODELAB_CHECK_ENGINES)
 endif()
 # The PhysX adapter on cases with a known answer (peers/wasm/test/physx.test.js):
 # a dropped ball's fall against 1/2 g t^2, a hinged pendulum's energy, a
-# cylinder refused, the notes.
+# slider along a tilted axis and its stop, fixed joints (no scene has a
+# slider or a fixed joint), a cylinder refused, the notes.
 if("physx" IN_LIST ODELAB_CHECK_ENGINES)
   add_test(NAME engine_physx_adapter_analytic
            COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/physx.test.js)
