@@ -153,3 +153,12 @@ test('fixed joints hold a box to the world and a capsule to the box', async () =
     assert.ok(worst < bound, `${setting}: drifted ${worst} m`);
   }
 });
+
+test('the contact points of the last step are counted: a box at rest on the plane has its four corners', async () => {
+  const s = await session('default');
+  const world = { ...DROP, bodies: [{ ...DROP.bodies[0], position: [0, 0.3, 0] }],
+    geoms: [DROP.geoms[0], { shape: 'box', body: 0, size: [0.2, 0.2, 0.2] }] };
+  send(s, { op: 'build', world });
+  assert.strictEqual(send(s, { op: 'step', count: 10 }).contacts, 0, 'none while it falls');
+  assert.strictEqual(send(s, { op: 'step', count: 590 }).contacts, 4);
+});

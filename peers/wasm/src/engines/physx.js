@@ -24,7 +24,9 @@
 //   the revolute angle and prismatic position (actor1 against actor0) are
 //   ODE's; the joint frame's x axis is the hinge or slider axis;
 // - a force for one step is PxRigidBody.addForce/addTorque (PhysX clears
-//   them after the step).
+//   them after the step);
+// - every touching pair reports its contact points (touch found and
+//   persists) to a simulation event callback, which counts them.
 // "best": the TGS solver (PxSolverType::eTGS: better convergence for long
 // chains, large mass ratios and jointed systems, PhysX's API reference says,
 // at some cost, and it "can introduce more energy to correct joint and
@@ -99,6 +101,8 @@ class PhysxEngine {
     this.defaultBounceThreshold = desc.bounceThresholdVelocity;
     this.shader = this.filterShader();
     P.setupPassThroughFilterShader(desc, this.shader);
+    this.listener = this.contactListener();
+    desc.simulationEventCallback = this.listener;
     this.scene = this.physics.createScene(desc);
     P.destroy(desc);
     this.applySettings();
@@ -116,7 +120,9 @@ class PhysxEngine {
   filterShader() {
     const P = this.P;
     const shader = new P.PassThroughFilterShaderImpl();
-    let pairFlags = P.PxPairFlagEnum.eCONTACT_DEFAULT;
+    // The contact points of every touching pair are reported (contactCount()).
+    let pairFlags = P.PxPairFlagEnum.eCONTACT_DEFAULT | P.PxPairFlagEnum.eNOTIFY_TOUCH_FOUND
+      | P.PxPairFlagEnum.eNOTIFY_TOUCH_PERSISTS | P.PxPairFlagEnum.eNOTIFY_CONTACT_POINTS;
     if (this.best) pairFlags |= P.PxPairFlagEnum.eDETECT_CCD_CONTACT;
     const suppress = P.PxFilterFlagEnum.eSUPPRESS;
     shader.filterShader = (a0, category0, collide0, w02, w03, a1, category1, collide1) => {
@@ -125,6 +131,18 @@ class PhysxEngine {
       return 0;
     };
     return shader;
+  }
+
+  // The simulation's contact reports: the count of contact points of the
+  // pairs that touched in the last step.
+  contactListener() {
+    const P = this.P;
+    const listener = new P.PxSimulationEventCallbackImpl();
+    listener.onConstraintBreak = listener.onWake = listener.onSleep = listener.onTrigger = () => {};
+    listener.onContact = (header, pairs, count) => {
+      for (let i = 0; i < count; ++i) this.contacts += P.getContactPairAt(P.wrapPointer(pairs, P.PxContactPair), i).contactCount;
+    };
+    return listener;
   }
 
   applySettings() {
@@ -427,6 +445,7 @@ class PhysxEngine {
 
   step() {
     this.moveKinematics();
+    this.contacts = 0;
     this.clock.time(() => {
       this.scene.simulate(this.h);
       this.scene.fetchResults(true);
@@ -447,7 +466,7 @@ class PhysxEngine {
   }
 
   contactCount() {
-    return -1;  // PhysX reports contacts only through a callback per pair; not counted here
+    return this.contacts;
   }
 
   wallSeconds() {
