@@ -261,6 +261,9 @@ odelab_engine_claim(engine_mujoco_plates_sink_soft_contact mujoco test5 EXPECT l
 # all fallen at 16.8 s, against ODE's 8.5 s; 0 active).
 odelab_engine_claim(engine_bullet_domino_chain_completes bullet test3 EXPECT fallen_fraction==1 active_bodies==0)
 
+# PhysX's claims, in a file of their own.
+include(${CMAKE_CURRENT_LIST_DIR}/engine_claims_physx.cmake)
+
 # ---- 3. the adapters hold no scene code --------------------------------------------
 # No tracked .cpp, .h or .js file under peers/ names a test program: the
 # scenes' code stays in the scenes. Skipped (77) without git or a checkout.

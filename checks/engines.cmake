@@ -36,7 +36,7 @@ foreach(_program IN LISTS ODELAB_PROGRAMS)
                   --engine-setting=better)
 endforeach()
 
-# Without Node.js: the three engines it runs are named as missing, refused
+# Without Node.js: the engines it runs are named as missing, refused
 # cleanly, and skipped (and said) by the lab (scripts/without_node.sh).
 if(ODELAB_ENGINE_NODE)
   add_test(NAME engines_without_node_named_refused_and_skipped
@@ -49,6 +49,16 @@ endif()
 # Node.js server and the page share: replies, an error told in the next
 # reply, a number that is not finite sent as null, quit (node's test runner).
 if("rapier" IN_LIST ODELAB_CHECK_ENGINES)
-  add_test(NAME engine_protocol_session COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/)
+  add_test(NAME engine_protocol_session
+           COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/session.test.js)
   set_tests_properties(engine_protocol_session PROPERTIES LABELS engines TIMEOUT 120)
+endif()
+# The PhysX adapter on cases with a known answer (peers/wasm/test/physx.test.js):
+# a dropped ball's fall against 1/2 g t^2, a hinged pendulum's energy, a
+# slider along a tilted axis and its stop, fixed joints (no scene has a
+# slider or a fixed joint), a cylinder refused, the notes.
+if("physx" IN_LIST ODELAB_CHECK_ENGINES)
+  add_test(NAME engine_physx_adapter_analytic
+           COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/physx.test.js)
+  set_tests_properties(engine_physx_adapter_analytic PROPERTIES LABELS engines TIMEOUT 300)
 endif()

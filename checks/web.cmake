@@ -89,8 +89,8 @@ foreach(what clock bad-option files)
   set_tests_properties(${name} PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 600 PROCESSORS 2)
 endforeach()
 
-# The compare view in the page: test2 and test9 on ODE, Havok, Jolt and
-# Rapier in one canvas, each view showing the bodies, and every engine's
+# The compare view in the page: test2 and test9 on ODE, Havok, Jolt, Rapier
+# and PhysX in one canvas, each view showing the bodies, and every engine's
 # figures against the desktop's --engine run of the same options, within
 # the tolerance the scene's own browser check states (above)
 # (scripts/web/check_compare.py). The picture is taken where the engines
@@ -113,7 +113,7 @@ if(ODELAB_ENGINE_NODE)
     add_test(NAME web_compare_${_scene}
       COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/web/check_compare.py --site ${ODELAB_WEB_SITE}
               --native $<TARGET_FILE:${_scene}> --out ${CMAKE_CURRENT_BINARY_DIR}/web_compare_${_scene}
-              --engines havok,jolt,rapier --metric ${_metric} --tolerance ${_tolerance}
+              --engines havok,jolt,rapier,physx --metric ${_metric} --tolerance ${_tolerance}
               --view-bodies $<TARGET_FILE:view_bodies> --window-seconds ${_window_seconds_${_scene}} ${_length}
               -- ${W_ARGS})
     set_tests_properties(web_compare_${_scene} PROPERTIES LABELS "web;compare" SKIP_RETURN_CODE 77 TIMEOUT 900

@@ -91,7 +91,7 @@ build_web() {
   local folder
   for folder in peers/wasm web; do
     (cd "$root/$folder" && npm ci --no-audit --no-fund --loglevel=error >&2) ||
-      say "npm ci failed in $folder: the site is built without Havok, Jolt and Rapier"
+      say "npm ci failed in $folder: the site is built without Havok, Jolt, Rapier and PhysX"
   done
   bash "$root/scripts/web/build.sh" "${WEB_BUILD_DIR:-$root/build-web}"
 }
@@ -160,13 +160,13 @@ case "$command" in
     # Everything the checks need, in one apt run: the programs' packages,
     # the Windows cross-build's, the browser build's.
     install_missing "${packages[@]}" "${windows_packages[@]}" "${web_packages[@]}"
-    # The engines that run in Node.js (peers/wasm, doc/peers.md): Havok, Jolt
-    # and Rapier from the npm registry, pinned by the lockfile; offline after this.
+    # The engines that run in Node.js (peers/wasm, doc/peers.md): Havok, Jolt,
+    # Rapier and PhysX from the npm registry, pinned by the lockfile; offline after this.
     if command -v node >/dev/null && command -v npm >/dev/null; then
       (cd "$root/peers/wasm" && npm ci --no-audit --no-fund --loglevel=error) ||
-        say "npm ci failed in peers/wasm: --engine havok, jolt and rapier and their checks are skipped"
+        say "npm ci failed in peers/wasm: --engine havok, jolt, rapier and physx and their checks are skipped"
     else
-      say "no node/npm: --engine havok, jolt and rapier and their checks are skipped"
+      say "no node/npm: --engine havok, jolt, rapier and physx and their checks are skipped"
     fi
     build
     # The programs cross-built for Windows, which the label `windows` runs

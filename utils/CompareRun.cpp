@@ -28,7 +28,7 @@ namespace odelab {
 
 namespace {
 
-constexpr size_t MOST_OTHER_ENGINES = 5;  // six viewports, ODE's first, in the window to come
+constexpr size_t MOST_OTHER_ENGINES = 6;  // every engine beside ODE: seven viewports, ODE's first, in the window
 
 #ifndef __EMSCRIPTEN__
 // Whose turn it is to step. One lane runs at a time: before each step a

@@ -36,7 +36,7 @@ namespace odelab {
 
 // The list --compare takes: engine names split at commas, each known and
 // available here (cli::requireAvailableEngine), not "ode" (which always runs
-// first), none twice, at most five. Throws UsageError naming the engine.
+// first), none twice, at most six. Throws UsageError naming the engine.
 std::vector<std::string> parseCompareList(const std::string& list);
 
 // <outDir>/<engine>: made when missing; a symbolic link or anything but a

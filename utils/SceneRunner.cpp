@@ -158,7 +158,7 @@ struct SceneCommandLine {
                  "print every engine --engine takes: whether it is here, its version and precision, what its best "
                  "settings change, and how to install a missing one; then exit");
     app.add_option("--engine", options.engine,
-                   "the engine that steps the scene: ode (the reference), bullet, mujoco, havok, jolt or rapier; the "
+                   "the engine that steps the scene: ode (the reference), bullet, mujoco, havok, jolt, rapier or physx; the "
                    "scene's own code measures it (doc/peers.md)")
         ->capture_default_str();
     app.add_option("--engine-setting", engineSetting,
@@ -167,7 +167,7 @@ struct SceneCommandLine {
         ->check(CLI::IsMember({"default", "best"}))
         ->capture_default_str();
     app.add_option("--compare", compare,
-                   "ENGINE,ENGINE,...: the same run on ODE and on each engine named (up to five), in lockstep: in "
+                   "ENGINE,ENGINE,...: the same run on ODE and on each engine named (up to six), in lockstep: in "
                    "the window one view per engine under one camera, every input to every engine; metrics as "
                    "ode.NAME, bullet.NAME, ...; the other engines' files in OUT-DIR/ENGINE/ (doc/peers.md, "
                    "\"Several engines in one run\")");

@@ -4,9 +4,11 @@
 // (engines/engines.json, written by scripts/web/build.sh: their versions,
 // none when the site was built without them).
 
-// "Havok, Jolt and Rapier" from the engines' names.
+// "Havok, Jolt, Rapier and PhysX" from the engines' names (a name written
+// otherwise than capitalized is in TITLES).
+const TITLES = { physx: "PhysX" };
 function spoken(names) {
-  const words = names.map((name) => name.charAt(0).toUpperCase() + name.slice(1));
+  const words = names.map((name) => TITLES[name] || name.charAt(0).toUpperCase() + name.slice(1));
   return words.length < 2 ? words.join("") : words.slice(0, -1).join(", ") + " and " + words[words.length - 1];
 }
 

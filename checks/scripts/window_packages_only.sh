@@ -114,7 +114,7 @@ if cmake -S "$source_dir" -B "$work/checks" -DCMAKE_BUILD_TYPE=Release "${launch
   listed=$(cd "$work/checks" && ctest -N 2>/dev/null)
   total=$(printf '%s\n' "$listed" | sed -n 's/^Total Tests: //p')
   [ "${total:-0}" -gt 0 ] || fail "no checks registered with GoogleTest visible"
-  left=$(printf '%s\n' "$listed" | grep -E "Test +#[0-9]+: ([a-z0-9]+_on_(havok|jolt|rapier)|engines_without_node|windows_|web_|lab_dask_|lab_slurm_|lab_report_quick)" |
+  left=$(printf '%s\n' "$listed" | grep -E "Test +#[0-9]+: ([a-z0-9]+_on_(havok|jolt|rapier|physx)|engine_physx_|engines_without_node|windows_|web_|lab_dask_|lab_slurm_|lab_report_quick)" |
          head -n 5)
   [ -z "$left" ] || fail "checks of a hidden part were registered: $left"
   echo "with the checks on: ${total:-0} checks registered, none of a hidden part"

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
-# Where Node.js is missing, Havok, Jolt and Rapier are named as missing,
+# Where Node.js is missing, Havok, Jolt, Rapier and PhysX are named as missing,
 # never fatal to anything else, and the lab's peers section says they were
 # skipped:
-#  - `test9 --list-engines` marks the three not available, saying to install
+#  - `test9 --list-engines` marks the four not available, saying to install
 #    Node.js, while ode, bullet and mujoco are listed as before;
 #  - `test9 --engine jolt` is refused with status 2 before anything runs,
 #    naming the engine and Node.js, and leaves nothing in its folder;
 #  - `odelab-report --quick --only peers` ends with status 0, writes peers.csv
-#    with no havok, jolt or rapier row, and RESULTS.md names the three skipped.
+#    with no havok, jolt, rapier or physx row, and RESULTS.md names the four skipped.
 # Node is hidden by ODELAB_NODE naming a program that does not exist, which
 # is where the adapters look first (peers/engines/NodeEngine.cpp).
 # Usage: without_node.sh SOURCE_DIR BUILD_TESTS_DIR WORK_DIR
@@ -21,7 +21,7 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 export ODELAB_NODE=/nonexistent/node
 
 listing=$("$build/test9" --list-engines)
-for engine in havok jolt rapier; do
+for engine in havok jolt rapier physx; do
   grep -q "^$engine: not available" <<<"$listing" || fail "--list-engines does not mark $engine not available"
 done
 grep -q "Node.js" <<<"$listing" || fail "--list-engines does not say Node.js is what is missing"
@@ -41,14 +41,14 @@ if [ $status -ne 0 ]; then
 else
   engines=$(grep -v '^#' "$work/report/peers.csv" | tail -n +2 | cut -d, -f2 | sort -u | tr '\n' ' ')
   case " $engines" in
-    *" havok "* | *" jolt "* | *" rapier "*) fail "peers.csv has rows of an engine that needs node: $engines" ;;
+    *" havok "* | *" jolt "* | *" rapier "* | *" physx "*) fail "peers.csv has rows of an engine that needs node: $engines" ;;
   esac
-  grep -qi "skipped.*havok.*jolt.*rapier" "$work/report/RESULTS.md" ||
-    fail "RESULTS.md does not say that havok, jolt and rapier were skipped"
+  grep -qi "skipped.*havok.*jolt.*rapier.*physx" "$work/report/RESULTS.md" ||
+    fail "RESULTS.md does not say that havok, jolt, rapier and physx were skipped"
 fi
 
 if [ $failures -eq 0 ]; then
-  echo "without node: havok, jolt and rapier named as missing, refused with status 2, skipped and said by the lab"
+  echo "without node: havok, jolt, rapier and physx named as missing, refused with status 2, skipped and said by the lab"
   rm -rf "$work"
 fi
 exit $((failures > 0))

@@ -192,7 +192,8 @@ class PeersRuns(unittest.TestCase):
         self.assertEqual(list(infos), ["ode", "bullet", "jolt"])
         self.assertEqual(skipped, {"mujoco": "libmujoco was not found when the program was built",
                                    "havok": "not listed by the program's --list-engines",
-                                   "rapier": "node was not found at configure time"})
+                                   "rapier": "node was not found at configure time",
+                                   "physx": "not listed by the program's --list-engines"})
 
     def test_the_timed_costs_take_the_engines_own_time(self):
         def run(engine_wall, cpu, sim=2.0):

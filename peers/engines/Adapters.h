@@ -17,7 +17,7 @@ std::unique_ptr<world::Engine> makeBullet(world::EngineSetting setting);
 world::EngineInfo mujocoInfo();
 std::unique_ptr<world::Engine> makeMujoco(world::EngineSetting setting);
 
-// Havok, Jolt and Rapier (WasmEngines.h), each in Node.js (peers/wasm/engine_server.js) ...
+// Havok, Jolt, Rapier and PhysX (WasmEngines.h), each in Node.js (peers/wasm/engine_server.js) ...
 world::EngineInfo nodeEngineInfo(const std::string& name);  // asks node whether it is there
 std::unique_ptr<world::Engine> makeNodeEngine(const std::string& name, world::EngineSetting setting);
 // ... or, in the browser build, in the page (web/engines/).

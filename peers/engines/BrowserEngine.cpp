@@ -116,7 +116,7 @@ world::EngineInfo browserEngineInfo(const std::string& name) {
 
 std::unique_ptr<world::Engine> makeBrowserEngine(const std::string& name, world::EngineSetting setting) {
   const WasmEngineKind* kind = wasmEngineKind(name);
-  if (!kind) throw world::EngineError("'" + name + "' is not one of havok, jolt, rapier");
+  if (!kind) throw world::EngineError("'" + name + "' is not one of " + wasmEngineList());
   const std::string answer =
       ask("open", name, setting == world::EngineSetting::Best ? "best" : "default", 0, "");
   if (refused(answer)) throw world::EngineError(std::string(kind->title) + ": " + answer.substr(7));

@@ -14,8 +14,18 @@ constexpr bool BROWSER = false;
 // The engines other than ODE in the order --list-engines prints them, each
 // whether or not it was built, so that a missing one is named with its cure.
 const std::vector<std::string>& engineNames() {
-  static const std::vector<std::string> names{"bullet", "mujoco", "havok", "jolt", "rapier"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all{"bullet", "mujoco"};
+    for (const std::string& name : wasmEngineNames()) all.push_back(name);
+    return all;
+  }();
   return names;
+}
+
+std::string engineList() {
+  std::string list = "ode";
+  for (const std::string& name : engineNames()) list += ", " + name;
+  return list;
 }
 
 [[maybe_unused]] world::EngineInfo notBuilt(const std::string& name, const std::string& why) {
@@ -78,7 +88,7 @@ std::unique_ptr<world::Engine> make(const std::string& name, world::EngineSettin
   if (isWasmEngine(name)) return makeBrowserEngine(name, setting);
 #endif
   (void)setting;
-  throw world::EngineError("engine '" + name + "' is not one of ode, bullet, mujoco, havok, jolt, rapier");
+  throw world::EngineError("engine '" + name + "' is not one of " + engineList());
 }
 
 }  // namespace

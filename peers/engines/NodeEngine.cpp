@@ -1,4 +1,4 @@
-// Havok, Jolt and Rapier run in Node.js, through their npm WebAssembly
+// Havok, Jolt, Rapier and PhysX run in Node.js, through their npm WebAssembly
 // builds: each engine is a child process (peers/wasm/engine_server.js)
 // spoken to over its pipes in JSON lines (doc/engine-protocol.md,
 // ProtocolEngine.cpp). Its stderr is the program's.
@@ -100,7 +100,7 @@ world::EngineInfo nodeEngineInfo(const std::string& name) {
 
 std::unique_ptr<world::Engine> makeNodeEngine(const std::string& name, world::EngineSetting setting) {
   const WasmEngineKind* kind = wasmEngineKind(name);
-  if (!kind) throw world::EngineError("'" + name + "' is not one of havok, jolt, rapier");
+  if (!kind) throw world::EngineError("'" + name + "' is not one of " + wasmEngineList());
   const std::vector<std::string> argv{nodeProgram(), "--no-concurrent-recompilation", serverPath(), kind->name,
                                       setting == world::EngineSetting::Best ? "best" : "default"};
   std::unique_ptr<ProtocolLink> link;

@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
   double seconds = 1.0;
   long long every = 1;
   bool best = false;
-  app.add_option("--engine", engineName, "bullet, mujoco, havok, jolt or rapier")->required();
+  app.add_option("--engine", engineName, "bullet, mujoco, havok, jolt, rapier or physx")->required();
   app.add_option("--world", worldPath, "the world file")->required();
   app.add_option("--seconds", seconds, "simulated seconds")->check(CLI::Range(0.0, 1e6));
   app.add_option("--every", every, "print every N steps (and the last)")->check(CLI::Range(1LL, 1000000000LL));

@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 'use strict';
-// engine_server: one of Havok, Jolt and Rapier (src/engines/) behind a pipe,
+// engine_server: one of Havok, Jolt, Rapier and PhysX (src/engines/names.js) behind a pipe,
 // for the C++ adapter peers/engines/NodeEngine.cpp, which starts it as
 //   node --no-concurrent-recompilation engine_server.js ENGINE default|best
 // and speaks doc/engine-protocol.md: one JSON message a line on stdin, one
@@ -12,7 +12,8 @@
 const readline = require('readline');
 const { Session } = require('./src/session');
 
-const ENGINES = { havok: './src/engines/havok', jolt: './src/engines/jolt', rapier: './src/engines/rapier' };
+const NAMES = require('./src/engines/names');
+const ENGINES = Object.fromEntries(NAMES.map((name) => [name, `./src/engines/${name}`]));
 
 function fail(message) {
   process.stderr.write(`engine_server: ${message}\n`);
@@ -58,13 +59,13 @@ async function serve(name, setting) {
 
 function main(argv) {
   if (argv[0] === '--info') {
-    if (!ENGINES[argv[1]]) fail(`--info: unknown engine '${argv[1]}' (havok, jolt or rapier)`);
+    if (!ENGINES[argv[1]]) fail(`--info: unknown engine '${argv[1]}' (${NAMES.join(', ')})`);
     info(argv[1]);
     return;
   }
   const [name, setting] = argv;
   if (!ENGINES[name] || !['default', 'best'].includes(setting))
-    fail('usage: engine_server.js havok|jolt|rapier default|best, or --info ENGINE');
+    fail(`usage: engine_server.js ${NAMES.join('|')} default|best, or --info ENGINE`);
   serve(name, setting);
 }
 

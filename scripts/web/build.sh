@@ -38,14 +38,14 @@ nice cmake --build "$build" -j "${ODELAB_JOBS:-2}" ||
 
 site=$build/site
 cp "$root"/web/*.html "$root"/web/*.js "$root"/web/*.css "$root"/web/*.svg "$site/"
-# Havok, Jolt and Rapier for the page (web/engines/): bundled where `npm ci`
+# The web engines for the page (web/engines/): bundled where `npm ci`
 # has brought esbuild (web/) and the engines' packages (peers/wasm/).
 # Without them the page runs ODE alone and its list of engines says why.
 rm -rf "$site/engines"
 if [ -d "$root/web/node_modules/esbuild" ] && [ -f "$root/peers/wasm/node_modules/.package-lock.json" ]; then
   node "$root/web/engines/bundle.mjs" "$site/engines" || { say "error: bundling the engines failed"; exit 1; }
 else
-  say "engines left out: run npm ci in web/ and in peers/wasm/ for Havok, Jolt and Rapier in the page"
+  say "engines left out: run npm ci in web/ and in peers/wasm/ for Havok, Jolt, Rapier and PhysX in the page"
   # None, for the index page, which offers no side-by-side links then.
   mkdir -p "$site/engines" && echo '{}' >"$site/engines/engines.json"
 fi

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """A compare run in the browser build against the desktop's runs (checks/web.cmake, label web).
 
-  check_compare.py --site DIR --native build/tests/test2 --out DIR --engines havok,jolt,rapier
+  check_compare.py --site DIR --native build/tests/test2 --out DIR --engines havok,jolt,rapier,physx
                    --metric NAME --tolerance X --view-bodies build/checks/view_bodies
                    [--seconds S] [--window-seconds W] -- ARGS...
 

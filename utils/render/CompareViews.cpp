@@ -29,7 +29,7 @@ struct Outline {
 const std::uint8_t OUTLINE_ALPHA = 110;
 const Outline OUTLINES[] = {{{255, 140, 30, OUTLINE_ALPHA}, "orange"}, {{40, 220, 255, OUTLINE_ALPHA}, "cyan"},
                             {{255, 60, 200, OUTLINE_ALPHA}, "magenta"}, {{250, 240, 60, OUTLINE_ALPHA}, "yellow"},
-                            {{120, 255, 90, OUTLINE_ALPHA}, "green"}};
+                            {{120, 255, 90, OUTLINE_ALPHA}, "green"}, {{255, 70, 70, OUTLINE_ALPHA}, "red"}};
 constexpr size_t OUTLINE_COUNT = sizeof OUTLINES / sizeof OUTLINES[0];
 
 // The grid for `count` views: columns, rows.

@@ -21,7 +21,7 @@ if (!out) {
 // loads no engine: that waits for its load()).
 const require = createRequire(import.meta.url);
 const versions = {};
-for (const name of ["havok", "jolt", "rapier"]) {
+for (const name of require("../../peers/wasm/src/engines/names.js")) {
   const { packageName } = require(`../../peers/wasm/src/engines/${name}.js`);
   versions[name] = JSON.parse(readFileSync(join(packages, packageName, "package.json"), "utf8")).version;
 }

@@ -1,4 +1,4 @@
-// The web engines inside the page: Havok, Jolt and Rapier from their npm
+// The web engines inside the page: Havok, Jolt, Rapier and PhysX from their npm
 // WebAssembly builds (peers/wasm's packages, bundled into the site by
 // bundle.mjs), each spoken to in doc/engine-protocol.md by the scene's
 // C++ adapter (peers/engines/BrowserEngine.cpp) through
@@ -6,13 +6,18 @@
 // as the desktop's Node.js server (peers/wasm/src/).
 import { Session } from "../../peers/wasm/src/session.js";
 import havokWasmAddress from "@babylonjs/havok/lib/umd/HavokPhysics.wasm";
+import physxWasmAddress from "physx-js-webidl/physx-js-webidl.wasm";
 
 // Each engine's adapter in a chunk of its own, loaded only when asked for.
 const ADAPTERS = {
   havok: () => import("../../peers/wasm/src/engines/havok.js"),
   jolt: () => import("../../peers/wasm/src/engines/jolt.js"),
   rapier: () => import("../../peers/wasm/src/engines/rapier.js"),
+  physx: () => import("../../peers/wasm/src/engines/physx.js"),
 };
+// The .wasm files of the engines whose packages do not inline theirs,
+// bundled beside the chunks (esbuild's file loader gives their addresses).
+const WASM_ADDRESSES = { havok: havokWasmAddress, physx: physxWasmAddress };
 // The packages' versions, written in by bundle.mjs from their package.json.
 const VERSIONS = ODELAB_ENGINE_VERSIONS;
 
@@ -33,7 +38,7 @@ async function load(names) {
     if (!ADAPTERS[name] || loaded[name]) continue;
     try {
       const adapter = (await ADAPTERS[name]()).default;
-      const wasmBinary = adapter.wasmFile ? await fetchBytes(havokWasmAddress) : undefined;
+      const wasmBinary = adapter.wasmFile ? await fetchBytes(WASM_ADDRESSES[name]) : undefined;
       loaded[name] = { adapter, module: await adapter.load({ wasmBinary }) };
     } catch (error) {
       loaded[name] = { error: `cannot load ${name}: ${error.message}` };

@@ -1,5 +1,5 @@
 """Live peers: the thesis's measurement scenes on ODE, Bullet, MuJoCo and,
-through their WebAssembly builds in Node.js, Havok, Jolt and Rapier, at the
+through their WebAssembly builds in Node.js, Havok, Jolt, Rapier and PhysX, at the
 same steps, each engine at its defaults and at its best (doc/peers.md).
 
 Every engine runs the scene's own program: `build/tests/testN --engine E
@@ -31,10 +31,10 @@ from .limit_test4 import judge as judge_test4
 from .limit_test5 import SETTLE as SETTLE_TEST5, SPAWN_INTERVAL as SPAWN_INTERVAL_TEST5, judge as judge_test5
 from .thesis import reference_rows
 
-ENGINES = ("ode", "bullet", "mujoco", "havok", "jolt", "rapier")
+ENGINES = ("ode", "bullet", "mujoco", "havok", "jolt", "rapier", "physx")
 # The engines that run through Node.js (WebAssembly): ten to a hundred times
 # ODE's cost, so fewer steps in the full report (WEB_STEPS).
-NODE_ENGINES = ("havok", "jolt", "rapier")
+NODE_ENGINES = ("havok", "jolt", "rapier", "physx")
 # Below this an error is rounding, not physics: such settings tie, and the
 # cheapest wins. The web peers hold their state in float32: there an error
 # below 1e-7 is rounding.
@@ -220,7 +220,7 @@ def available_engines(listed):
 
 def engine_name(engine, info=None):
     """"Bullet 3.24": the engine and its version as --list-engines gives it."""
-    name = {"ode": "ODE", "mujoco": "MuJoCo"}.get(engine, engine.capitalize())
+    name = {"ode": "ODE", "mujoco": "MuJoCo", "physx": "PhysX"}.get(engine, engine.capitalize())
     version = (info or {}).get("version")
     return f"{name} {version}" if version else name
 
@@ -315,7 +315,7 @@ def thesis_ode(scene_name):
 
 class Peers(Experiment):
     name = "peers"
-    title = "ODE, Bullet, MuJoCo, Havok, Jolt and Rapier on the same scenes"
+    title = "ODE, Bullet, MuJoCo, Havok, Jolt, Rapier and PhysX on the same scenes"
     section = 5
     programs = tuple(scene.name for scene in SCENES)
     cost = (1200.0, 40.0)

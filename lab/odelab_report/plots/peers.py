@@ -4,7 +4,7 @@ per engine and setting."""
 from .common import HAVOK_STYLE, new_figure, save, serialized
 
 ENGINE_COLOURS = {"ode": "#2ca02c", "bullet": "#d62728", "mujoco": "#1f77b4", "havok": "#ff7f0e", "jolt": "#9467bd",
-                  "rapier": "#8c564b"}
+                  "rapier": "#8c564b", "physx": "#17becf"}
 SETTING_STYLES = {"default": dict(linestyle="--", marker="o"), "best": dict(linestyle="-", marker="s")}
 
 
