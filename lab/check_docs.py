@@ -16,7 +16,10 @@ either
   figure of the link's text must be the number in that cell at the precision
   written (0.064 for 0.06403; a percentage also for the fraction: 17% for
   0.1704; a whole number's trailing zeros are not significant: 11900 for
-  11892). Or
+  11892). A median with its range cites one cell per figure, in order:
+  [47.7 [44.0-51.2]](measurements/compare-window.csv#scene=test2&engine_count=2&part=ode&cell=fps&cell=fps_min&cell=fps_max)
+  (the link's text then holds exactly as many figures as the key names
+  cells, and a link's text may hold one level of [brackets]). Or
 - generated: inside a block between `<!-- BEGIN GENERATED: NAME -->` and
   `<!-- END GENERATED: NAME -->` that a generator of the lab writes from
   committed CSVs (GENERATORS below); the block must be exactly what the
@@ -63,7 +66,8 @@ NAMES_BEFORE_VERSION = ("ode", "version", "v", "havok", "bullet", "mujoco", "pyt
 SECTION_WORDS = ("chapter", "section", "thesis", "thesis's", "figure", "table", "issue", "§", "chapters", "sections")
 NUMBER = re.compile(r"(?<![\w./])(-?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:[eE][-+]?\d+)?)(?![\w.]*\d)"
                     r"(\s?%|\s?" + UNITS + r"(?![\w]))?")
-CITATION = re.compile(r"\[([^\]\n]+)\]\(([^)\s#]+\.csv)#([^)\s]+)\)")
+# The link's text may hold one level of brackets: [47.7 [44.0-51.2]](...).
+CITATION = re.compile(r"\[((?:[^\[\]\n]|\[[^\[\]\n]*\])+)\]\(([^)\s#]+\.csv)#([^)\s]+)\)")
 # A block's markers each on a line of their own (a marker quoted in a sentence is none).
 BLOCK = re.compile(r"^<!-- BEGIN GENERATED: ([^>]*?) -->\n(.*?)\n?^<!-- END GENERATED: [^>]*?-->$", re.S | re.M)
 ALLOWANCE = Path("lab") / "reference" / "docs-uncited.txt"
@@ -114,27 +118,28 @@ def same(cell, wanted):
         return cell.strip() == wanted.strip()
 
 
-def cited_cell(rows, key):
-    """(the cell's text, None) that `key` (column=value&...&cell=COLUMN)
-    names in `rows` (lists of cells, the first the column names), or (None,
-    why not)."""
+def cited_cells(rows, key):
+    """([the text of each cell], None) that `key` (column=value&...&cell=
+    COLUMN, one or more cells) names in `rows` (lists of cells, the first the
+    column names), or (None, why not)."""
     if not rows:
         return None, "an empty CSV"
     header, pairs = rows[0], parse_qsl(key, keep_blank_values=True)
     columns = [value for name, value in pairs if name == CELL]
     wanted = [(name, value) for name, value in pairs if name != CELL]
-    if len(columns) != 1:
+    if not columns:
         return None, f"names no cell (add &{CELL}=COLUMN: the column the figure is read from)"
-    if columns[0] not in header:
-        return None, f"names the cell '{columns[0]}', which is no column of the CSV"
+    missing = [c for c in columns if c not in header]
+    if missing:
+        return None, f"names the cell '{missing[0]}', which is no column of the CSV"
     if not wanted or any(name not in header for name, _ in wanted):
         return None, "selects no row (a column it names is not in the CSV)"
     selected = [row for row in rows[1:] if all(len(row) > header.index(name) and same(row[header.index(name)], value)
                                                for name, value in wanted)]
     if len(selected) != 1:
         return None, f"selects {len(selected)} rows, not one"
-    row, i = selected[0], header.index(columns[0])
-    return (row[i] if len(row) > i else ""), None
+    row = selected[0]
+    return [row[header.index(c)] if len(row) > header.index(c) else "" for c in columns], None
 
 
 def check_citations(root, doc, text, tables):
@@ -148,13 +153,18 @@ def check_citations(root, doc, text, tables):
         if path not in committed_paths:
             problems.append(f"{name}:{line}: cites {target}, which is no committed CSV")
             continue
-        cell, why = cited_cell(committed_paths[path], key)
+        cells, why = cited_cells(committed_paths[path], key)
         if why:
             problems.append(f"{name}:{line}: the citation {target}#{key} {why}")
             continue
-        values = sorted(numbers_in(cell.replace(",", "")))
-        for _, written, value, unit in figures(link_text):
-            if not is_held(values, value, written, unit):
+        written_figures = figures(link_text)
+        if len(cells) > 1 and len(written_figures) != len(cells):
+            problems.append(f"{name}:{line}: the citation {target}#{key} names {len(cells)} cells for "
+                            f"{len(written_figures)} figures (one cell per figure, in order)")
+            continue
+        for n, (_, written, value, unit) in enumerate(written_figures):
+            cell = cells[n] if len(cells) > 1 else cells[0]
+            if not is_held(sorted(numbers_in(cell.replace(",", ""))), value, written, unit):
                 problems.append(f"{name}:{line}: {shown(written, unit)} is not the cell it cites "
                                 f"({target}#{key}: '{cell}')")
     return problems

@@ -31,32 +31,11 @@ SEED_GLOB = str(Path(__file__).resolve().parents[2].parent / "shared" / "seeds" 
 HAVOK_TESTS = ("test1", "test2", "test4", "test5", "test6", "test7", "test9", "test10")
 REASONS = ("not yet measured", "not checkable")
 
-# Figures the thesis writes in words; each with the value the lab reads it as
-# and why. A figure written in digits is parsed (number_of).
-WORDS = {
-    "v reálném čase": 1.0,              # "in real time": a real-time factor of 1
-    "na šest desetinných míst": 5e-7,   # "to six decimals": half a unit of the sixth decimal
-    "polovinu": 0.5,                    # "to half"
-    "na nulu": 0.0,                     # "to zero"
-    "nad nulou": 0.0,                   # "above zero"
-}
+from odelab_report.thesis_quotes import number_of, quoted  # noqa: E402  (light: no experiments imported)
+
 # A number as the reference texts write one: not inside a word (test8), with
 # an optional exponent and percent sign.
 NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?:e-?\d+)?%?")
-
-
-def number_of(token):
-    """The value of a figure as the thesis writes it: 0.75%, 29.250, 5000.0,
-    10−3 (ten to the minus three), 250 ms−1 (a speed)."""
-    if token in WORDS:
-        return WORDS[token]
-    text = token.replace("\u2212", "-").removesuffix(" ms-1").strip()
-    power = re.fullmatch(r"10-(\d+)", text)
-    if power:
-        return 10.0 ** -int(power.group(1))
-    if text.endswith("%"):
-        return float(text[:-1]) / 100
-    return float(text)
 
 
 def numbers_in(text):
@@ -162,6 +141,41 @@ class ThesisFiguresAreQuoted(unittest.TestCase):
         self.assertEqual(number_of("10\u22123"), 1e-3)
         self.assertEqual(number_of("3630.0 ms\u22121"), 3630.0)
         self.assertEqual(numbers_in("dips (test8) at 0.75% (min 29.250 J), 1e-6"), [0.0075, 29.25, 1e-6])
+
+
+class ExperimentsJudgeByQuotedFigures(unittest.TestCase):
+    """The figures the experiments judge the thesis by are read from the
+    quoted sentences, not typed: a typed one would escape the checks above."""
+
+    EXPERIMENTS = Path(__file__).resolve().parents[1] / "odelab_report" / "experiments"
+    # The thesis's figures and settings each module compares with or runs at.
+    READ = {"thesis_claims.py": ("THESIS_GAIN", "THESIS_HALVES", "THESIS_TENFOLD", "MASSES", "CFM_SMALL",
+                                 "AUTO_DISABLE", "CAP"),
+            "thesis_havok.py": ("THESIS_LOST", "THESIS_HAVOK_KG", "THESIS_HAVOK_MS")}
+
+    def test_each_thesis_figure_is_read_from_a_quote(self):
+        for module, names in self.READ.items():
+            source = (self.EXPERIMENTS / module).read_text()
+            for name in names:
+                assignment = re.search(rf"^{name} = (.*)$", source, re.M)
+                self.assertIsNotNone(assignment, f"{module}: no {name}")
+                self.assertIn("quoted(", assignment.group(1), f"{module}: {name} is typed, not read from a quote")
+        # Any other THESIS_ constant is a thesis figure too.
+        for path in self.EXPERIMENTS.glob("*.py"):
+            for name, value in re.findall(r"^(THESIS_\w+) = (.*)$", path.read_text(), re.M):
+                self.assertIn("quoted(", value, f"{path.name}: {name} is typed, not read from a quote")
+
+    def test_the_values_read(self):
+        self.assertEqual(quoted("thesis.csv:test3_iterations_on", "20%"), 0.2)
+        self.assertEqual(quoted("thesis.csv:test8_mass", "1000 tun"), 1e6)
+        self.assertEqual(quoted("thesis.csv:test1_cfm6", "10\u22126"), 1e-6)
+        self.assertEqual(quoted("thesis-havok.csv:test10", "350 ms\u22121"), 350.0)
+
+    def test_a_figure_no_quote_lists_fails(self):
+        with self.assertRaises(ValueError):
+            quoted("thesis.csv:test3_iterations_on", "25%")
+        with self.assertRaises(ValueError):  # quoted, but for another row
+            quoted("thesis.csv:test10_step", "20%")
 
 
 if __name__ == "__main__":

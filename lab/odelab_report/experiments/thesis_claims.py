@@ -6,6 +6,7 @@ to its rows; the runs whose settings equal one of thesis.py's share its
 (untimed, deterministic) result."""
 
 from .. import markdown as md
+from ..thesis_quotes import quoted
 from ..runner import median, RunSpec
 from .limit_test8 import run_spec as test8_spec
 
@@ -14,19 +15,20 @@ KEYS = ["test1_erp", "test2_dip", "test2_erp0", "test3_left_active", "test3_iter
         "test5_auto_disable", "test6_cap", "test8_where", "test8_erp1", "test8_mass", "test9_any_erp",
         "test10_step", "test1_cfm6", "test9_xz"]
 
-THESIS_GAIN = 0.20          # 3.5: 20 -> 8 iterations gave "about 20%" more frames per second
-THESIS_HALVES = 2.0         # 5.9: ERP 1.0 halves the error of ERP 0.4
-THESIS_TENFOLD = 10.0       # 5.11: a tenfold smaller step, a tenfold higher speed
+# The thesis's figures, read from the quoted sentences that write them (thesis_quotes.py).
+THESIS_GAIN = quoted("thesis.csv:test3_iterations_on", "20%")    # 5.4: 20 -> 8 iterations, "about 20%" more fps
+THESIS_HALVES = 1 / quoted("thesis.csv:test8_erp1", "polovinu")  # 5.9: ERP 1.0 halves the error of ERP 0.4
+THESIS_TENFOLD = quoted("thesis.csv:test10_step", "desetinásobek")  # 5.11: a tenth of the step, a tenfold speed
 CLOSE = 1.5                 # as thesis.py: "about X" is reproduced within this factor
 BOTTOM_DEG = 10.0           # the stretch is "at the bottom" within 10 degrees of it
 SINK_FACTOR = 2.0           # a cube sinks: held = 0, or twice the default setting's overlap
 EXACT_M = 5e-7              # test9: exact to six decimals (as thesis.py's test9 row)
-MASSES = (5.0, 5000.0, 1e6)  # 5.9: "od 5.0 kg, přes 5000.0 kg až na ... 1000 tun"
+MASSES = tuple(quoted("thesis.csv:test8_mass", m) for m in ("5.0", "5000.0", "1000 tun"))  # 5.9, in kg
 SAME_STRETCH = 1.1          # 5.9's "the same stretch": largest / smallest across the masses at most this
 REBOUND_OK = 0.01           # test1: a rebound within 0.01 of e^2 (as thesis.py's test1 row)
-CFM_SMALL = 1e-6            # 5.2: "CFM ... 10−6 a méně" still bounces correctly
-AUTO_DISABLE = 0.3          # 5.6: the thresholds the thesis tried on the stack of plates
-CAP = 0.01                  # 5.7: dWorldSetMaxAngularSpeed(world, 0.01)
+CFM_SMALL = quoted("thesis.csv:test1_cfm6", "10\u22126")  # 5.2: "CFM ... 10−6 a méně" still bounces correctly
+AUTO_DISABLE = quoted("thesis.csv:test5_auto_disable", "0.3")  # 5.6: the threshold the thesis tried on the plates
+CAP = quoted("thesis.csv:test6_cap", "0.01")  # 5.7: dWorldSetMaxAngularSpeed(world, 0.01)
 ODE_THRESHOLD = 0.01        # ODE's own auto-disable thresholds, where 5.4 saw fallen plates stay active
 ITERATION_REPEATS = (2, 5)  # test3's 8 against 20 iterations: interleaved timed runs each (quick, full)
 ANY_ERP = (0.0, 1.0)        # test9's ends of the ERP range

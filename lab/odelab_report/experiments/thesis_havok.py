@@ -7,6 +7,7 @@ by a stated rule. Havok runs as a user gets it ("default"), except where
 the thesis speaks of Havok after its modifications ("best")."""
 
 from .. import markdown as md, swing_energy
+from ..thesis_quotes import quoted
 from ..claims import Claim, q as column, slot
 from ..runner import RunSpec, median
 from .base import Experiment, Outcome
@@ -14,9 +15,10 @@ from .limit_test5 import SETTLE, SPAWN_INTERVAL
 from .peers import list_engines, scan_ended_at_speed_cap
 
 CLOSE = 1.5              # as thesis.py: "about X" within this factor
-THESIS_LOST = 0.50       # 5.3: Havok lost up to 50% of the energy within a minute
-THESIS_HAVOK_KG = 4000.0  # 5.5: Havok held 4000 kg; ODE twice as much
-THESIS_HAVOK_MS = 350.0  # 5.11: Havok stopped every cube up to 350 m/s
+# The thesis's figures, read from the quoted sentences that write them (thesis_quotes.py).
+THESIS_LOST = quoted("thesis-havok.csv:test2", "50%")       # 6: Havok lost up to 50% of the energy
+THESIS_HAVOK_KG = quoted("thesis-havok.csv:test4", "4000.0")  # 5.5: Havok held 4000 kg; ODE twice as much
+THESIS_HAVOK_MS = quoted("thesis-havok.csv:test10", "350 ms\u22121")  # 5.11: Havok stopped every cube up to 350 m/s
 EXACT_M = 5e-7           # test9: exact to six decimals
 PUSHED_OUT_M = 0.1       # test5: a plate pushed out of the column (as thesis.py's test5 rule)
 JOINT_HOLDS_M = 0.02     # test7: as thesis.py's test7 row
