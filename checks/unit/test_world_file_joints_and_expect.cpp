@@ -16,7 +16,7 @@ using namespace odelab::world;
 std::string worldWith(const std::string& joint, const std::string& measures = "[]") {
   return R"({"format": "odelab-world", "version": 1, "settings": {"step": 0.001, "gravity": [0, -9.81, 0]},
     "bodies": [{"mass": 1, "inertia": [0.01, 0.01, 0.01, 0, 0, 0], "position": [0, 1, 0]}],
-    "geoms": [{"shape": "box", "body": 0, "size": [0.1, 0.1, 0.1]}, {"shape": "plane", "plane": [0, 1, 0, 0]}],
+    "geoms": [{"shape": "box", "body": 0, "size": [0.1, 0.1, 0.1]}, {"shape": "plane", "body": -1, "plane": [0, 1, 0, 0]}],
     "joints": [)" + joint + R"(], "surfaces": [{"mu": 0.5}], "measures": )" + measures + "}";
 }
 

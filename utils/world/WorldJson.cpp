@@ -421,7 +421,8 @@ json writeMeasure(const Measure& m) {
       break;
   }
   if (m.expectNever) j["expect"] = "never";
-  if (!std::isnan(m.expect)) j["expect"] = m.expect;
+  if (!std::isnan(m.expect))
+    j["expect"] = m.kind == MeasureKind::Tunnelling ? json(static_cast<int>(m.expect)) : json(m.expect);  // a count
   return j;
 }
 
