@@ -6,7 +6,8 @@ it after the quick report on checks/worlds/):
   lines with the three questions, each answered by at least one sentence;
 - every CSV the world report writes is there, starts with the run header and
   has at least one row; world-sweep.csv has exactly one reference row and one
-  row of the world's own settings, the reference's deviation 0;
+  row of the world's own settings, the reference's agreement with itself
+  (ode_max_dev) 0;
 - every plot RESULTS.md embeds exists as a valid PNG and its SVG parses;
 - every sentence in claims.csv, recomputed from the folder's CSVs, gives the
   same text and its rule holds, and stands in RESULTS.md.
@@ -58,8 +59,8 @@ def check(folder):
         refs = [r for r in rows if r["reference"] == "1"]
         if len(refs) != 1 or len([r for r in rows if r["own"] == "1"]) != 1:
             problems.append("world-sweep.csv: not exactly one reference row and one row of the world's settings")
-        elif float(refs[0]["max_dev"]) != 0.0:
-            problems.append(f"world-sweep.csv: the reference deviates from itself by {refs[0]['max_dev']}")
+        elif float(refs[0]["ode_max_dev"]) != 0.0:
+            problems.append(f"world-sweep.csv: the reference deviates from itself by {refs[0]['ode_max_dev']}")
     for stem in sorted(set(re.findall(r"!\[[^\]]*\]\(([\w.-]+)\.png\)", text))):
         for suffix, checker in ((".png", check_png), (".svg", check_svg)):
             path = folder / (stem + suffix)

@@ -170,6 +170,9 @@ class AbstractWindow {
   // The live plot's value after a step and its label with unit (default: contacts).
   virtual bool plotValue(double& value) const;
   virtual std::string plotLabel() const { return "contacts in the last step"; }
+  // A scene built from a world file: the file, for another engine to be
+  // handed its values rather than ODE's read-back (null: none).
+  virtual const world::FileOrigin* fileOrigin() const { return nullptr; }
 
   // Scene keys; a view key changes only the view and is not recorded. Binding
   // a key twice fails at start-up; rebindKey takes over a shared one (R).

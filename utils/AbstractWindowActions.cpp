@@ -68,7 +68,7 @@ void AbstractWindow::changeKnob(Knob& knob, double value, const char* source) {
   if (change.empty()) return;
   // Only an ERP or CFM change walks the joints; gravity, the step or the solver do not.
   if (tuning_.settings_.erp != oldErp || tuning_.settings_.cfm != oldCfm)
-    run_.carryWorldErpCfmToBallJoints(oldErp, oldCfm, tuning_.settings_.erp, tuning_.settings_.cfm);
+    run_.carryWorldErpCfmToJoints(oldErp, oldCfm, tuning_.settings_.erp, tuning_.settings_.cfm);
   logAction(byKey ? change : std::string(source) + ": " + change);
   engineSettingsChanged();
   if (knob.appliesToWorld) {

@@ -31,7 +31,7 @@ void AbstractWindow::startEngine() {
   try {
     engine_.start(world::makeEngine(options_.engine, setting), options_.engine, setting,
                   world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_)),
-                  run_.objects_, surfaceOf());
+                  run_.objects_, surfaceOf(), fileOrigin());
   } catch (const world::EngineError& error) {
     throw world::EngineError("engine " + options_.engine + ": " + error.what());
   }

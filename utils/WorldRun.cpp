@@ -95,14 +95,18 @@ void WorldRun::freeThreading() {
   stepThreading_ = nullptr;
 }
 
-void WorldRun::carryWorldErpCfmToBallJoints(double oldErp, double oldCfm, double erp, double cfm) const {
+void WorldRun::carryWorldErpCfmToJoints(double oldErp, double oldCfm, double erp, double cfm) const {
   std::set<dJointID> joints;
   for (const dBodyID body : bodiesOf(objects_))
     for (int i = 0; i < dBodyGetNumJoints(body); ++i) joints.insert(dBodyGetJoint(body, i));
   for (const dJointID joint : joints) {
-    if (dJointGetType(joint) != dJointTypeBall) continue;
-    if (dJointGetBallParam(joint, dParamERP) == oldErp) dJointSetBallParam(joint, dParamERP, erp);
-    if (dJointGetBallParam(joint, dParamCFM) == oldCfm) dJointSetBallParam(joint, dParamCFM, cfm);
+    if (dJointGetType(joint) == dJointTypeBall) {
+      if (dJointGetBallParam(joint, dParamERP) == oldErp) dJointSetBallParam(joint, dParamERP, erp);
+      if (dJointGetBallParam(joint, dParamCFM) == oldCfm) dJointSetBallParam(joint, dParamCFM, cfm);
+    } else if (dJointGetType(joint) == dJointTypeFixed) {
+      if (dJointGetFixedParam(joint, dParamERP) == oldErp) dJointSetFixedParam(joint, dParamERP, erp);
+      if (dJointGetFixedParam(joint, dParamCFM) == oldCfm) dJointSetFixedParam(joint, dParamCFM, cfm);
+    }
   }
 }
 

@@ -58,12 +58,12 @@ class WorldRun {
   void freeThreading();    // after destroy(), before dCloseODE()
   // Moves every geom into a new space of that kind (a quadtree covers `bounds`).
   void setSpaceKind(SpaceKind kind, const SceneBounds& bounds);
-  // ODE copies the world's ERP and CFM into a ball joint when it is made
-  // (dParamERP, dParamCFM); a later dWorldSetERP / dWorldSetCFM does not
-  // reach it. After a live change, every ball joint still at the old world
+  // ODE copies the world's ERP and CFM into a ball or fixed joint when it is
+  // made (dParamERP, dParamCFM); a later dWorldSetERP / dWorldSetCFM does not
+  // reach it. After a live change, every such joint still at the old world
   // values takes the new ones, so that F3 / F4 act as the same values given
   // at the start do; one a scene set on purpose keeps its own.
-  void carryWorldErpCfmToBallJoints(double oldErp, double oldCfm, double erp, double cfm) const;
+  void carryWorldErpCfmToJoints(double oldErp, double oldCfm, double erp, double cfm) const;
   // The cheap test behind stateProblem(), inline: it runs after every step.
   bool stateSuspicious() const { return watch_.suspicious(objects_); }
   std::string stateProblem() const;

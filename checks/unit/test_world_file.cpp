@@ -44,7 +44,6 @@ World twoBodies() {
   hinge.body1 = 0;
   hinge.anchor = {0, 7, 0};
   hinge.lowStop = -1;
-  hinge.cfm = 1e-5;
   w.joints = {hinge};
   Surface bouncy;
   bouncy.bounce = true;

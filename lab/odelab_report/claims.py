@@ -48,6 +48,19 @@ def best_of(engines, values, cost, higher_better):
     return order[0]
 
 
+def best_or_tie(values, lo, hi):
+    """The one rule for naming a winner (lower is better): the indices of
+    the best value and of every other whose range [lo, hi] (its measured
+    spread) reaches the best's; the best is named alone only when it beats
+    every other by more than their spreads. None values take no part; []
+    when none has a value."""
+    known = [i for i, v in enumerate(values) if v is not None]
+    if not known:
+        return []
+    best = min(known, key=lambda i: values[i])
+    return [best] + sorted((i for i in known if i != best and lo[i] <= hi[best]), key=lambda i: values[i])
+
+
 def cheapest_set(errors, cost, lo, hi, level):
     """The indices `cheapest` names, cheapest first: one, or a tie within the
     timing's scatter; empty when no setting reaches `level`."""
@@ -89,7 +102,8 @@ def runs_cost(runs, wanted, sim_seconds):
     return [statistics.median(costs), min(costs), max(costs), len(costs)]
 
 
-_SAFE.update(median=statistics.median, cheapest=cheapest, cheapest_set=cheapest_set, best_of=best_of, num=md.num,
+_SAFE.update(median=statistics.median, cheapest=cheapest, cheapest_set=cheapest_set, best_of=best_of,
+             best_or_tie=best_or_tie, num=md.num,
              pct=md.pct, speed_options=speed_options, runs_cost=runs_cost, dict=dict)
 
 

@@ -89,8 +89,10 @@ def write(path, header, outcomes, runs_csv, elapsed_text, command, quick, partia
 FIRST_SCREEN_INTRO = """Each row: one quantity at one setting (its second cell); every cell read from this report's
 CSVs by the rule in claims.csv (lab/check_report.py recomputes them). Cost: CPU s per simulated s,
 median [min-max] over the timed repeats, this machine; the best other engine's: the engine's own seconds
-(its collision and step calls) per simulated s; other engines at their defaults on the scene's own world,
-like with like (same step and surface; a tie within the timing's scatter says so). "n/a": why no figure."""
+(its collision and step calls) per simulated s; other engines at their defaults on the scene's own world, at
+the same step and surface, each still with its own solver iterations, precision (Havok, Jolt and Rapier compute
+in float32), damping and speed caps ([their notes](#exp-peers), doc/peers.md); a tie within the timing's scatter
+says so. "n/a": why no figure."""
 
 FIRST_SCREEN_BELOW = """Below: [what decides each figure](#what-decides-each-figure),
 [the machine](#run), [the thesis's table](#exp-thesis), [ties and costs](#exp-speed-test9) (§3),

@@ -45,8 +45,9 @@ FALLBACK = ["contacts", "disabled_bodies"]
 
 
 class Measurement:
-    def __init__(self, name, kind, rule, scale=None, scale_text=""):
+    def __init__(self, name, kind, rule, scale=None, scale_text="", measure=None):
         self.name, self.kind, self.rule = name, kind, rule
+        self.measure = measure  # the world's entry in `measures` it comes from (None: a fallback)
         self.scale = scale  # None: |reference| (RELATIVE)
         self.scale_text = scale_text
 
@@ -110,7 +111,7 @@ def measurements(world):
                 if length is None:
                     continue  # nothing moving has a size: no length to compare with
                 scale, text = length, f"{length:.3g} m, the smallest geom on a body"
-            found.append(Measurement(name, kind, rule, scale, text))
+            found.append(Measurement(name, kind, rule, scale, text, measure))
     if not found:
         found = [Measurement(name, "run", COUNT, 1.0, "1") for name in FALLBACK]
     return found

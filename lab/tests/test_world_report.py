@@ -157,23 +157,31 @@ class FirstScreen(unittest.TestCase):
         self.assertEqual(self.say(wfs.limit("blow-up")), "Along the step (QuickStep 20) it blows up (status 3) "
                          "even at 0.00025 s, the smallest step tried.")
 
-    def engines(self, rows):
+    def engines(self, rows, kinds=("analytic", "conservation")):
         self.write(wfs.ENGINES, [dict(engine=e, setting=s, status=st, max_dev=d, engine_s_per_sim_s=c)
                                  for e, s, st, d, c in rows])
+        self.write(wfs.MEASURES, [dict(measurement=f"m{i}", reference_kind=k) for i, k in enumerate(kinds)])
 
-    def test_engine_better_or_not(self):
-        self.engines([("ode", "default", "ran", 0.02, 0.1), ("ode", "best", "ran", 0.001, 0.3),
-                      ("bullet", "default", "ran", 0.05, 0.2), ("bullet", "best", "ran", 0.01, 0.5),
+    def test_engine_best_beyond_the_spread_or_a_tie(self):
+        self.engines([("ode", "default", "ran", 0.02, 0.1), ("ode", "best", "ran", 0.015, 0.3),
+                      ("bullet", "default", "ran", 0.05, 0.2), ("bullet", "best", "ran", 0.001, 0.5),
                       ("jolt", "default", "missing", None, None), ("jolt", "best", "missing", None, None)])
-        self.assertEqual(self.say(wfs.engines()), "Another engine comes closer to ODE's reference at the world's "
-                         "step: bullet (best), largest deviation 1% against ODE's 2% at the world's settings, at 0.5 "
-                         "engine s per simulated s against ODE's 0.1.")
-        self.engines([("ode", "default", "ran", 0.001, 0.1), ("bullet", "default", "ran", 0.05, 0.2)])
-        self.assertIn("No other engine comes closer", self.say(wfs.engines()))
+        self.assertEqual(self.say(wfs.engines()), "Closest to each measurement's reference (analytic, conservation; "
+                         "world-measures.csv) at the world's step: bullet (best), largest deviation 0.1%, ahead of "
+                         "every other engine and setting by more than 0.1%, at 0.5 engine s per simulated s; ODE at "
+                         "the world's settings: 2%.")
+        # 0.05% apart: within the spread, so no one engine is named
+        self.engines([("ode", "default", "ran", 0.0010, 0.1), ("bullet", "default", "ran", 0.0015, 0.2),
+                      ("mujoco", "default", "ran", 0.05, 0.2)])
+        self.assertEqual(self.say(wfs.engines()), "No engine is closest alone to each measurement's reference "
+                         "(analytic, conservation; world-measures.csv) at the world's step: a tie within 0.1%: "
+                         "ode (default, 0.1%), bullet (default, 0.15%).")
 
     def test_ode_missing_a_measurement(self):
         self.engines([("ode", "default", "ran", math.inf, 0.1), ("bullet", "default", "ran", 0.05, 0.2)])
-        self.assertIn("no engine is ranked", self.say(wfs.engines()))
+        self.assertIn("bullet (default), largest deviation 5%", self.say(wfs.engines()))
+        self.engines([("ode", "default", "ran", math.inf, 0.1), ("bullet", "default", "ran", math.inf, 0.2)])
+        self.assertIn("No engine ran the world with every measurement", self.say(wfs.engines()))
 
     def test_no_other_engine_ran(self):
         self.engines([("ode", "default", "ran", 0.001, 0.1), ("ode", "best", "ran", 0.0, 0.2),

@@ -41,14 +41,17 @@ BodyState EngineLink::odeState(dBodyID body) const {
 }
 
 void EngineLink::start(std::unique_ptr<Engine> engine, const std::string& name, EngineSetting setting, Settings settings,
-                       const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf) {
+                       const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf,
+                       const FileOrigin* file) {
   engine_ = std::move(engine);
+  file_ = file ? *file : FileOrigin{};
   name_ = name;
   setting_ = setting;
   world_ = World{};
   index_ = OdeIndex{};
   world_.settings = std::move(settings);
   describeNewObjects(objects, surfaceOf, world_, index_);
+  adoptFile(0);
   engine_->build(world_);
   written_.clear();
   for (const dBodyID body : index_.bodies) written_.push_back(odeState(body));
@@ -85,6 +88,7 @@ void EngineLink::sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& o
     const int firstGeom = static_cast<int>(world_.geoms.size());
     const int firstJoint = static_cast<int>(world_.joints.size());
     describeNewObjects(objects, surfaceOf, world_, index_);
+    adoptFile(static_cast<size_t>(firstJoint));
     if (static_cast<int>(world_.geoms.size()) > firstGeom) {
       engine_->add(world_, firstBody, firstGeom, firstJoint);
       for (size_t i = static_cast<size_t>(firstBody); i < index_.bodies.size(); ++i)
@@ -113,7 +117,41 @@ void EngineLink::sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& o
 void EngineLink::changeSettings(const Settings& settings, const SurfaceOf& surfaceOf) {
   world_.settings = settings;
   describeSurfaces(surfaceOf, world_, index_);
+  adoptFileSurfaces();
   engine_->changeSettings(world_);
+}
+
+void EngineLink::adoptFile(size_t firstJoint) {
+  if (!file_.world) return;
+  for (size_t k = firstJoint; k < world_.joints.size(); ++k) {
+    const int own = file_.jointOf(index_.joints[k]);
+    if (own < 0) continue;
+    world_.joints[k].erp = file_.world->joints[static_cast<size_t>(own)].erp;
+    world_.joints[k].cfm = file_.world->joints[static_cast<size_t>(own)].cfm;
+  }
+  adoptFileSurfaces();
+}
+
+// The file's surface list, its default and its pairs, as long as every pair
+// that may touch still meets the file's surface: once the scene changed one
+// (the mu knob overrides every contact), what ODE's callback gives is the world.
+void EngineLink::adoptFileSurfaces() {
+  if (!file_.world) return;
+  const World& file = *file_.world;
+  std::vector<PairSurface> pairs;
+  const int count = static_cast<int>(world_.geoms.size());
+  for (int b = 1; b < count; ++b)
+    for (int a = 0; a < b; ++a) {
+      if (!index_.geoms[static_cast<size_t>(a)] || !index_.geoms[static_cast<size_t>(b)] || !world_.mayTouch(a, b)) continue;
+      const int fa = file_.geomOf(index_.geoms[static_cast<size_t>(a)]);
+      const int fb = file_.geomOf(index_.geoms[static_cast<size_t>(b)]);
+      if (fa < 0 || fb < 0 || world_.surfaceBetween(a, b) != file.surfaceBetween(fa, fb)) return;
+      for (const PairSurface& own : file.pairSurfaces)
+        if ((own.geom1 == fa && own.geom2 == fb) || (own.geom1 == fb && own.geom2 == fa)) pairs.push_back({a, b, own.surface});
+    }
+  world_.surfaces = file.surfaces;
+  world_.defaultSurface = file.defaultSurface;
+  world_.pairSurfaces = std::move(pairs);
 }
 
 void EngineLink::forget(int i) {

@@ -7,6 +7,7 @@
 // into the ODE bodies, so the scene's own measurements, HUD and files read
 // the engine's world as they read ODE's.
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,17 @@
 
 namespace odelab::world {
 
+// A scene built from a world file: the file's own joints and surfaces, and
+// which of them each ODE joint and geom was built from. The link hands an
+// engine these rather than what ODE reads back, which holds values the file
+// never set (the world's ERP copied into a joint, the infinite friction of a
+// default surface that no pair uses).
+struct FileOrigin {
+  const World* world = nullptr;
+  std::function<int(dGeomID)> geomOf;    // the file's geom index, or -1
+  std::function<int(dJointID)> jointOf;  // the file's joint index, or -1
+};
+
 class EngineLink {
  public:
   bool active() const { return engine_ != nullptr; }
@@ -24,8 +36,10 @@ class EngineLink {
   EngineSetting setting() const { return setting_; }
 
   // Builds the scene's world, as ODE holds it now, in `engine`.
+  // `file`: the world file the scene was built from, or null (a test program's scene).
   void start(std::unique_ptr<Engine> engine, const std::string& name, EngineSetting setting, Settings settings,
-             const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf);
+             const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf,
+             const FileOrigin* file = nullptr);
   void stop() { engine_.reset(); }
   // The scene's changes since the last step, as edits.
   void sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf);
@@ -44,6 +58,9 @@ class EngineLink {
   void writeBack(int body, const BodyState& state);
   void forget(int body);  // removed from the engine and the index
   BodyState odeState(dBodyID body) const;
+  // The file's values for the joints from `firstJoint` on and for every surface.
+  void adoptFile(size_t firstJoint);
+  void adoptFileSurfaces();
 
   std::unique_ptr<Engine> engine_;
   std::string name_;
@@ -52,6 +69,7 @@ class EngineLink {
   OdeIndex index_;
   std::vector<BodyState> written_;  // per body: what was last written into its ODE body
   std::uint64_t bodyChanges_ = 0;
+  FileOrigin file_;  // world null: no file
 };
 
 }  // namespace odelab::world

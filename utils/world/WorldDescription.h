@@ -130,6 +130,11 @@ struct Measure {
   double expected = 0.0; // period: the analytic period, s
   double until = INFINITE;  // ballistic: the arc is compared up to this time, s
   double speed = 0.01, angularSpeed = 0.01, hold = 0.5;  // rest: m/s, rad/s, s
+  // The analytic answer the world states (the lab grades every engine against
+  // it): energy, the energy_drift; tunnelling, the bodies that pass; rest, the
+  // time to rest (s). NaN: none stated.
+  double expect = std::numeric_limits<double>::quiet_NaN();
+  bool expectNever = false;  // rest: the body never comes to rest (it slides on)
 };
 
 // A timed edit of the world: a body dropped in, or one pushed.

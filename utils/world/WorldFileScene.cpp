@@ -48,6 +48,15 @@ bool identity(const Vec3& p, const Quat& q) {
 }  // namespace
 
 WorldFileScene::WorldFileScene(World world) : AbstractWindow(settingsFrom(world)), world_(std::move(world)) {
+  origin_.world = &world_;
+  origin_.geomOf = [this](dGeomID g) {
+    const auto found = geomIndex_.find(g);
+    return found == geomIndex_.end() ? -1 : found->second;
+  };
+  origin_.jointOf = [this](dJointID j) {
+    const auto found = jointIndex_.find(j);
+    return found == jointIndex_.end() ? -1 : found->second;
+  };
   fileMu_ = world_.surfaces[world_.defaultSurface].mu;
   useContactChoices(fileMu_);
   for (Knob& knob : tuning().knobs())
@@ -83,12 +92,13 @@ bool WorldFileScene::droppedLater(int body) const {
 
 void WorldFileScene::buildScene() {
   geomIndex_.clear();
+  jointIndex_.clear();
   bodyOwner_.assign(world_.bodies.size(), nullptr);
   nextEvent_ = 0;
   std::vector<bool> now(world_.bodies.size());
   for (size_t b = 0; b < now.size(); ++b) now[b] = !droppedLater(static_cast<int>(b));
   buildGeoms(now, true);
-  for (const Joint& joint : world_.joints) buildJoint(joint);
+  for (size_t j = 0; j < world_.joints.size(); ++j) jointIndex_[buildJoint(world_.joints[j])] = static_cast<int>(j);
   std::vector<dBodyID> bodies(world_.bodies.size(), nullptr);
   for (size_t b = 0; b < bodies.size(); ++b)
     if (bodyOwner_[b]) bodies[b] = bodyOwner_[b]->getBody();
@@ -229,7 +239,9 @@ void WorldFileScene::buildBody(int index, AbstractObject& owner) {
   if (!b.enabled) dBodyDisable(body);
 }
 
-void WorldFileScene::buildJoint(const Joint& j) {
+// A joint's own ERP and CFM (ball and fixed joints: ODE has none for a hinge's
+// or slider's rows, and the reader refuses them there).
+dJointID WorldFileScene::buildJoint(const Joint& j) {
   auto bodyOf = [&](int b) { return b < 0 ? dBodyID{} : bodyOwner_[static_cast<size_t>(b)]->getBody(); };
   dJointID joint = nullptr;
   switch (j.kind) {
@@ -247,7 +259,6 @@ void WorldFileScene::buildJoint(const Joint& j) {
       dJointSetHingeAxis(joint, j.axis[0], j.axis[1], j.axis[2]);
       if (std::isfinite(j.lowStop)) dJointSetHingeParam(joint, dParamLoStop, j.lowStop);
       if (std::isfinite(j.highStop)) dJointSetHingeParam(joint, dParamHiStop, j.highStop);
-      if (!std::isnan(j.cfm)) dJointSetHingeParam(joint, dParamCFM, j.cfm);
       break;
     case JointKind::Slider:
       joint = dJointCreateSlider(world(), 0);
@@ -255,14 +266,16 @@ void WorldFileScene::buildJoint(const Joint& j) {
       dJointSetSliderAxis(joint, j.axis[0], j.axis[1], j.axis[2]);
       if (std::isfinite(j.lowStop)) dJointSetSliderParam(joint, dParamLoStop, j.lowStop);
       if (std::isfinite(j.highStop)) dJointSetSliderParam(joint, dParamHiStop, j.highStop);
-      if (!std::isnan(j.cfm)) dJointSetSliderParam(joint, dParamCFM, j.cfm);
       break;
     case JointKind::Fixed:
       joint = dJointCreateFixed(world(), 0);
       dJointAttach(joint, bodyOf(j.body1), bodyOf(j.body2));
       dJointSetFixed(joint);
+      if (!std::isnan(j.erp)) dJointSetFixedParam(joint, dParamERP, j.erp);
+      if (!std::isnan(j.cfm)) dJointSetFixedParam(joint, dParamCFM, j.cfm);
       break;
   }
+  return joint;
 }
 
 void WorldFileScene::setContactSurface(dGeomID o1, dGeomID o2, dSurfaceParameters& surface) {

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "AbstractWindow.h"
+#include "EngineLink.h"
 #include "WorldDescription.h"
 #include "WorldMeasures.h"
 
@@ -35,6 +36,7 @@ class WorldFileScene : public AbstractWindow {
   void initialCamera(Camera& camera) const override;  // framing the file's bodies
   bool plotValue(double& value) const override;  // the live plot (L): the total energy when measured
   std::string plotLabel() const override;
+  const FileOrigin* fileOrigin() const override { return &origin_; }
 
  private:
   bool droppedLater(int body) const;
@@ -43,11 +45,13 @@ class WorldFileScene : public AbstractWindow {
   void buildGeoms(const std::vector<bool>& bodies, bool statics);
   void buildBody(int index, AbstractObject& owner);
   void warnOfOverlaps();
-  void buildJoint(const Joint& joint);
+  dJointID buildJoint(const Joint& joint);
 
   World world_;
   double fileMu_;  // the default surface's friction: the mu knob overrides every surface once moved from it
   std::unordered_map<dGeomID, int> geomIndex_;
+  std::unordered_map<dJointID, int> jointIndex_;  // the file's index of each joint built
+  FileOrigin origin_;
   std::vector<AbstractObject*> bodyOwner_;  // per body: the object whose body it is, null until dropped in
   std::unique_ptr<WorldMeasures> measures_;
   size_t nextEvent_ = 0;

@@ -1,6 +1,7 @@
 #include "WorldFromOde.h"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -101,9 +102,9 @@ Joint jointOf(dJointID joint, const OdeIndex& index) {
       j.anchor = vec(v);
       dJointGetHingeAxis(joint, v);
       j.axis = vec(v);
+      // No erp or cfm: a hinge's rows take the world's (its dParamCFM is a motor's).
       j.lowStop = dJointGetHingeParam(joint, dParamLoStop);
       j.highStop = dJointGetHingeParam(joint, dParamHiStop);
-      j.cfm = dJointGetHingeParam(joint, dParamCFM);
       break;
     case dJointTypeSlider:
       j.kind = JointKind::Slider;
@@ -111,10 +112,11 @@ Joint jointOf(dJointID joint, const OdeIndex& index) {
       j.axis = vec(v);
       j.lowStop = dJointGetSliderParam(joint, dParamLoStop);
       j.highStop = dJointGetSliderParam(joint, dParamHiStop);
-      j.cfm = dJointGetSliderParam(joint, dParamCFM);
       break;
     case dJointTypeFixed:
       j.kind = JointKind::Fixed;
+      j.erp = dJointGetFixedParam(joint, dParamERP);
+      j.cfm = dJointGetFixedParam(joint, dParamCFM);
       break;
     default:
       throw std::runtime_error("an ODE joint of type " + std::to_string(dJointGetType(joint)) +
@@ -273,7 +275,13 @@ void describeNewObjects(const std::vector<std::unique_ptr<AbstractObject>>& obje
       if (other && !index.bodyIndex.count(other)) continue;  // met again with the other body
       known.insert(joint);
       index.joints.push_back(joint);
-      world.joints.push_back(jointOf(joint, index));
+      Joint described = jointOf(joint, index);
+      // ODE copies the world's ERP and CFM into a ball or fixed joint when it
+      // is made: a joint still at them takes the world's, and is written so,
+      // not as a value of its own that an engine would have to translate.
+      if (described.erp == world.settings.erp) described.erp = std::numeric_limits<double>::quiet_NaN();
+      if (described.cfm == world.settings.cfm) described.cfm = std::numeric_limits<double>::quiet_NaN();
+      world.joints.push_back(described);
     }
   }
   describePairs(surfaceOf, world, index, firstGeom);

@@ -37,7 +37,8 @@ struct OdeIndex {
 // Appends to `world` every body, geom and joint of `objects` not yet in
 // `index` (all of them the first time), in the order the objects were
 // made, with the surfaces of the new pairs. Returns nothing new as zero-sized
-// additions. The world's settings are not touched.
+// additions. The world's settings are read (set them first: a ball or fixed
+// joint still at the world's ERP and CFM is described as taking them), not touched.
 void describeNewObjects(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf,
                         World& world, OdeIndex& index);
 // Every pair's surface again (after mu or a bounce changed).

@@ -273,6 +273,17 @@ Joint readJoint(const json& j, const std::string& path, int bodies) {
     k.lowStop = r.real("low_stop", -INFINITE, -INFINITE, INFINITE);
     k.highStop = r.real("high_stop", INFINITE, -INFINITE, INFINITE);
   }
+  // ODE (0.16) keeps an ERP and CFM of a joint's own for ball and fixed joints
+  // only (dParamERP, dParamCFM); a hinge's or slider's rows take the world's,
+  // their dParamCFM is the motor's and dParamStopERP / dParamStopCFM act only
+  // at a stop. Accepted there, the field would be read and change nothing.
+  if (k.kind == JointKind::Hinge || k.kind == JointKind::Slider)
+    for (const char* key : {"erp", "cfm"})
+      if (r.has(key))
+        Reader::fail(r.at(key), std::string("a ") + jointName(k.kind) + " joint has no " + key +
+                                    " of its own in ODE (its rows take settings." + key +
+                                    "; dParamCFM is a motor's, dParamStopERP / dParamStopCFM act only at a stop): "
+                                    "set settings." + key + ", or use a ball or fixed joint");
   k.erp = r.real("erp", k.erp, 0.0, 1.0);
   k.cfm = r.real("cfm", k.cfm, 0.0, 1.0);
   return k;
@@ -314,6 +325,7 @@ Measure readMeasure(const json& j, const std::string& path, const World& w) {
   switch (m.kind) {
     case MeasureKind::Energy:
       m.scale = r.real("scale", 0.0, 1e-300, INFINITE);
+      m.expect = r.real("expect", m.expect, -INFINITE, INFINITE);
       break;
     case MeasureKind::Momentum:
       m.scale = r.real("linear_scale", 0.0, 1e-300, INFINITE);
@@ -324,6 +336,7 @@ Measure readMeasure(const json& j, const std::string& path, const World& w) {
       const Geom& g = w.geoms[static_cast<size_t>(m.geom)];
       if (g.body >= 0 || (g.shape != ShapeKind::Box && g.shape != ShapeKind::Plane))
         Reader::fail(r.at("geom"), "must name a static box or plane (the wall bodies might pass through)");
+      if (r.has("expect")) m.expect = r.integer("expect", 0, 0, bodies);
       break;
     }
     case MeasureKind::Ballistic:
@@ -343,6 +356,13 @@ Measure readMeasure(const json& j, const std::string& path, const World& w) {
       m.speed = r.real("speed", m.speed, 0.0, INFINITE);
       m.angularSpeed = r.real("angular_speed", m.angularSpeed, 0.0, INFINITE);
       m.hold = r.real("hold", m.hold, 0.0, INFINITE);
+      if (r.has("expect") && j.at("expect").is_string()) {
+        if (r.text("expect", "") != "never")
+          Reader::fail(r.at("expect"), "must be a time to rest (s) or \"never\" (the body keeps moving)");
+        m.expectNever = true;
+      } else {
+        m.expect = r.real("expect", m.expect, 0.0, INFINITE);
+      }
       break;
     case MeasureKind::JointError:
     case MeasureKind::Penetration:
@@ -400,6 +420,9 @@ json writeMeasure(const Measure& m) {
     case MeasureKind::Penetration:
       break;
   }
+  if (m.expectNever) j["expect"] = "never";
+  if (!std::isnan(m.expect))
+    j["expect"] = m.kind == MeasureKind::Tunnelling ? json(static_cast<int>(m.expect)) : json(m.expect);  // a count
   return j;
 }
 

@@ -3,9 +3,11 @@ steps around the world's own, with dWorldStep and QuickStep at several
 iteration counts, ERP and CFM swept at the world's step; the step searched
 upward for where the world blows up or its measurements depart from the
 reference; every engine --list-engines has at its defaults and best at the
-world's step. Every measurement (world_measures.py) is compared with one
+world's step. Every measurement (world_measures.py) is graded against the
+strongest reference the world gives (world_reference.py: an analytic answer,
+a conservation law, or the same engine at a finer step: for ODE's sweep, its
 reference run, dWorldStep at the finest step of the sweep with the world's
-ERP and CFM. Costs: the engine's own seconds per simulated second, median
+ERP and CFM); agreement with that ODE run is kept apart, labelled as such. Costs: the engine's own seconds per simulated second, median
 and range of timed runs interleaved (timing.py)."""
 
 import json
@@ -13,6 +15,7 @@ from pathlib import Path
 
 from .. import timing
 from .. import world_measures as wm
+from .. import world_reference as wr
 from ..inputs import read_text
 from ..runner import LabError, RunSpec
 from ..search import highest_passing
@@ -120,7 +123,7 @@ class WorldSweep(Experiment):
         points, reference = self.plan(ctx.quick)
         engines = self.engine_points(ctx, listed)
         repeats = timing.repeats(ctx.quick)
-        ctx.expect(len(points) * (2 + repeats) + len(engines) * (2 + repeats) + 30)
+        ctx.expect(len(points) * (2 + repeats) + len(engines) * (3 + repeats) + 30)
         runs = runner.map([RunSpec(PROGRAM, p.args, measures_blow_ups=True) for p in points])
         for p, r in zip(points, runs):
             p.run = r
@@ -129,26 +132,54 @@ class WorldSweep(Experiment):
             raise LabError(f"the reference run ({reference.name}, {reference.run.spec.command_line()}) ended with "
                            f"status {reference.run.rc}: nothing to measure the world against")
         measures, absent = wm.from_metrics(self.world, reference.run.metrics)
+        self.references = {m.name: wr.reference_of(self.world, m) for m in measures}
         ref_values = {m.name: reference.run.m(m.name) for m in measures}
+        # ODE's sweep: its own finest run (the reference run) is its self-consistency reference.
         for p in points:
-            self.judge(p, measures, ref_values)
+            self.judge(p, measures, ref_values, ref_values)
         ran = [e for e in engines if e.fields["status"] == "ran"]
-        runs = runner.map([RunSpec(PROGRAM, e.args, measures_blow_ups=True) for e in ran])
-        for e, r in zip(ran, runs):
-            e.run = r
+        # Each engine also at a FINER times finer step: its own self-consistency reference.
+        runs = runner.map([RunSpec(PROGRAM, e.args, measures_blow_ups=True) for e in ran] +
+                          [RunSpec(PROGRAM, self.finer_args(e), measures_blow_ups=True) for e in ran])
+        for e, r, fine in zip(ran, runs[:len(ran)], runs[len(ran):]):
+            e.run, e.fine_run = r, fine
             e.fields["status"] = "ran" if r.rc == 0 else f"ended with status {r.rc}"
-            self.judge(e, measures, ref_values)
-        ctx.advance(len(engines))
+            e.fields["finer_step_s"] = e.fields["step_s"] / wr.FINER
+            e.fields["finer_exit_status"] = fine.rc
+            self.judge(e, measures, ref_values, {m.name: (fine.m(m.name) if fine.rc == 0 else None)
+                                                 for m in measures})
+        ctx.advance(len(engines) + len(ran))
         limits = self.limits(ctx, measures, ref_values)
         self.time_points(ctx, [p for p in points + engines if p.run is not None and p.run.rc == 0])
         return write_outputs(ctx, self, points, reference, engines, limits, measures, absent, listed)
 
-    def judge(self, point, measures, ref_values):
+    def finer_args(self, point):
+        """The same engine and setting at the step / FINER."""
+        args = list(point.args)
+        at = args.index("--step")
+        args[at + 1] = float(args[at + 1]) / wr.FINER
+        return args
+
+    def judge(self, point, measures, ref_values, finer_values):
+        """Each measurement graded against its reference (world_reference.py:
+        analytic, conservation, or `finer_values`, the same engine's finer
+        run): devs and max_dev; agreement with ODE's finest run apart:
+        ode_devs and ode_max_dev."""
         r = point.run
-        point.values = {m.name: (r.m(m.name) if r.rc == 0 else None) for m in measures}
-        point.devs = {m.name: (m.deviation(point.values[m.name], ref_values[m.name]) if r.rc == 0 else None)
-                      for m in measures}
-        point.max_dev = wm.max_deviation(point.devs.values()) if r.rc == 0 else None
+        ok = r.rc == 0
+        step = float(point.args[point.args.index("--step") + 1])
+        point.values = {m.name: (r.m(m.name) if ok else None) for m in measures}
+        point.ode_devs = {m.name: (m.deviation(point.values[m.name], ref_values[m.name]) if ok else None)
+                          for m in measures}
+        point.ode_max_dev = wm.max_deviation(point.ode_devs.values()) if ok else None
+        point.devs, point.artefacts = {}, {}
+        for m in measures:
+            dev, artefact = wr.grade(self.world, m, self.references[m.name], point.values[m.name],
+                                     finer_values.get(m.name), step) if ok else (None, False)
+            point.devs[m.name], point.artefacts[m.name] = dev, artefact
+        point.max_dev = wm.max_deviation(point.devs.values()) if ok else None
+        point.outcomes = {m.name: (wr.outcome_words(m, point.values[m.name]), wr.expected_outcome(m))
+                          for m in measures if ok and wr.expected_outcome(m)}
 
     # ---- where it breaks -----------------------------------------------------------------
     def limits(self, ctx, measures, ref_values):
@@ -162,7 +193,7 @@ class WorldSweep(Experiment):
             point = Point(f"{step:g}", self.ode_args(own["solver"], own["iterations"], step, own["erp"], own["cfm"]),
                           step_s=step)
             point.run = ctx.runner.run(RunSpec(PROGRAM, point.args, priority=0, measures_blow_ups=True))
-            self.judge(point, measures, ref_values)
+            self.judge(point, measures, ref_values, ref_values)
             seen[step] = point
             ctx.advance()
             return point

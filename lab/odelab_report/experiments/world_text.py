@@ -23,10 +23,18 @@ COST_COLUMNS = ["timed_sim_seconds", "repeats", "shortest_run_cpu_seconds", "eng
 def _row(point, measures):
     row = dict(point.fields)
     values, devs = getattr(point, "values", {}), getattr(point, "devs", {})
+    artefacts, ode_devs = getattr(point, "artefacts", {}), getattr(point, "ode_devs", {})
     for m in measures:
         row[m.name] = values.get(m.name)
         row["dev_" + m.name] = devs.get(m.name)
+        row["step_artefact_" + m.name] = int(bool(artefacts.get(m.name)))
+        row["ode_dev_" + m.name] = ode_devs.get(m.name)
     row["max_dev"] = getattr(point, "max_dev", None)
+    row["ode_max_dev"] = getattr(point, "ode_max_dev", None)
+    outcomes = getattr(point, "outcomes", {})
+    row["outcome"] = "; ".join(f"{m}: {got or 'no value'}" for m, (got, _) in outcomes.items())
+    row["outcome_expected"] = "; ".join(f"{m}: {want}" for m, (_, want) in outcomes.items())
+    row["outcome_as_expected"] = (int(all(got == want for got, want in outcomes.values())) if outcomes else None)
     row["exit_status"] = point.run.rc if point.run is not None else None
     return row
 
@@ -44,7 +52,8 @@ def dev_cell(value):
 
 def write_outputs(ctx, exp, points, reference, engines, limits, measures, absent, listed):
     names = [m.name for m in measures]
-    dev_columns = [c for n in names for c in (n, "dev_" + n)]
+    dev_columns = [c for n in names for c in (n, "dev_" + n, "step_artefact_" + n, "ode_dev_" + n)]
+    outcome_columns = ["outcome", "outcome_expected", "outcome_as_expected"]
     rows = []
     for p in points:
         row = _row(p, measures)
@@ -53,23 +62,37 @@ def write_outputs(ctx, exp, points, reference, engines, limits, measures, absent
         rows.append(row)
     sweep = ctx.write_csv("world-sweep", ["setting", "groups", "solver", "iterations", "step_s", "erp", "cfm",
                                           "own", "reference", "in_step", "in_erp", "in_cfm", "exit_status",
-                                          *dev_columns, "max_dev", *COST_COLUMNS],
+                                          *dev_columns, "max_dev", "ode_max_dev", *outcome_columns,
+                                          *COST_COLUMNS],
                           rows, notes=[
         f"world: {exp.path}; ODE through build/tests/odelab --world at each setting, one run of the world's length "
         "for the measurements",
-        f"reference: the row with reference 1 ({reference.name}: dWorldStep, the finest step of the sweep, the "
-        "world's ERP and CFM); dev_X = |X - X at the reference| / X's scale (world-measures.csv); max_dev: the "
-        "largest over the measurements (inf: a measurement the reference has is missing)",
+        "dev_X = |X - X's reference| / X's scale, X's reference the strongest the world gives "
+        "(world-measures.csv: analytic, conservation, or self-consistency: ODE's own run of the row with "
+        f"reference 1, {reference.name}: dWorldStep, the finest step of the sweep, the world's ERP and CFM); "
+        "step_artefact_X 1: X differs from its reference by no more than one step's timing explains, counted as 0; "
+        "max_dev: the largest over the measurements (inf: a measurement missing or the other outcome); "
+        "ode_dev_X and ode_max_dev: agreement with that ODE run, whatever X's reference",
         f"groups (and in_step, in_erp, in_cfm): step (the step-solver grid), own (the world's own settings), "
         f"erp, cfm (swept at the world's step and solver), reference; costs: engine_wall_seconds / sim_seconds "
         f"(engine_s_per_sim_s), median, min and max over `repeats` interleaved timed runs of timed_sim_seconds, "
         f"each stretched to at least "
         f"{timing.min_run_cpu(ctx.quick):g} CPU s (timing.py); rows with the same arguments share their timed runs"])
     ref_row = next(r for r in rows if r["reference"])
-    measure_rows = [dict(measurement=m.name, kind=m.kind, rule=m.rule, reference=ref_row.get(m.name),
-                         scale=m.scale_for(ref_row.get(m.name)), how=m.rule_text()) for m in measures]
-    measures_csv = ctx.write_csv("world-measures", ["measurement", "kind", "rule", "reference", "scale", "how"],
+    measure_rows = []
+    for m in measures:
+        ref = exp.references[m.name]
+        measure_rows.append(dict(measurement=m.name, kind=m.kind, rule=m.rule, reference_kind=ref.kind,
+                                 reference_why=ref.why, expected=ref.value, reference=ref_row.get(m.name),
+                                 scale=m.scale_for(ref.value if ref.value is not None else ref_row.get(m.name)),
+                                 how=m.rule_text()))
+    measures_csv = ctx.write_csv("world-measures", ["measurement", "kind", "rule", "reference_kind", "reference_why",
+                                                    "expected", "reference", "scale", "how"],
                                  measure_rows, notes=[
+        "reference_kind: what each measurement is graded against, the strongest the world gives "
+        "(world_reference.py): analytic (expected: the answer), conservation (expected: no drift) or "
+        "self-consistency (each engine's own run at a 10 times finer step); reference: ODE's finest run's value, "
+        "for agreement with ODE only",
         "every measurement the world's `measures` gives (doc/world-format.md), its value at the reference run, the "
         "scale its deviation is divided by and the rule (world_measures.py); absent from the reference run: "
         + (", ".join(absent) or "none")])
@@ -85,12 +108,14 @@ def write_outputs(ctx, exp, points, reference, engines, limits, measures, absent
         row.update(notes=peers_notes.notes_of(e.run), translation_note_count=len(peers_notes.notes_of(e.run)))
         engine_rows.append(row)
     engines_csv = ctx.write_csv("world-engines", ["engine", "version", "setting", "status", "reason", "step_s",
-                                                  "exit_status", *dev_columns, "max_dev", "translation_note_count",
-                                                  *COST_COLUMNS], engine_rows, notes=[
+                                                  "exit_status", "finer_step_s", "finer_exit_status", *dev_columns,
+                                                  "max_dev", "ode_max_dev", *outcome_columns,
+                                                  "translation_note_count", *COST_COLUMNS], engine_rows, notes=[
         "every engine odelab --list-engines names, at its defaults and its best (its adapter's; ODE: the world's "
         "settings and dWorldStep) at the world's step; status: ran, missing (reason: --list-engines), refused "
-        "(odelab's exit status 2, reason its message) or the status the run ended with; deviations from ODE's "
-        "reference as in world-sweep.csv"])
+        "(odelab's exit status 2, reason its message) or the status the run ended with; dev_X against X's "
+        "reference (world-measures.csv), a self-consistency reference being the same engine and setting at "
+        "finer_step_s, never another engine; ode_dev_X, ode_max_dev: agreement with ODE's finest run, shown apart"])
     note_rows = peers_notes.rows_of(("world", r["engine"], r["setting"], r["notes"]) for r in engine_rows)
     notes_csv = ctx.write_csv("world-notes", peers_notes.COLUMNS, note_rows, notes=[
         "what each engine could not express exactly of the world: its run's translation_notes, each once"])
@@ -154,18 +179,24 @@ def first_screen():
 
 def markdown(ctx, exp, rows, engine_rows, note_rows, measure_rows, absent, engines_plotted, files):
     own = exp.own
-    measures_table = md.table(["measurement", "kind", "reference value", "scale", "rule"],
-                              [[r["measurement"], r["kind"], md.num(r["reference"]), md.num(r["scale"]), r["how"]]
+    measures_table = md.table(["measurement", "graded against", "expected", "ODE's finest run", "scale", "rule"],
+                              [[r["measurement"], f"{r['reference_kind']}: {r['reference_why']}",
+                                "-" if r["expected"] is None else ("never" if math.isinf(r["expected"])
+                                                                   else md.num(r["expected"])),
+                                md.num(r["reference"]), md.num(r["scale"]), r["how"]]
                                for r in measure_rows])
     per_measure = "\n".join(f"- {r['measurement']}: " + " ".join(slot(f"m.{r['measurement']}.{level:g}")
                                                                  for level in LEVELS) for r in measure_rows)
     sweep_table = md.table(["setting", "groups", "status", "largest deviation", "engine s / sim s, median [range]"],
                            [[r["setting"], r["groups"], md.num(r["exit_status"]), dev_cell(r["max_dev"]),
                              cost_cell(r)] for r in rows])
-    engine_table = md.table(["engine", "setting", "status", "largest deviation", "engine s / sim s, median [range]",
-                             "translation notes"],
+    engine_table = md.table(["engine", "setting", "status", "largest deviation from its reference",
+                             "outcome (expected)", "agreement with ODE's finest run",
+                             "engine s / sim s, median [range]", "translation notes"],
                             [[r["engine"] + (f" {r['version']}" if r["version"] else ""), r["setting"],
                               r["status"] + (f": {r['reason']}" if r["reason"] else ""), dev_cell(r["max_dev"]),
+                              (f"{r['outcome']} ({r['outcome_expected']})" if r["outcome"] else "-"),
+                              dev_cell(r["ode_max_dev"]),
                               cost_cell(r), md.num(r["translation_note_count"]) if r["status"] == "ran" else "-"]
                              for r in engine_rows])
     notes = peers_notes.per_engine(note_rows)
@@ -179,12 +210,19 @@ def markdown(ctx, exp, rows, engine_rows, note_rows, measure_rows, absent, engin
     return f"""## The measurements
 
 {source} Each
-setting's deviation from the reference run ({"dWorldStep at the finest step of the sweep"}, the world's
-ERP {own["erp"]:g} and CFM {own["cfm"]:g}) is |value - reference| / scale; "within 1%" means a
-deviation of at most 0.01 on every measurement. A quantity whose reference is a
-size of its own is compared relative to it; an error or drift whose reference
-is about 0 is compared as an absolute difference against the scale given; a
-count must be equal.{missing}
+measurement is graded against the strongest reference the world gives: an
+analytic answer (one the world states, or the law the measurement is defined
+by), else a conservation law the world implies, else the same engine and
+setting at a 10 times finer step (self-consistency; for ODE's sweep, dWorldStep
+at the finest step of the sweep with the world's ERP {own["erp"]:g} and CFM
+{own["cfm"]:g}). The deviation is |value - reference| / scale; "within 1%"
+means a deviation of at most 0.01 on every measurement. A quantity whose
+reference is a size of its own is compared relative to it; an error or drift
+whose reference is about 0 is compared as an absolute difference against the
+scale given; a count must be equal. A difference that one step's timing
+explains (a time within one step, an arc within one step at the body's fastest
+speed) is at the step's resolution: said (step_artefact_X in the CSVs) and
+counted as 0.{missing}
 
 {measures_table}
 
@@ -227,9 +265,13 @@ At the world's step and solver: {slot("erp")} {slot("cfm")}
 
 Every engine `odelab --list-engines` names, at its defaults and its best
 (doc/peers.md), at the world's step; ODE's default is the world's settings,
-its best dWorldStep. The reference is ODE's own (dWorldStep at the finest
-step), so closeness to it is agreement with converged ODE, contact model
-included, not with an exact answer.
+its best dWorldStep. Each is graded against each measurement's reference
+above; where that is self-consistency, against its own run at a 10 times finer
+step, never another engine's. Agreement with ODE's finest run is shown apart,
+labelled as that: it is agreement with converged ODE, contact model included,
+not with an exact answer. An outcome is said by rule from the run: a
+tunnelling measure "stops" or "tunnels", a rest measure "stays" (comes to
+rest) or "slides" (never does), beside what the world expects.
 
 {engine_table}
 
