@@ -27,6 +27,14 @@ json number(double value) {
 }
 
 json vec(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
+
+// What ODE holds of a value the reader allowed can come back a rounding past
+// its bound (a joint's anchor at 1e9 m, recomputed from its body's pose): the
+// writer puts it back at the bound, so that every export reads back.
+double within(double v, double low, double high) { return std::isfinite(v) ? std::min(high, std::max(low, v)) : v; }
+json vecWithin(const Vec3& v, double bound) {
+  return json::array({within(v[0], -bound, bound), within(v[1], -bound, bound), within(v[2], -bound, bound)});
+}
 json quat(const Quat& q) { return json::array({q[0], q[1], q[2], q[3]}); }
 
 const std::map<ShapeKind, const char*> SHAPES = {{ShapeKind::Box, "box"},
@@ -661,10 +669,10 @@ std::string worldToJson(const World& world) {
     bodyIndex[i] = static_cast<int>(bodies.size());
     json j = {{"mass", b.mass},
               {"inertia", json::array({b.inertia[0], b.inertia[1], b.inertia[2], b.inertia[3], b.inertia[4], b.inertia[5]})},
-              {"position", vec(b.position)},
+              {"position", vecWithin(b.position, limits::LENGTH)},
               {"orientation", quat(b.orientation)},
-              {"linear_velocity", vec(b.linearVelocity)},
-              {"angular_velocity", vec(b.angularVelocity)}};
+              {"linear_velocity", vecWithin(b.linearVelocity, limits::SPEED)},
+              {"angular_velocity", vecWithin(b.angularVelocity, limits::ANGULAR_SPEED)}};
     if (!b.enabled) j["enabled"] = false;
     if (b.kinematic) j["kinematic"] = true;
     if (!b.gravity) j["gravity"] = false;
@@ -697,7 +705,7 @@ std::string worldToJson(const World& world) {
       case ShapeKind::Plane: j["plane"] = json::array({g.plane[0], g.plane[1], g.plane[2], g.plane[3]}); break;
     }
     if (g.shape != ShapeKind::Plane) {
-      j["position"] = vec(g.position);
+      j["position"] = vecWithin(g.position, limits::LENGTH);
       j["orientation"] = quat(g.orientation);
     }
     if (g.category != 0xffffffffu) j["category"] = g.category;
@@ -708,9 +716,9 @@ std::string worldToJson(const World& world) {
   for (const Joint& k : world.joints) {
     if ((k.body1 >= 0 && world.bodies[k.body1].removed) || (k.body2 >= 0 && world.bodies[k.body2].removed)) continue;
     json j = {{"type", jointName(k.kind)}, {"body1", bodyRef(k.body1)}, {"body2", bodyRef(k.body2)}};
-    if (k.kind == JointKind::Ball || k.kind == JointKind::Hinge) j["anchor"] = vec(k.anchor);
+    if (k.kind == JointKind::Ball || k.kind == JointKind::Hinge) j["anchor"] = vecWithin(k.anchor, limits::LENGTH);
     if (k.kind == JointKind::Hinge || k.kind == JointKind::Slider) {
-      j["axis"] = vec(k.axis);
+      j["axis"] = vecWithin(k.axis, limits::LENGTH);
       if (!std::isinf(k.lowStop)) j["low_stop"] = k.lowStop;
       if (!std::isinf(k.highStop)) j["high_stop"] = k.highStop;
     }
