@@ -97,7 +97,7 @@ class Reader {
 
   double real(const char* key, double fallback, double low, double high, bool required = false) {
     const json* value = find(key, required);
-    return value ? realValue(*value, at(key), low, high) : fallback;
+    return value ? realValue(*value, [&] { return at(key); }, low, high) : fallback;
   }
   int integer(const char* key, int fallback, int low, int high, bool required = false) {
     const json* value = find(key, required);
@@ -133,7 +133,8 @@ class Reader {
     if (!value) return fallback;
     if (!value->is_array() || value->size() != N) fail(at(key), "must be an array of " + std::to_string(N) + " numbers");
     std::array<double, N> out{};
-    for (size_t i = 0; i < N; ++i) out[i] = realValue((*value)[i], at(key) + "[" + std::to_string(i) + "]", low, high);
+    for (size_t i = 0; i < N; ++i)
+      out[i] = realValue((*value)[i], [&] { return at(key) + "[" + std::to_string(i) + "]"; }, low, high);
     return out;
   }
   std::uint32_t bits(const char* key) {
@@ -160,18 +161,21 @@ class Reader {
   }
   // "infinity" (or "-infinity") only where the range reaches it: a vector,
   // a mass or a step is a finite number, as doc/world.schema.json says.
-  static double realValue(const json& value, const std::string& where, double low, double high) {
+  // `where()` spells the value's path, only when it is wrong (a string built per number read would
+  // be most of a large file's reading time).
+  template <class Where>
+  static double realValue(const json& value, const Where& where, double low, double high) {
     const bool unbounded = std::isinf(low) || std::isinf(high);
     double v;
     if (value.is_string() && (value == "infinity" || value == "-infinity")) {
-      if (!unbounded) fail(where, "must be a finite number in [" + shortNumber(low) + ", " + shortNumber(high) + "], got " + value.dump());
+      if (!unbounded) fail(where(), "must be a finite number in [" + shortNumber(low) + ", " + shortNumber(high) + "], got " + value.dump());
       v = value == "infinity" ? INFINITE : -INFINITE;
     } else if (value.is_number()) {
       v = value.get<double>();
     } else {
-      fail(where, unbounded ? "must be a number (or \"infinity\")" : "must be a number");
+      fail(where(), unbounded ? "must be a number (or \"infinity\")" : "must be a number");
     }
-    if (!(v >= low && v <= high)) fail(where, "must be in [" + shortNumber(low) + ", " + shortNumber(high) + "], got " + shortNumber(v));
+    if (!(v >= low && v <= high)) fail(where(), "must be in [" + shortNumber(low) + ", " + shortNumber(high) + "], got " + shortNumber(v));
     return v;
   }
   static std::string shortNumber(double v) {
