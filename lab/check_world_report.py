@@ -41,7 +41,7 @@ def check(folder):
     headings = [l for l in lines if l.startswith("# ")]
     if len(headings) != 1:
         problems.append(f"RESULTS.md: {len(headings)} top-level headings; the title makes the only one")
-    element = re.search(r"<\s*[A-Za-z!/?]", "\n".join(l for l in lines if not l.startswith("    ")))
+    element = re.search(r"<[A-Za-z!/?]", "\n".join(l for l in lines if not l.startswith("    ")))
     if element:
         problems.append(f"RESULTS.md: an HTML element or comment ({element.group(0)}...): given text must be escaped")
     if "## At a glance" not in lines[:15]:
