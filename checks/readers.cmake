@@ -58,13 +58,13 @@ set_tests_properties(world_given_text_stays_one_line PROPERTIES LABELS engines T
 
 # Random worlds the schema accepts, made from nothing within the reader's
 # ranges (checks/scripts/world_generate.py): each is exported, its export
-# read back and run, every 40th run on each engine here; each runs or is
+# read back and run, every 100th run on each engine here; each runs or is
 # refused naming its field, never a signal, an ODE error or an export that
 # does not read back. CI's quick form: 2,000 worlds.
 string(REPLACE ";" "," _generated_engines "${ODELAB_CHECK_ENGINES}")
 add_test(NAME world_generated_2000_random_worlds
          COMMAND /usr/bin/python3 ${ODELAB_CHECK_SCRIPTS}/world_generate.py --odelab $<TARGET_FILE:odelab>
                  --tool $<TARGET_FILE:world_read_tool> --schema ${CMAKE_SOURCE_DIR}/doc/world.schema.json
-                 --count 2000 --seed 51 --engines "${_generated_engines}"
+                 --count 2000 --seed 51 --engines "${_generated_engines}" --engine-every 100
                  --work ${CMAKE_CURRENT_BINARY_DIR}/runs/world_generated)
 set_tests_properties(world_generated_2000_random_worlds PROPERTIES LABELS engines TIMEOUT 1800)
