@@ -2,7 +2,8 @@
 """Checks a report written by `lab/odelab-report --world FILE` (CTest runs
 it after the quick report on checks/worlds/):
 
-- RESULTS.md starts with its title, has "## At a glance" within its first 15
+- RESULTS.md starts with its title, its only top-level heading, holds no HTML
+  element or comment, and has "## At a glance" within its first 15
   lines with the three questions, each answered by at least one sentence;
 - every CSV the world report writes is there, starts with the run header and
   has at least one row; world-sweep.csv has exactly one reference row and one
@@ -37,6 +38,13 @@ def check(folder):
     lines = text.splitlines()
     if not lines or not lines[0].startswith("# ODE Lab: the world"):
         problems.append("RESULTS.md: does not start with its title")
+    # The world's title is the file's text: it must not make a heading, a row or an element of its own.
+    headings = [l for l in lines if l.startswith("# ")]
+    if len(headings) != 1:
+        problems.append(f"RESULTS.md: {len(headings)} top-level headings; the title makes the only one")
+    element = re.search(r"<[A-Za-z!/?]", "\n".join(l for l in lines if not l.startswith("    ")))
+    if element:
+        problems.append(f"RESULTS.md: an HTML element or comment ({element.group(0)}...): given text must be escaped")
     if "## At a glance" not in lines[:15]:
         problems.append("RESULTS.md: no '## At a glance' within its first 15 lines")
     for question in QUESTIONS:

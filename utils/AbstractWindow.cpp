@@ -12,6 +12,7 @@
 
 #include "ExitCodes.h"
 #include "FormatValue.h"
+#include "LineText.h"
 #include "MeasurementLog.h"
 #include "OdeMessages.h"
 #include "StopSignal.h"
@@ -411,7 +412,8 @@ void AbstractWindow::initialCamera(Camera& camera) const { camera.lookAt({0, 6, 
 
 void AbstractWindow::identify(std::string programName, const std::string& title) {
   programName_ = std::move(programName);
-  title_ = programName_ + " - " + title;
+  // A world file's title is the user's text: one line wherever the title goes (HUD, outputs, stdout).
+  title_ = programName_ + " - " + lineText(title);
 }
 
 void AbstractWindow::mark(const std::string& label) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "FormatValue.h"
+#include "LineText.h"
 
 namespace odelab {
 
@@ -22,8 +23,9 @@ void MeasurementLog::open(const std::string& path, const std::string& title,
   rows_ = 0;
   finished_ = false;
   file_.open(path);
-  std::string head = "# " + title + "\n";
-  for (const auto& [key, value] : settings) head += "# " + key + ": " + value + "\n";
+  // Given text (a title, a setting's value, a comment, an end line's reason) kept to its one line.
+  std::string head = "# " + lineText(title) + "\n";
+  for (const auto& [key, value] : settings) head += "# " + lineText(key) + ": " + lineText(value) + "\n";
   // The column names are the first line that is not a comment, so the file
   // loads as a table: pandas.read_csv(f, sep='\t', comment='#'), gnuplot's
   // columnheaders.
@@ -41,13 +43,13 @@ void MeasurementLog::row(const std::vector<double>& values) {
 }
 
 void MeasurementLog::comment(double time, const std::string& text) {
-  file_.write("# " + timeStamp(time) + ": " + text + "\n");
+  file_.write("# " + timeStamp(time) + ": " + lineText(text) + "\n");
 }
 
 void MeasurementLog::finish(const std::string& line) {
   if (!file_.isOpen() || finished_) return;
   finished_ = true;
-  file_.write("# " + line + "\n");
+  file_.write("# " + lineText(line) + "\n");
 }
 
 void MeasurementLog::close() { file_.close(); }

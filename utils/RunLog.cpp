@@ -2,6 +2,7 @@
 
 #include <exception>
 
+#include "LineText.h"
 #include "MeasurementLog.h"
 
 namespace odelab {
@@ -11,10 +12,10 @@ std::string RunLog::write(double simulatedTime, long long step, const std::strin
   try {
     if (!file_.isOpen()) {
       file_.open(path_);
-      file_.write("# " + title_ + ": inputs that changed the simulation, with their simulated time\n");
+      file_.write("# " + lineText(title_) + ": inputs that changed the simulation, with their simulated time\n");
     }
     // Flushed entry by entry: a crash keeps every input made before it.
-    file_.write(timeStamp(simulatedTime) + " (step " + std::to_string(step) + "): " + text + "\n");
+    file_.write(timeStamp(simulatedTime) + " (step " + std::to_string(step) + "): " + lineText(text) + "\n");
   } catch (const std::exception& error) {
     failed_ = true;
     return std::string("the run log is not kept: ") + error.what();

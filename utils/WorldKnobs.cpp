@@ -66,7 +66,7 @@ std::vector<Knob> worldKnobs(WorldSettings& s, const F2Increment& increment) {
                       .withKey(SDLK_F9, "F9", "switch solver: dWorldQuickStep / dWorldStep")
                       .worldSetting("solver", "solver #", 3));
   knobs.push_back(ranged(ranges::GRAVITY, "gravity", "m/s^2", s.gravity)
-                      .withOption("--gravity", "gravity's magnitude along -y, m/s^2 (the thesis's 9.823)")
+                      .withOption("--gravity", "gravity's magnitude, m/s^2, along -y (a world file: along its own direction; the thesis's 9.823)")
                       .worldSetting("gravity", "", 6));
   return knobs;
 }

@@ -18,7 +18,7 @@ const ParameterRange STEP{"step", 1e-6, 0.1};
 const ParameterRange ITERATIONS{"iterations", 1, 10000};
 // SOR over-relaxation diverges at and above 2.
 const ParameterRange SOR{"sor", 0.05, 1.95};
-// Magnitude along -y: none (0) up to ten times the Earth's.
+// Magnitude: none (0) up to ten times the Earth's.
 const ParameterRange GRAVITY{"gravity", 0.0, 100.0};
 }  // namespace ranges
 
@@ -27,7 +27,7 @@ void WorldSettings::applyTo(dWorldID world) const {
   dWorldSetCFM(world, cfm);
   dWorldSetQuickStepNumIterations(world, iterations);
   dWorldSetQuickStepW(world, sor);
-  dWorldSetGravity(world, 0, -gravity, 0);
+  dWorldSetGravity(world, gravity * down[0], gravity * down[1], gravity * down[2]);
 }
 
 void F2Increment::cycle(int direction) {

@@ -42,7 +42,9 @@ struct WorldSettings {
   int iterations = 20;
   double sor = 1.3;
   Solver solver = Solver::QuickStep;
-  double gravity = SURFACE_GRAVITY;  // magnitude, pointing along -y
+  double gravity = SURFACE_GRAVITY;  // magnitude (the knob's), m/s^2
+  // The unit vector gravity points along: -y in every scene; a world file's own otherwise.
+  double down[3] = {0.0, -1.0, 0.0};
 
   void applyTo(dWorldID world) const;
 };

@@ -1,6 +1,8 @@
 """Small markdown helpers shared by the experiments and RESULTS.md."""
 
+import html
 import math
+import re
 
 
 def num(value, digits=3, unit=""):
@@ -61,3 +63,17 @@ def figure(stem, caption):
 
 def files_line(names):
     return "Data: " + ", ".join(f"[{n}]({n})" for n in names)
+
+
+# Markdown's marks that can start structure or emphasis inside a line.
+_MARKS = re.compile(r"([\\`*_\[\]#!|~])")
+
+
+def text(value):
+    """User- or engine-given text (a world's title, a file name, an engine's
+    message) as Markdown that shows it and makes nothing: one line (every
+    control character a space), HTML's <, > and & as entities (no element, no
+    comment) and each Markdown mark backslash-escaped (no heading, table cell,
+    link or emphasis). The one escaping function for the lab's Markdown."""
+    one_line = "".join(" " if ord(c) < 0x20 or ord(c) == 0x7f else c for c in str(value))
+    return _MARKS.sub(r"\\\1", html.escape(one_line, quote=False))

@@ -138,8 +138,12 @@ bool EnginePipe::writeLine(const std::string& line) {
 }
 
 bool EnginePipe::readLine(std::string& line) {
+  // Each byte is searched for the line's end once: a long line (a build's
+  // reply holds every body's state) grows by chunks and only the new chunk is searched.
+  size_t searched = 0;
   for (;;) {
-    const size_t end = buffer_.find('\n');
+    const size_t end = buffer_.find('\n', searched);
+    searched = buffer_.size();
     if (end != std::string::npos) {
       line = buffer_.substr(0, end);
       buffer_.erase(0, end + 1);

@@ -9,8 +9,13 @@
 //   node engine_server.js --info ENGINE   prints {"name", "version", "precision"} and ends.
 // Started again with node's --no-concurrent-recompilation where it lacks it:
 // src/safe_exit.js says why (Node can hang at exit in these WASM builds).
-const readline = require('readline');
+const { readLines } = require('./src/line_reader');
 const { Session } = require('./src/session');
+
+// The longest message line read: a build message carries the whole world,
+// which a world file holds in at most 64 MiB (utils/world/FormatRanges.h);
+// written compactly it takes no more, and twice that leaves room.
+const MAX_LINE_BYTES = 128 * 1024 * 1024;
 
 const NAMES = require('./src/engines/names');
 const ENGINES = Object.fromEntries(NAMES.map((name) => [name, `./src/engines/${name}`]));
@@ -46,15 +51,19 @@ async function serve(name, setting) {
     process.stdout.write(`${JSON.stringify({ error: `cannot load ${name}: ${error.message}; run \`npm ci\` in peers/wasm` })}\n`);
     process.exit(1);
   }
-  const input = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
-  input.on('line', (line) => {
-    const reply = session.line(line);
-    if (reply !== null) process.stdout.write(`${reply}\n`);
-    if (session.quit) input.close();
-  });
   // Stdin closed (quit, or the program gone): end now, without waiting on
   // the WebAssembly runtime's background work.
-  input.on('close', () => process.exit(0));
+  readLines(process.stdin, MAX_LINE_BYTES, {
+    line: (line) => {
+      const reply = session.line(line);
+      if (reply !== null) process.stdout.write(`${reply}\n`);
+      if (session.quit) process.exit(0);
+    },
+    // No reply can be matched to a message never read: the server ends, and
+    // the program says the engine failed.
+    tooLong: (bytes) => fail(`a message line of over ${bytes} bytes; the protocol's lines are at most ${MAX_LINE_BYTES}`),
+    end: () => process.exit(0),
+  });
 }
 
 function main(argv) {

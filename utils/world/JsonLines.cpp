@@ -1,96 +1,216 @@
 #include "JsonLines.h"
 
-#include <cctype>
-#include <cstring>
-#include <map>
+#include <algorithm>
+#include <vector>
 
 namespace odelab::world {
 
 namespace {
 
-// Records the line of every value's start, keyed by its path.
-class LineWalker {
- public:
-  explicit LineWalker(const std::string& text) : text_(text) {}
+// "bodies[1].position" as its steps: "bodies", "[1]", "position".
+std::vector<std::string> pathSteps(const std::string& path) {
+  std::vector<std::string> steps;
+  std::string key;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i] == '.' || path[i] == '[') {
+      if (!key.empty()) steps.push_back(key);
+      key.clear();
+      if (path[i] == '[') {
+        const std::size_t close = path.find(']', i);
+        if (close == std::string::npos) break;
+        steps.push_back(path.substr(i, close - i + 1));
+        i = close;
+      }
+    } else {
+      key += path[i];
+    }
+  }
+  if (!key.empty()) steps.push_back(key);
+  return steps;
+}
 
-  std::map<std::string, int> walk() {
+// One pass over the text. Lenient: text nlohmann refuses ends the walk where
+// its shape stops making sense, and nlohmann's own message is then the one said.
+class Walker {
+ public:
+  Walker(const std::string& text, std::vector<std::string> wanted)
+      : text_(text), wanted_(std::move(wanted)), lines_(wanted_.size() + 1, 0) {}
+
+  void walk() {
+    if (text_.compare(0, 3, "\xEF\xBB\xBF") == 0) at_ = 3;
     skipSpace();
-    value("");
-    return lines_;
+    value();
+  }
+  const JsonShape& shape() const { return shape_; }
+  // The line of the deepest step of the wanted path found, 0 for none.
+  int wantedLine() const {
+    for (std::size_t k = lines_.size(); k-- > 0;)
+      if (lines_[k]) return lines_[k];
+    return 0;
   }
 
  private:
+  bool atEnd() const { return at_ >= text_.size(); }
+
+  static bool space(char c) { return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+  static bool endsScalar(char c) { return space(c) || c == ',' || c == ']' || c == '}' || c == ':' || c == '\0'; }
+
   void skipSpace() {
-    while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) {
+    while (!atEnd() && space(text_[at_])) {
       if (text_[at_] == '\n') ++line_;
       ++at_;
     }
   }
 
-  std::string string() {  // at the opening quote; returns the raw contents
-    std::string out;
-    for (++at_; at_ < text_.size() && text_[at_] != '"'; ++at_) {
-      if (text_[at_] == '\\') out += text_[at_++];
-      out += text_[at_];
+  std::string string() {  // at the opening quote; returns the raw contents (escapes as written)
+    const std::size_t start = ++at_;
+    while (!atEnd() && text_[at_] != '"') {
+      if (text_[at_] == '\n') ++line_;
+      at_ += text_[at_] == '\\' && at_ + 1 < text_.size() ? 2 : 1;
     }
+    const std::size_t end = std::min(at_, text_.size());
     ++at_;
-    return out;
+    return text_.substr(start, end - start);
   }
 
-  void value(const std::string& path) {
-    lines_.emplace(path, line_);
-    if (at_ >= text_.size()) return;
+  std::string pathText(const std::string& last) const {
+    std::string path;
+    for (const std::string& step : steps_) path += (path.empty() || step[0] == '[' ? "" : ".") + step;
+    return path + (path.empty() || last[0] == '[' ? "" : ".") + last;
+  }
+
+  void push(const std::string& step) {
+    if (matched_ == steps_.size() && matched_ < wanted_.size() && wanted_[matched_] == step) ++matched_;
+    steps_.push_back(step);
+  }
+  void pop() {
+    steps_.pop_back();
+    if (matched_ > steps_.size()) matched_ = steps_.size();
+  }
+
+  void value() {
+    if (matched_ == steps_.size() && !lines_[matched_]) lines_[matched_] = line_;
+    if (atEnd()) return;
     const char c = text_[at_];
-    if (c == '{') {
-      ++at_;
-      for (skipSpace(); at_ < text_.size() && text_[at_] != '}'; skipSpace()) {
-        if (text_[at_] == ',') {
-          ++at_;
-          continue;
-        }
-        const std::string key = string();
-        skipSpace();
-        ++at_;  // ':'
-        skipSpace();
-        value(path.empty() ? key : path + "." + key);
-      }
-      ++at_;
-    } else if (c == '[') {
-      ++at_;
-      int index = 0;
-      for (skipSpace(); at_ < text_.size() && text_[at_] != ']'; skipSpace()) {
-        if (text_[at_] == ',') {
-          ++at_;
-          continue;
-        }
-        value(path + "[" + std::to_string(index++) + "]");
-      }
-      ++at_;
+    if (c == '{' || c == '[') {
+      container(c);
     } else if (c == '"') {
       string();
     } else {
-      while (at_ < text_.size() && !std::strchr(",]} \t\r\n", text_[at_])) ++at_;
+      while (!atEnd() && !endsScalar(text_[at_])) ++at_;
     }
   }
 
+  void container(char open) {
+    if (depth_ >= MAX_JSON_DEPTH) {
+      shape_.tooDeepLine = line_;
+      stopped_ = true;
+      return;
+    }
+    const char close = open == '{' ? '}' : ']';
+    ++at_;
+    ++depth_;
+    // The object's keys with their lines, sorted at its end to find one given twice
+    // (a few keys an object: no hash set's allocation per key).
+    std::vector<std::pair<std::string, int>> keys;
+    int index = 0;
+    skipSpace();
+    if (!atEnd() && text_[at_] == close) {
+      ++at_;
+      --depth_;
+      return;
+    }
+    struct Closing {  // on every way out: the keys looked at while steps_ is still this object's path
+      Walker& walker;
+      std::vector<std::pair<std::string, int>>& keys;
+      ~Closing() { walker.duplicates(keys); }
+    } closing{*this, keys};
+    while (!stopped_) {
+      const std::size_t start = at_;
+      std::string step;
+      if (open == '{') {
+        if (atEnd() || text_[at_] != '"') return stop();
+        const int keyLine = line_;
+        step = string();
+        keys.emplace_back(step, keyLine);
+        skipSpace();
+        if (atEnd() || text_[at_] != ':') return stop();
+        ++at_;
+        skipSpace();
+      } else {
+        step = "[" + std::to_string(index++) + "]";
+      }
+      push(step);
+      value();
+      pop();
+      if (stopped_) return;
+      const std::size_t end = at_;
+      const int endLine = line_;
+      skipSpace();
+      if (atEnd()) return stop();
+      if (text_[at_] == ',') {
+        ++at_;
+        skipSpace();
+        continue;
+      }
+      if (text_[at_] == close) {
+        ++at_;
+        --depth_;
+        return;
+      }
+      if (!shape_.missingLine) missing(start, end, endLine, close);
+      return stop();
+    }
+  }
+
+  void duplicates(std::vector<std::pair<std::string, int>>& keys) {
+    if (keys.size() < 2 || shape_.duplicateLine) return;
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 1; i < keys.size(); ++i)
+      if (keys[i].first == keys[i - 1].first) {
+        shape_.duplicateLine = keys[i].second;  // the second time it is given
+        shape_.duplicatePath = pathText(keys[i].first);
+        return;
+      }
+  }
+
+  // The value from `start` to `end`, as a person would quote it: its first line, cut short.
+  void missing(std::size_t start, std::size_t end, int endLine, char close) {
+    std::string quoted = text_.substr(start, std::min<std::size_t>(end - start, 200));
+    const std::size_t newline = quoted.find('\n');
+    if (newline != std::string::npos || quoted.size() > 60) quoted = quoted.substr(0, std::min<std::size_t>(newline, 60)) + " ...";
+    shape_.missingLine = endLine;
+    shape_.missingAt = at_;
+    shape_.missingAfter = quoted;
+    shape_.missingCloser = close;
+  }
+
+  void stop() { stopped_ = true; }
+
   const std::string& text_;
+  const std::vector<std::string> wanted_;
+  std::vector<int> lines_;  // per length k of the wanted path's prefix found: its line
+  std::vector<std::string> steps_;
+  std::size_t matched_ = 0;  // how many of steps_ agree with wanted_
   std::size_t at_ = 0;
   int line_ = 1;
-  std::map<std::string, int> lines_;
+  int depth_ = 0;
+  bool stopped_ = false;
+  JsonShape shape_;
 };
 
 }  // namespace
 
-int lineOfPath(const std::string& text, const std::string& wanted) {
-  std::string path = wanted;
-  const std::map<std::string, int> lines = LineWalker(text).walk();
-  for (;;) {
-    const auto found = lines.find(path);
-    if (found != lines.end()) return found->second;
-    const std::size_t cut = path.find_last_of(".[");
-    if (cut == std::string::npos) return path.empty() ? 0 : lines.at("");
-    path.resize(cut);
-  }
+JsonShape scanJsonShape(const std::string& text) {
+  Walker walker(text, {});
+  walker.walk();
+  return walker.shape();
+}
+
+int lineOfPath(const std::string& text, const std::string& path) {
+  Walker walker(text, pathSteps(path));
+  walker.walk();
+  return walker.wantedLine();
 }
 
 }  // namespace odelab::world

@@ -20,12 +20,10 @@ namespace odelab::world {
 
 namespace {
 
+// Gravity may point any way: its magnitude is the gravity knob's, its
+// direction the file's (straight down, -y, when there is none).
 WorldSettings settingsFrom(const World& world) {
   const Settings& s = world.settings;
-  if (s.gravity[0] != 0 || s.gravity[2] != 0 || s.gravity[1] > 0)
-    throw WorldFileError("settings.gravity: this program runs gravity along -y only ([0, -g, 0]); the file has [" +
-                         std::to_string(s.gravity[0]) + ", " + std::to_string(s.gravity[1]) + ", " +
-                         std::to_string(s.gravity[2]) + "]");
   WorldSettings w;
   w.erp = s.erp;
   w.cfm = s.cfm;
@@ -33,7 +31,9 @@ WorldSettings settingsFrom(const World& world) {
   w.iterations = s.iterations;
   w.sor = s.sorW;
   w.solver = s.quickStep ? Solver::QuickStep : Solver::WorldStep;
-  w.gravity = -s.gravity[1];
+  w.gravity = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
+  if (w.gravity > 0)
+    for (int k = 0; k < 3; ++k) w.down[k] = s.gravity[static_cast<size_t>(k)] / w.gravity;
   return w;
 }
 
@@ -84,19 +84,16 @@ void WorldFileScene::configureWorld() {
   }
 }
 
-bool WorldFileScene::droppedLater(int body) const {
-  for (const Event& e : world_.events)
-    if (e.kind == EventKind::Drop && e.body == body && e.at > 0) return true;
-  return false;
-}
 
 void WorldFileScene::buildScene() {
   geomIndex_.clear();
   jointIndex_.clear();
   bodyOwner_.assign(world_.bodies.size(), nullptr);
   nextEvent_ = 0;
-  std::vector<bool> now(world_.bodies.size());
-  for (size_t b = 0; b < now.size(); ++b) now[b] = !droppedLater(static_cast<int>(b));
+  // A body dropped in later is not there at the start.
+  std::vector<bool> now(world_.bodies.size(), true);
+  for (const Event& e : world_.events)
+    if (e.kind == EventKind::Drop && e.at > 0) now[static_cast<size_t>(e.body)] = false;
   buildGeoms(now, true);
   for (size_t j = 0; j < world_.joints.size(); ++j) jointIndex_[buildJoint(world_.joints[j])] = static_cast<int>(j);
   std::vector<dBodyID> bodies(world_.bodies.size(), nullptr);
@@ -112,6 +109,9 @@ void WorldFileScene::buildGeoms(const std::vector<bool>& bodies, bool statics) {
   // them: the collision order, and the state hash's body order). A second
   // geom of a body joins the first one's body as attach() does in a scene.
   std::vector<std::pair<size_t, AbstractObject*>> made;
+  std::vector<int> geomsOfBody(world_.bodies.size(), 0);
+  for (const Geom& g : world_.geoms)
+    if (g.body >= 0) ++geomsOfBody[static_cast<size_t>(g.body)];
   for (size_t i = 0; i < world_.geoms.size(); ++i) {
     const Geom& g = world_.geoms[i];
     if (g.body < 0 ? !statics : !bodies[static_cast<size_t>(g.body)]) continue;
@@ -149,7 +149,7 @@ void WorldFileScene::buildGeoms(const std::vector<bool>& bodies, bool statics) {
     dGeomSetCategoryBits(object->getGeom(), g.category);
     dGeomSetCollideBits(object->getGeom(), g.collide);
     if (g.body < 0 || g.shape == ShapeKind::Plane) continue;
-    const bool shared = std::count_if(world_.geoms.begin(), world_.geoms.end(), [&](const Geom& o) { return o.body == g.body; }) > 1;
+    const bool shared = geomsOfBody[static_cast<size_t>(g.body)] > 1;
     if (!shared && identity(g.position, g.orientation)) continue;
     dGeomSetOffsetPosition(object->getGeom(), g.position[0], g.position[1], g.position[2]);
     const dQuaternion q = {g.orientation[0], g.orientation[1], g.orientation[2], g.orientation[3]};

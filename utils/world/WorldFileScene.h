@@ -17,8 +17,7 @@ namespace odelab::world {
 
 class WorldFileScene : public AbstractWindow {
  public:
-  // Throws WorldFileError when the file holds what this program cannot run
-  // (gravity off the y axis), before anything is built.
+  // Takes any world the reader (WorldJson.h) accepted: it throws nothing of its own.
   explicit WorldFileScene(World world);
   ~WorldFileScene() override;
   SceneBounds bounds() const override;
@@ -39,7 +38,6 @@ class WorldFileScene : public AbstractWindow {
   const FileOrigin* fileOrigin() const override { return &origin_; }
 
  private:
-  bool droppedLater(int body) const;
   // The geoms of the bodies marked in `bodies` (and the static ones when
   // `statics`), their bodies, offsets and collide bits.
   void buildGeoms(const std::vector<bool>& bodies, bool statics);

@@ -9,8 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "FormatRanges.h"
 #include "JsonLines.h"
 #include "SafeFile.h"
+#include "WorldSettings.h"
 
 namespace odelab::world {
 
@@ -25,6 +27,14 @@ json number(double value) {
 }
 
 json vec(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
+
+// What ODE holds of a value the reader allowed can come back a rounding past
+// its bound (a joint's anchor at 1e9 m, recomputed from its body's pose): the
+// writer puts it back at the bound, so that every export reads back.
+double within(double v, double low, double high) { return std::isfinite(v) ? std::min(high, std::max(low, v)) : v; }
+json vecWithin(const Vec3& v, double bound) {
+  return json::array({within(v[0], -bound, bound), within(v[1], -bound, bound), within(v[2], -bound, bound)});
+}
 json quat(const Quat& q) { return json::array({q[0], q[1], q[2], q[3]}); }
 
 const std::map<ShapeKind, const char*> SHAPES = {{ShapeKind::Box, "box"},
@@ -41,6 +51,28 @@ const std::map<MeasureKind, const char*> MEASURES = {
     {MeasureKind::Tunnelling, "tunnelling"},   {MeasureKind::Ballistic, "ballistic"},
     {MeasureKind::Period, "period"},           {MeasureKind::Rest, "rest"}};
 
+// Edits (insert, delete, replace) between two short words; 99 for a long one.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  if (a.size() > 64 || b.size() > 64) return 99;
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// Close enough to be a slip of the keyboard: two edits, one in a short word.
+bool nearly(const std::string& typed, const std::string& meant) {
+  return typed != meant && editDistance(typed, meant) <= (meant.size() <= 4 ? 1u : 2u);
+}
+
 // Reads one JSON object, field by field, naming the path of whatever is wrong
 // ("geoms[2].size[1]") and refusing fields it does not know (a typo would
 // otherwise be a default silently taken).
@@ -52,8 +84,12 @@ class Reader {
   ~Reader() noexcept(false) {
     if (std::uncaught_exceptions()) return;
     for (const auto& item : object_.items())
-      if (!used_.count(item.key()))
-        fail(path_ + "." + item.key(), "is not a field of this format (doc/world-format.md lists them)");
+      if (!used(item.key())) {
+        std::string meant;
+        for (const char* field : used_)
+          if (nearly(item.key(), field)) meant = ": did you mean \"" + std::string(field) + "\"?";
+        fail(path_ + "." + item.key(), "is not a field of this format (doc/world-format.md lists them)" + meant);
+      }
   }
 
   bool has(const char* key) const { return object_.contains(key); }
@@ -61,7 +97,7 @@ class Reader {
 
   double real(const char* key, double fallback, double low, double high, bool required = false) {
     const json* value = find(key, required);
-    return value ? realValue(*value, at(key), low, high) : fallback;
+    return value ? realValue(*value, [&] { return at(key); }, low, high) : fallback;
   }
   int integer(const char* key, int fallback, int low, int high, bool required = false) {
     const json* value = find(key, required);
@@ -86,14 +122,19 @@ class Reader {
     if (!value->is_string()) fail(at(key), "must be a string");
     return value->get<std::string>();
   }
+  // Every item finite and within [-bound, bound] (JSON Schema's "number": no "infinity" here).
   template <size_t N>
-  std::array<double, N> reals(const char* key, const std::array<double, N>& fallback, bool required = false) {
+  std::array<double, N> reals(const char* key, const std::array<double, N>& fallback, bool required, double bound) {
+    return reals<N>(key, fallback, required, -bound, bound);
+  }
+  template <size_t N>
+  std::array<double, N> reals(const char* key, const std::array<double, N>& fallback, bool required, double low, double high) {
     const json* value = find(key, required);
     if (!value) return fallback;
     if (!value->is_array() || value->size() != N) fail(at(key), "must be an array of " + std::to_string(N) + " numbers");
     std::array<double, N> out{};
     for (size_t i = 0; i < N; ++i)
-      out[i] = realValue((*value)[i], at(key) + "[" + std::to_string(i) + "]", -INFINITE, INFINITE);
+      out[i] = realValue((*value)[i], [&] { return at(key) + "[" + std::to_string(i) + "]"; }, low, high);
     return out;
   }
   std::uint32_t bits(const char* key) {
@@ -106,6 +147,8 @@ class Reader {
   const json* list(const char* key, bool required) {
     const json* value = find(key, required);
     if (value && !value->is_array()) fail(at(key), "must be an array");
+    if (value && value->size() > limits::ITEMS)
+      fail(at(key), "holds " + std::to_string(value->size()) + " items; the format allows " + std::to_string(limits::ITEMS));
     return value;
   }
   const json* object(const char* key) {
@@ -116,37 +159,60 @@ class Reader {
   [[noreturn]] static void fail(const std::string& where, const std::string& what) {
     throw WorldFileError(where.rfind("world.", 0) == 0 ? where.substr(6) : where, what);
   }
-  static double realValue(const json& value, const std::string& where, double low, double high) {
+  // "infinity" (or "-infinity") only where the range reaches it: a vector,
+  // a mass or a step is a finite number, as doc/world.schema.json says.
+  // `where()` spells the value's path, only when it is wrong (a string built per number read would
+  // be most of a large file's reading time).
+  template <class Where>
+  static double realValue(const json& value, const Where& where, double low, double high) {
+    const bool unbounded = std::isinf(low) || std::isinf(high);
     double v;
-    if (value.is_string() && (value == "infinity" || value == "-infinity"))
+    if (value.is_string() && (value == "infinity" || value == "-infinity")) {
+      if (!unbounded) fail(where(), "must be a finite number in [" + shortNumber(low) + ", " + shortNumber(high) + "], got " + value.dump());
       v = value == "infinity" ? INFINITE : -INFINITE;
-    else if (value.is_number())
+    } else if (value.is_number()) {
       v = value.get<double>();
-    else
-      fail(where, "must be a number (or \"infinity\")");
-    if (!(v >= low && v <= high)) {
-      std::ostringstream range;
-      range << "must be in [" << low << ", " << high << "], got " << v;
-      fail(where, range.str());
+    } else {
+      fail(where(), unbounded ? "must be a number (or \"infinity\")" : "must be a number");
     }
+    if (!(v >= low && v <= high)) fail(where(), "must be in [" + shortNumber(low) + ", " + shortNumber(high) + "], got " + shortNumber(v));
     return v;
+  }
+  static std::string shortNumber(double v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
   }
 
  private:
   const json* find(const char* key, bool required) {
-    used_.insert(key);
-    if (object_.contains(key)) return &object_.at(key);
-    if (required) fail(at(key), "is missing");
+    if (!used(key)) used_.push_back(key);
+    const auto found = object_.find(key);
+    if (found != object_.end()) return &*found;
+    if (required) {
+      // A misspelt field is both missing and unknown: say both.
+      for (const auto& item : object_.items())
+        if (!used(item.key()) && nearly(item.key(), key))
+          fail(at(key), "is missing; the object has \"" + item.key() + "\", which is not a field of this format: did you mean \"" +
+                            key + "\"?");
+      fail(at(key), "is missing");
+    }
     return nullptr;
   }
 
   const json& object_;
   std::string path_;
-  std::set<std::string> used_;
+  // The fields asked for (a dozen at most: a list searched beats a set's allocations).
+  bool used(const std::string& key) const {
+    for (const char* field : used_)
+      if (key == field) return true;
+    return false;
+  }
+  std::vector<const char*> used_;
 };
 
 Quat unitQuat(Reader& r, const char* key) {
-  Quat q = r.reals<4>(key, Quat{1, 0, 0, 0});
+  Quat q = r.reals<4>(key, Quat{1, 0, 0, 0}, false, 2.0);
   const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (std::abs(n - 1.0) > 1e-6) Reader::fail(r.at(key), "must be a unit quaternion [w, x, y, z]");
   return q;
@@ -165,9 +231,14 @@ Kind named(const std::map<Kind, const char*>& names, const std::string& word, co
 // A body named by index, or -1 for none (the static world).
 int bodyIndex(Reader& r, const char* key, int bodies) { return r.integer(key, -1, -1, bodies - 1, true); }
 
-// Sylvester's criterion on [xx xy xz; xy yy yz; xz yz zz].
+// Sylvester's criterion on [xx xy xz; xy yy yz; xz yz zz], on the tensor
+// divided by its largest entry, so that no product overflows or underflows.
 bool positiveDefinite(const std::array<double, 6>& i) {
-  const double xx = i[0], yy = i[1], zz = i[2], xy = i[3], xz = i[4], yz = i[5];
+  double largest = 0;
+  for (double v : i) largest = std::max(largest, std::abs(v));
+  if (!(largest > 0) || !std::isfinite(largest)) return false;
+  const double xx = i[0] / largest, yy = i[1] / largest, zz = i[2] / largest, xy = i[3] / largest, xz = i[4] / largest,
+               yz = i[5] / largest;
   const double minor2 = xx * yy - xy * xy;
   const double det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
   return xx > 0 && minor2 > 0 && det > 0;
@@ -176,15 +247,20 @@ bool positiveDefinite(const std::array<double, 6>& i) {
 Settings readSettings(const json& j) {
   Reader r(j, "settings");
   Settings s;
-  s.step = r.real("step", s.step, 1e-7, 1.0, true);
-  s.gravity = r.reals<3>("gravity", s.gravity, true);
-  s.erp = r.real("erp", s.erp, 0.0, 1.0);
-  s.cfm = r.real("cfm", s.cfm, 0.0, 1.0);
+  // The knobs' ranges (utils/WorldSettings.cpp): what a file sets, a knob can show and move.
+  s.step = r.real("step", s.step, ranges::STEP.min, ranges::STEP.max, true);
+  s.gravity = r.reals<3>("gravity", s.gravity, true, limits::GRAVITY_COMPONENT);
+  const double g = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
+  if (!ranges::GRAVITY.contains(g))
+    Reader::fail(r.at("gravity"), "its magnitude must be at most " + Reader::shortNumber(ranges::GRAVITY.max) + " m/s^2, got " +
+                                      Reader::shortNumber(g));
+  s.erp = r.real("erp", s.erp, ranges::ERP.min, ranges::ERP.max);
+  s.cfm = r.real("cfm", s.cfm, ranges::CFM.min, ranges::CFM.max);
   const std::string solver = r.text("solver", "quick");
   if (solver != "quick" && solver != "step") Reader::fail(r.at("solver"), "\"" + solver + "\" is not one of quick, step");
   s.quickStep = solver == "quick";
-  s.iterations = r.integer("iterations", s.iterations, 1, 100000);
-  s.sorW = r.real("sor_w", s.sorW, 0.0, 2.0);
+  s.iterations = r.integer("iterations", s.iterations, static_cast<int>(ranges::ITERATIONS.min), static_cast<int>(ranges::ITERATIONS.max));
+  s.sorW = r.real("sor_w", s.sorW, ranges::SOR.min, ranges::SOR.max);
   s.contactMaxCorrectingVelocity = r.real("contact_max_correcting_velocity", s.contactMaxCorrectingVelocity, 0.0, INFINITE);
   s.contactSurfaceLayer = r.real("contact_surface_layer", s.contactSurfaceLayer, 0.0, 1.0);
   s.maxContacts = r.integer("max_contacts", s.maxContacts, 1, 64);
@@ -197,15 +273,15 @@ Settings readSettings(const json& j) {
 Body readBody(const json& j, const std::string& path) {
   Reader r(j, path);
   Body b;
-  b.mass = r.real("mass", b.mass, 1e-12, 1e15, true);
-  b.inertia = r.reals<6>("inertia", b.inertia, true);
+  b.mass = r.real("mass", b.mass, limits::MASS_MIN, limits::MASS_MAX, true);
+  b.inertia = r.reals<6>("inertia", b.inertia, true, limits::INERTIA);
   if (!positiveDefinite(b.inertia))
     Reader::fail(r.at("inertia"), "is not positive definite (a real body's inertia tensor is: xx, yy, zz > 0 and every "
                                   "leading minor > 0), as ODE's dMassCheck requires");
-  b.position = r.reals<3>("position", b.position, true);
+  b.position = r.reals<3>("position", b.position, true, limits::LENGTH);
   b.orientation = unitQuat(r, "orientation");
-  b.linearVelocity = r.reals<3>("linear_velocity", b.linearVelocity);
-  b.angularVelocity = r.reals<3>("angular_velocity", b.angularVelocity);
+  b.linearVelocity = r.reals<3>("linear_velocity", b.linearVelocity, false, limits::SPEED);
+  b.angularVelocity = r.reals<3>("angular_velocity", b.angularVelocity, false, limits::ANGULAR_SPEED);
   b.enabled = r.flag("enabled", true);
   b.kinematic = r.flag("kinematic", false);
   b.gravity = r.flag("gravity", true);
@@ -229,27 +305,24 @@ Geom readGeom(const json& j, const std::string& path, int bodies) {
   g.body = bodyIndex(r, "body", bodies);
   switch (g.shape) {
     case ShapeKind::Box:
-      g.size = r.reals<3>("size", g.size, true);
+      g.size = r.reals<3>("size", g.size, true, limits::SIDE_MIN, limits::SIDE_MAX);
       break;
     case ShapeKind::Sphere:
-      g.size = {r.real("radius", 0, 1e-9, 1e9, true), 0, 0};
+      g.size = {r.real("radius", 0, limits::SIDE_MIN, limits::SIDE_MAX, true), 0, 0};
       break;
     case ShapeKind::Capsule:
     case ShapeKind::Cylinder:
-      g.size = {r.real("radius", 0, 1e-9, 1e9, true), r.real("length", 0, 0, 1e9, true), 0};
+      g.size = {r.real("radius", 0, limits::SIDE_MIN, limits::SIDE_MAX, true), r.real("length", 0, 0, limits::SIDE_MAX, true), 0};
       break;
     case ShapeKind::Plane:
-      g.plane = r.reals<4>("plane", g.plane, true);
+      g.plane = r.reals<4>("plane", g.plane, true, limits::LENGTH);
       if (std::abs(std::sqrt(g.plane[0] * g.plane[0] + g.plane[1] * g.plane[1] + g.plane[2] * g.plane[2]) - 1.0) > 1e-6)
         Reader::fail(r.at("plane"), "(a, b, c) must be a unit normal");
       if (g.body >= 0) Reader::fail(r.at("body"), "a plane is static: it has no body");
       break;
   }
-  if (g.shape == ShapeKind::Box)
-    for (int i = 0; i < 3; ++i)
-      if (!(g.size[i] > 0)) Reader::fail(r.at("size"), "every side must be > 0");
   if (g.shape != ShapeKind::Plane) {
-    g.position = r.reals<3>("position", g.position);
+    g.position = r.reals<3>("position", g.position, false, limits::LENGTH);
     g.orientation = unitQuat(r, "orientation");
   }
   g.category = r.bits("category");
@@ -265,9 +338,9 @@ Joint readJoint(const json& j, const std::string& path, int bodies) {
   k.body2 = bodyIndex(r, "body2", bodies);
   if (k.body1 < 0 && k.body2 < 0) Reader::fail(path, "joins no body (body1 and body2 are both -1)");
   if (k.body1 == k.body2) Reader::fail(path, "joins body " + std::to_string(k.body1) + " to itself");
-  if (k.kind == JointKind::Ball || k.kind == JointKind::Hinge) k.anchor = r.reals<3>("anchor", k.anchor, true);
+  if (k.kind == JointKind::Ball || k.kind == JointKind::Hinge) k.anchor = r.reals<3>("anchor", k.anchor, true, limits::LENGTH);
   if (k.kind == JointKind::Hinge || k.kind == JointKind::Slider) {
-    k.axis = r.reals<3>("axis", k.axis, true);
+    k.axis = r.reals<3>("axis", k.axis, true, limits::LENGTH);
     const double n = std::sqrt(k.axis[0] * k.axis[0] + k.axis[1] * k.axis[1] + k.axis[2] * k.axis[2]);
     if (!(n > 0)) Reader::fail(r.at("axis"), "must not be zero");
     k.lowStop = r.real("low_stop", -INFINITE, -INFINITE, INFINITE);
@@ -384,7 +457,7 @@ Event readEvent(const json& j, const std::string& path, const World& w) {
   if (r.has("drop") == r.has("push")) Reader::fail(path, "must have one of \"drop\" or \"push\" (a body's index)");
   e.kind = r.has("drop") ? EventKind::Drop : EventKind::Push;
   e.body = r.integer(e.kind == EventKind::Drop ? "drop" : "push", 0, 0, last, true);
-  if (e.kind == EventKind::Push) e.impulse = r.reals<3>("impulse", e.impulse, true);
+  if (e.kind == EventKind::Push) e.impulse = r.reals<3>("impulse", e.impulse, true, limits::IMPULSE);
   return e;
 }
 
@@ -496,7 +569,7 @@ World worldFromParsed(const json& root) {
     for (size_t i = 0; i < pairs->size(); ++i) {
       const std::string where = "pair_surfaces[" + std::to_string(i) + "]";
       Reader p((*pairs)[i], where);
-      const std::array<double, 2> g = p.reals<2>("geoms", {0, 0}, true);
+      const std::array<double, 2> g = p.reals<2>("geoms", {0, 0}, true, limits::ITEMS);
       PairSurface pair;
       for (int k = 0; k < 2; ++k)
         if (g[k] != std::floor(g[k]) || g[k] < 0 || g[k] >= geomCount)
@@ -528,25 +601,35 @@ World worldFromParsed(const json& root) {
       if (e.kind == EventKind::Drop && !dropped.insert(e.body).second)
         Reader::fail(where + ".drop", "body " + std::to_string(e.body) + " is dropped twice");
     }
+    // Each event looked at once (a file of 100k events reads in linear time).
+    std::vector<bool> jointed(w.bodies.size(), false);
+    for (const Joint& j : w.joints)
+      for (int b : {j.body1, j.body2})
+        if (b >= 0) jointed[static_cast<size_t>(b)] = true;
     for (size_t i = 0; i < w.events.size(); ++i) {
       const Event& e = w.events[i];
       const std::string where = "events[" + std::to_string(i) + "]";
-      for (size_t k = i + 1; k < w.events.size(); ++k)
-        if (e.kind == EventKind::Push && w.events[k].kind == EventKind::Drop && w.events[k].body == e.body)
-          Reader::fail(where + ".push", "body " + std::to_string(e.body) + " is pushed before it is dropped in");
-      if (e.kind == EventKind::Drop)
-        for (const Joint& j : w.joints)
-          if (j.body1 == e.body || j.body2 == e.body)
-            Reader::fail(where + ".drop", "body " + std::to_string(e.body) + " has a joint; only a free body can be dropped in");
+      if (e.kind == EventKind::Drop && jointed[static_cast<size_t>(e.body)])
+        Reader::fail(where + ".drop", "body " + std::to_string(e.body) + " has a joint; only a free body can be dropped in");
+    }
+    std::vector<bool> droppedLater(w.bodies.size(), false);
+    for (size_t i = w.events.size(); i-- > 0;) {
+      const Event& e = w.events[i];
+      if (e.kind == EventKind::Drop) droppedLater[static_cast<size_t>(e.body)] = true;
+      else if (droppedLater[static_cast<size_t>(e.body)])
+        Reader::fail("events[" + std::to_string(i) + "].push", "body " + std::to_string(e.body) + " is pushed before it is dropped in");
     }
   }
-  for (int b = 0; b < bodyCount; ++b) {
-    bool hasGeom = false;
-    for (const Geom& g : w.geoms) hasGeom = hasGeom || g.body == b;
-    bool hasJoint = false;
-    for (const Joint& j : w.joints) hasJoint = hasJoint || j.body1 == b || j.body2 == b;
-    if (!hasGeom && !hasJoint) Reader::fail("bodies[" + std::to_string(b) + "]", "has no geom and no joint: nothing could touch or hold it");
-  }
+  // Every body needs a geom: the programs make a body with its first geom, and
+  // the engines and the exporter find bodies through their geoms.
+  std::vector<bool> hasGeom(w.bodies.size(), false);
+  for (const Geom& g : w.geoms)
+    if (g.body >= 0) hasGeom[static_cast<size_t>(g.body)] = true;
+  for (int b = 0; b < bodyCount; ++b)
+    if (!hasGeom[static_cast<size_t>(b)])
+      Reader::fail("bodies[" + std::to_string(b) + "]",
+                   "has no geom: every body needs one (a body held only by a joint can carry a small sphere that collides "
+                   "with nothing, \"collide\": 0)");
   return w;
 }
 
@@ -560,19 +643,40 @@ std::string numberLine(const std::string& text, const std::string& message) {
   return " (line " + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + ")";
 }
 
+// nlohmann's message without its "[json.exception.parse_error.101] " tag.
+std::string untagged(const char* message) {
+  const std::string text = message;
+  const std::size_t tag = text.rfind("[json.exception.", 0) == 0 ? text.find("] ") : std::string::npos;
+  return tag == std::string::npos ? text : text.substr(tag + 2);
+}
+
 }  // namespace
 
 World worldFromJson(const std::string& text) {
+  // One linear pass first: nesting beyond any world's is refused before
+  // nlohmann builds it, and what nlohmann takes silently (a key given twice:
+  // the last wins) or says late (a missing comma: at the next token) is said here.
+  const JsonShape shape = scanJsonShape(text);
+  if (shape.tooDeepLine)
+    throw WorldFileError("line " + std::to_string(shape.tooDeepLine) + ": arrays and objects nested deeper than " +
+                         std::to_string(MAX_JSON_DEPTH) + " (a world file needs 4)");
   json root;
   try {
     root = json::parse(text);
   } catch (const json::parse_error& error) {
-    // nlohmann's message names the line and column.
-    throw WorldFileError(std::string("not JSON: ") + error.what());
+    // Where the scan saw a value followed by neither ',' nor a closer, and
+    // nlohmann stopped there too, the mistake is at the end of that value.
+    if (shape.missingLine && error.byte >= shape.missingAt)
+      throw WorldFileError("line " + std::to_string(shape.missingLine) + ": a comma or '" + shape.missingCloser +
+                           "' is missing after " + shape.missingAfter);
+    throw WorldFileError(std::string("not JSON: ") + untagged(error.what()));
   } catch (const json::exception& error) {
     // A number beyond a double's range: nlohmann gives no position, so the line is the number's.
-    throw WorldFileError(std::string("not a usable number: ") + error.what() + numberLine(text, error.what()));
+    throw WorldFileError(std::string("not a usable number: ") + untagged(error.what()) + numberLine(text, error.what()));
   }
+  if (shape.duplicateLine)
+    throw WorldFileError("line " + std::to_string(shape.duplicateLine) + ": " + shape.duplicatePath +
+                         ": is given twice in one object (which one was meant?)");
   try {
     return worldFromParsed(root);
   } catch (const WorldFileError& error) {
@@ -592,10 +696,10 @@ std::string worldToJson(const World& world) {
     bodyIndex[i] = static_cast<int>(bodies.size());
     json j = {{"mass", b.mass},
               {"inertia", json::array({b.inertia[0], b.inertia[1], b.inertia[2], b.inertia[3], b.inertia[4], b.inertia[5]})},
-              {"position", vec(b.position)},
+              {"position", vecWithin(b.position, limits::LENGTH)},
               {"orientation", quat(b.orientation)},
-              {"linear_velocity", vec(b.linearVelocity)},
-              {"angular_velocity", vec(b.angularVelocity)}};
+              {"linear_velocity", vecWithin(b.linearVelocity, limits::SPEED)},
+              {"angular_velocity", vecWithin(b.angularVelocity, limits::ANGULAR_SPEED)}};
     if (!b.enabled) j["enabled"] = false;
     if (b.kinematic) j["kinematic"] = true;
     if (!b.gravity) j["gravity"] = false;
@@ -628,7 +732,7 @@ std::string worldToJson(const World& world) {
       case ShapeKind::Plane: j["plane"] = json::array({g.plane[0], g.plane[1], g.plane[2], g.plane[3]}); break;
     }
     if (g.shape != ShapeKind::Plane) {
-      j["position"] = vec(g.position);
+      j["position"] = vecWithin(g.position, limits::LENGTH);
       j["orientation"] = quat(g.orientation);
     }
     if (g.category != 0xffffffffu) j["category"] = g.category;
@@ -639,9 +743,9 @@ std::string worldToJson(const World& world) {
   for (const Joint& k : world.joints) {
     if ((k.body1 >= 0 && world.bodies[k.body1].removed) || (k.body2 >= 0 && world.bodies[k.body2].removed)) continue;
     json j = {{"type", jointName(k.kind)}, {"body1", bodyRef(k.body1)}, {"body2", bodyRef(k.body2)}};
-    if (k.kind == JointKind::Ball || k.kind == JointKind::Hinge) j["anchor"] = vec(k.anchor);
+    if (k.kind == JointKind::Ball || k.kind == JointKind::Hinge) j["anchor"] = vecWithin(k.anchor, limits::LENGTH);
     if (k.kind == JointKind::Hinge || k.kind == JointKind::Slider) {
-      j["axis"] = vec(k.axis);
+      j["axis"] = vecWithin(k.axis, limits::LENGTH);
       if (!std::isinf(k.lowStop)) j["low_stop"] = k.lowStop;
       if (!std::isinf(k.highStop)) j["high_stop"] = k.highStop;
     }
@@ -712,10 +816,9 @@ std::string worldToJson(const World& world) {
 
 World readWorldFile(const std::string& path) {
   // A world of thousands of bodies is a few MB; 64 MB leaves room and stops /dev/zero-like files.
-  constexpr std::size_t MAX_WORLD_BYTES = 64u << 20;
   std::string text;
   try {
-    text = readBoundedFile(path, MAX_WORLD_BYTES, "the world file");
+    text = readBoundedFile(path, limits::BYTES, "the world file");
   } catch (const ReadRefused& error) {
     throw WorldFileError(error.what());
   }

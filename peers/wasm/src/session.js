@@ -6,6 +6,10 @@
 
 const REPLYING = new Set(['build', 'add', 'step']);  // the messages that take a reply
 
+// The most steps one message asks for: the program asks for 1 at a time and
+// a page for a frame's few; more would hold the server past any reply's deadline.
+const MAX_STEPS_PER_MESSAGE = 1000;
+
 // Non-finite numbers are not JSON: a state with NaN or infinity sends null
 // in their place, which the C++ side reads back as NaN.
 const finiteOrNull = (x) => (Number.isFinite(x) ? x : null);
@@ -60,6 +64,8 @@ class Session {
         return undefined;
       case 'step': {
         const count = message.count === undefined ? 1 : message.count;
+        if (!Number.isInteger(count) || count < 1 || count > MAX_STEPS_PER_MESSAGE)
+          throw new Error(`count ${JSON.stringify(count)}: a whole number of steps in [1, ${MAX_STEPS_PER_MESSAGE}]`);
         for (let n = 0; n < count; ++n) engine.step();
         return {
           states: statesOf(engine, this.bodies),
@@ -107,4 +113,4 @@ class Session {
   }
 }
 
-module.exports = { Session };
+module.exports = { Session, MAX_STEPS_PER_MESSAGE };
