@@ -13,6 +13,16 @@ const readline = require('readline');
 const { Session } = require('./src/session');
 
 const ENGINES = { havok: './src/engines/havok', jolt: './src/engines/jolt', rapier: './src/engines/rapier' };
+// An engine's name is one of ENGINES' own keys: a name such as '__proto__'
+// or 'toString', which every object inherits, is not one.
+const isEngine = (name) => typeof name === 'string' && Object.prototype.hasOwnProperty.call(ENGINES, name);
+
+// The reader of stdout gone (the C++ side ended, `| head`): end quietly, as
+// a program whose reader left, instead of an 'EPIPE' traceback.
+process.stdout.on('error', (error) => {
+  if (error.code === 'EPIPE') process.exit(0);
+  throw error;
+});
 
 function fail(message) {
   process.stderr.write(`engine_server: ${message}\n`);
@@ -58,12 +68,12 @@ async function serve(name, setting) {
 
 function main(argv) {
   if (argv[0] === '--info') {
-    if (!ENGINES[argv[1]]) fail(`--info: unknown engine '${argv[1]}' (havok, jolt or rapier)`);
+    if (!isEngine(argv[1])) fail(`--info: unknown engine '${argv[1]}' (havok, jolt or rapier)`);
     info(argv[1]);
     return;
   }
   const [name, setting] = argv;
-  if (!ENGINES[name] || !['default', 'best'].includes(setting))
+  if (!isEngine(name) || !['default', 'best'].includes(setting))
     fail('usage: engine_server.js havok|jolt|rapier default|best, or --info ENGINE');
   serve(name, setting);
 }
