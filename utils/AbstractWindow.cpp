@@ -92,6 +92,10 @@ void AbstractWindow::shutdown() {
 }
 
 void AbstractWindow::createWorld() {
+  // The scene's output files are opened (and a previous run's replaced)
+  // only once its engine has built it too: an engine that refuses the
+  // scene leaves them as they were (StreamedFile::Hold).
+  StreamedFile::Hold outputsHeld;
   run_.create(options_.seed);
   setSpaceKind(run_.spaceKind_);
   tuning_.settings_.applyTo(run_.world_);
@@ -105,6 +109,7 @@ void AbstractWindow::createWorld() {
   configureWorld();
   buildScene();
   startEngine();
+  outputsHeld.release();
 }
 
 void AbstractWindow::setSpaceKind(SpaceKind kind) { run_.setSpaceKind(kind, bounds()); }
@@ -299,18 +304,18 @@ int AbstractWindow::reportHeadless() {
   if (stopSignal() != 0) return stoppedBySignal();
   endOutputs(run_.blowUpReason_);
   const Metrics result = metrics();
+  const int status = run_.blowUpReason_.empty() ? exit_code::OK
+                     : run_.engineFailed_        ? exit_code::ENGINE_FAILED
+                                                 : exit_code::BLEW_UP;
   if (lockstep_.report) {  // a compare run prints and writes every engine's together
     lockstep_.report(result);
-    return run_.blowUpReason_.empty() ? exit_code::OK : exit_code::BLEW_UP;
+    return status;
   }
   std::cout << title_ << ": " << formatValue(run_.simulatedTime_) << " simulated seconds\n";
   result.print(std::cout);
   if (!options_.metricsJson.empty()) result.writeJsonAtomically(options_.metricsJson);
-  if (!run_.blowUpReason_.empty()) {
-    std::cerr << "error: " << run_.blowUpReason_ << '\n';
-    return exit_code::BLEW_UP;
-  }
-  return exit_code::OK;
+  if (!run_.blowUpReason_.empty()) std::cerr << "error: " << run_.blowUpReason_ << '\n';
+  return status;
 }
 
 void AbstractWindow::endOutputs(const std::string& cutShortBecause) {
@@ -355,7 +360,8 @@ Metrics AbstractWindow::metrics() const {
     m.set("mu_infinite", std::isinf(tuning_.contact_.mu) ? 1 : 0);
     m.set("max_contacts", tuning_.contact_.maxContacts);
   }
-  m.set("non_finite", run_.blowUpReason_.empty() ? 0 : 1);
+  // A blow-up is a state not finite; an engine that failed is not one.
+  m.set("non_finite", run_.blowUpReason_.empty() || run_.engineFailed_ ? 0 : 1);
   m.set("state_hash", static_cast<double>(run_.stateHash()));
   // The engine's own collision and step calls (ODE's, or --engine's without
   // the edits and states passed to it): the cost compared like with like.
@@ -363,6 +369,7 @@ Metrics AbstractWindow::metrics() const {
   if (engine_.active()) {
     m.set("engine_cpu_seconds", engine_.engineCpuSeconds());
     m.set("translation_note_count", static_cast<double>(engine_.translationNotes().size()));
+    m.set("engine_failed", run_.engineFailed_ ? 1 : 0);  // 1: status 7, the engine and not its physics
     m.setTexts("engine", {engine_.engineName(), options_.engineBest ? "best" : "default"});
     m.setTexts("translation_notes", engine_.translationNotes());
   }

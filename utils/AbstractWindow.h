@@ -43,6 +43,11 @@ class AbstractWindow {
   // Its files in --out-dir (run log included): --metrics-json and --screenshot may not name them.
   virtual std::vector<std::string> outputFileNames() const { return {programName() + "_run_log.txt"}; }
   virtual void checkOptions() const {}  // after parsing; throws UsageError naming the option
+  // A file the scene was made from, as (option, path): odelab's --world.
+  // With the options' own inputs (--events, --font), none of the run's
+  // writes may name it (cli::refuseInputsAsOutputs).
+  void readsFile(std::string option, std::string path) { inputFiles_.emplace_back(std::move(option), std::move(path)); }
+  const std::vector<std::pair<std::string, std::string>>& inputFiles() const { return inputFiles_; }
   void initialize(const RunOptions& options);  // builds world and scene, once after parsing
   void reset();     // R: builds the scene again; settings persist
   void shutdown();  // destroys world, space, objects, threading; before dCloseODE()
@@ -227,6 +232,7 @@ class AbstractWindow {
   world::EngineLink engine_;
   Lockstep lockstep_;
   std::function<void(const TimelineEvent&)> echo_;
+  std::vector<std::pair<std::string, std::string>> inputFiles_;
 };
 
 }  // namespace odelab

@@ -32,6 +32,8 @@ void AbstractWindow::startEngine() {
     engine_.start(world::makeEngine(options_.engine, setting), options_.engine, setting,
                   world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_)),
                   run_.objects_, surfaceOf(), fileOrigin());
+  } catch (const world::EngineFailure& error) {  // the engine failed: its kind kept (status 7, not 2)
+    throw world::EngineFailure("engine " + options_.engine + ": " + error.what());
   } catch (const world::EngineError& error) {
     throw world::EngineError("engine " + options_.engine + ": " + error.what());
   }
@@ -46,8 +48,17 @@ bool AbstractWindow::stepEngine() {
   try {
     engine_.sendEdits(run_.objects_, surfaceOf());
     run_.engineStepWallSeconds_ = engine_.step();
-  } catch (const world::EngineError& error) {
+  } catch (const world::EngineFailure& error) {
+    // Not the physics: the engine itself (its process, its protocol, its
+    // deadline) failed, which the status and the metrics keep apart from a
+    // blow-up so that no reader takes it for a stability limit.
     run_.blowUpReason_ = "engine " + options_.engine + " failed: " + error.what() + momentAndSettings();
+    run_.engineFailed_ = true;
+    return false;
+  } catch (const world::EngineError& error) {
+    // The engine answered, with a state that is not finite or an error of
+    // its own while stepping: the run blew up on it, as on ODE (status 3).
+    run_.blowUpReason_ = "simulation blew up on engine " + options_.engine + ": " + error.what() + momentAndSettings();
     return false;
   }
   const std::vector<std::string>& notes = engine_.translationNotes();

@@ -352,6 +352,27 @@ void refuseUnwritableOutputs(const RunOptions& options, const std::vector<std::s
   }
 }
 
+void refuseInputsAsOutputs(const RunOptions& options, const std::vector<std::string>& outputNames,
+                           const std::vector<std::pair<std::string, std::string>>& inputs,
+                           const std::string& exportWorld) {
+  std::vector<std::pair<std::string, std::string>> read = inputs;
+  if (!options.eventsFile.empty()) read.emplace_back("--events", options.eventsFile);
+  if (!options.fontPath.empty()) read.emplace_back("--font", options.fontPath);
+  std::vector<std::pair<std::string, std::string>> written{
+      {"--metrics-json", options.metricsJson}, {"--screenshot", options.screenshot}, {"--export-world", exportWorld}};
+  for (const std::string& name : outputNames) written.emplace_back("--out-dir", joinPath(options.outDir, name));
+  for (const auto& [inputOption, input] : read) {
+    for (const auto& [outputOption, output] : written)
+      if (sameFile(input, output))
+        throw UsageError(outputOption + ": '" + output + "' is the file " + inputOption + " reads ('" + input +
+                         "'); a run never writes what it reads: name another file");
+    if (!options.recordDir.empty() && isRecordedFrameName(input) &&
+        sameFile(input, joinPath(options.recordDir, fileName(input))))
+      throw UsageError("--record: '" + input + "', which " + inputOption + " reads, is a frame --record saves in '" +
+                       options.recordDir + "'; name another folder");
+  }
+}
+
 void refuseBelowStep(const char* option, double interval, double step) {
   if (interval < step)
     throw UsageError(std::string(option) + ": " + formatNumber(interval) + " s is below one step (--step " +
@@ -398,6 +419,24 @@ void validateRunOptions(const RunOptions& options) {
     throw UsageError("--events: needs a window; it cannot be combined with --headless");
   if (options.headless && !options.screenshot.empty())
     throw UsageError("--screenshot: needs a window; it cannot be combined with --headless");
+}
+
+std::string exitStatusHelp() {
+  using namespace exit_code;
+  const std::pair<int, const char*> statuses[] = {
+      {OK, "success"},
+      {RUNTIME_ERROR, "runtime error (an output file could not be written)"},
+      {USAGE, "invalid option or value, or an engine that cannot build the scene; nothing was written"},
+      {BLEW_UP, "the simulation blew up (a state not finite)"},
+      {ODE_ERROR, "ODE reported an error"},
+      {MISSING_RESOURCE, "shaders, font or the window module not found"},
+      {NO_DISPLAY, "no window could be opened"},
+      {ENGINE_FAILED, "the engine failed, not its physics (its process died, answered what is not the protocol, "
+                      "or missed a deadline)"},
+  };
+  std::string text = "Exit status:\n";
+  for (const auto& [status, meaning] : statuses) text += "  " + std::to_string(status) + ": " + meaning + "\n";
+  return text + "  128 + N: stopped by signal N (SIGHUP 129, SIGINT 130, SIGUSR1 138, SIGALRM 142, SIGTERM 143)\n";
 }
 
 std::string keysHelp(const AbstractWindow& scene) {

@@ -99,8 +99,20 @@ void refuseOwnOutputs(const RunOptions& options, const std::vector<std::string>&
 // same rule as the files replaced whole (whyNotWritable): a hard link, a
 // symbolic link, a FIFO there is refused before the run. Throws UsageError.
 void refuseUnwritableOutputs(const RunOptions& options, const std::vector<std::string>& outputNames);
+// No file the run writes (--metrics-json, --screenshot, --export-world,
+// `exportWorld`, the outputs `outputNames` in --out-dir, a frame --record
+// saves) is one the run reads: `inputs` (the scene's, as (option, path):
+// odelab's --world) and the options' own (--events, --font). One file is
+// the same path or the same device and inode (sameFile, SafeFile.h).
+// Throws UsageError naming both options, before anything is read again or
+// written.
+void refuseInputsAsOutputs(const RunOptions& options, const std::vector<std::string>& outputNames,
+                           const std::vector<std::pair<std::string, std::string>>& inputs,
+                           const std::string& exportWorld);
 
 // "Keys:" section for --help, from the scene's key table plus the camera keys.
+// The exit statuses (ExitCodes.h) as --help lists them, after the keys.
+std::string exitStatusHelp();
 std::string keysHelp(const AbstractWindow& scene);
 
 }  // namespace cli

@@ -136,8 +136,9 @@ struct CompareRun::Lane {
       odelab::markCutShort(*scene, std::string("ODE error: ") + failure.what());
     } catch (const world::EngineError& failure) {
       error = failure.what();
-      status = exit_code::USAGE;
-      odelab::markCutShort(*scene, failure.what());
+      const bool failed = dynamic_cast<const world::EngineFailure*>(&failure) != nullptr;
+      status = failed ? exit_code::ENGINE_FAILED : exit_code::USAGE;
+      odelab::markCutShort(*scene, failed ? "engine failure: " + error : error);
     } catch (const UsageError& failure) {
       error = failure.what();
       status = exit_code::USAGE;
@@ -210,12 +211,17 @@ int CompareRun::run(AbstractWindow& ode, const RunOptions& options) {
   for (const auto& lane : others_) lanes.push_back(lane.get());
 
   // Every scene built before any steps, ODE's first: an engine that cannot
-  // build the scene refuses the run here, as its own run would (the runner
-  // marks the files of those built already).
-  for (Lane* lane : lanes) {
-    const RunOptions own = lane->scene->options();
-    lane->initialized = true;  // its files may be open even when this throws
-    lane->scene->initialize(own);
+  // build the scene refuses the run here, as its own run would, and no
+  // engine's output file has been opened yet (the hold is released only
+  // once every scene is built).
+  {
+    StreamedFile::Hold outputsHeld;
+    for (Lane* lane : lanes) {
+      const RunOptions own = lane->scene->options();
+      lane->initialized = true;
+      lane->scene->initialize(own);
+    }
+    outputsHeld.release();
   }
   // Each report is kept for the one below, not printed or written.
   const auto keepReport = [](Lane* lane) {

@@ -117,6 +117,7 @@ int runWorldFile(const std::string& path, std::vector<char*>& arguments) {
   const auto make = [world, path]() -> std::unique_ptr<odelab::AbstractWindow> {
     auto scene = std::make_unique<odelab::world::WorldFileScene>(*world);
     scene->identify("world", scene->fileTitle(path));
+    scene->readsFile("--world", path);
     return scene;
   };
   return odelab::runScene(make(), "A world file (doc/world-format.md) run in ODE or, with --engine, another engine.",

@@ -197,8 +197,24 @@ void onStopRequest(void (*handler)(int)) {
   sigaction(SIGTERM, &action, nullptr);
   // The terminal or session went away: a stop like the others (129), not a
   // kill that leaves the output files unmarked. Ignored stays ignored (nohup).
-  struct sigaction hangup {};
-  if (sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);
+  // SIGUSR1, SIGUSR2 and SIGALRM (a timer someone set) would kill the run
+  // unmarked, its temporary files left behind: they stop it like SIGTERM
+  // (128 + N). Ignored stays ignored, as for SIGHUP.
+  for (const int signal : {SIGHUP, SIGUSR1, SIGUSR2, SIGALRM}) {
+    struct sigaction before {};
+    if (sigaction(signal, nullptr, &before) == 0 && before.sa_handler != SIG_IGN) sigaction(signal, &action, nullptr);
+  }
+  // A reader that went away (`test2 | true`) and a file size limit
+  // (ulimit -f) are failed writes, not deaths: with the signals ignored the
+  // write fails with EPIPE or EFBIG, the writer that made it says so and
+  // removes its temporary file. A run whose only lost write was to standard
+  // output after its end (| true) ends as it ran; the engines' children
+  // get both back at their defaults (EnginePipe).
+  struct sigaction ignore {};
+  ignore.sa_handler = SIG_IGN;
+  sigemptyset(&ignore.sa_mask);
+  sigaction(SIGPIPE, &ignore, nullptr);
+  sigaction(SIGXFSZ, &ignore, nullptr);
 }
 
 }  // namespace odelab::platform

@@ -1,6 +1,8 @@
 #include "SafeFile.h"
 
+#include <filesystem>
 #include <stdexcept>
+#include <system_error>
 
 #include "Platform.h"
 
@@ -88,6 +90,13 @@ bool sameFilePath(const std::string& a, const std::string& b) {
   if (!platform::sameName(nameOf(a), nameOf(b))) return false;
   const std::string folderA = platform::canonicalPath(folderOf(a)), folderB = platform::canonicalPath(folderOf(b));
   return !folderA.empty() && platform::sameName(folderA, folderB);
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+  if (a.empty() || b.empty()) return false;
+  if (sameFilePath(a, b)) return true;
+  std::error_code unknown;  // either absent: not one existing file
+  return std::filesystem::equivalent(a, b, unknown) && !unknown;
 }
 
 std::FILE* openExclusiveOutput(const std::string& path) {

@@ -48,6 +48,10 @@ std::string readBoundedFile(const std::string& path, std::size_t maxBytes, const
 // True when the two paths name the same file once their folders are
 // resolved (neither file has to exist; their folders do).
 bool sameFilePath(const std::string& a, const std::string& b);
+// True when `a` and `b` are one file: the same path (sameFilePath), or two
+// names of one existing file (the same device and inode, through links:
+// std::filesystem::equivalent). What a run reads is never what it writes.
+bool sameFile(const std::string& a, const std::string& b);
 
 // Opens `path` for a run's streamed output (Test2_output.txt and the like):
 // never through a symbolic link, never a FIFO or device, never a file with

@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
-#include <random>
 #include <exception>
 #include <iostream>
 #include <stdexcept>
@@ -16,7 +15,9 @@
 #include "CopyLine.h"
 #include "ExitCodes.h"
 #include "OdeMessages.h"
+#include "MeasurementLog.h"
 #include "OpenScene.h"
+#include "Platform.h"
 #include "SceneVisits.h"
 #include "StopSignal.h"
 #include "SafeFile.h"
@@ -96,26 +97,16 @@ int run(OpenScene& current, const RunOptions& options, SceneSwitching* switching
 }
 
 // --export-world: the scene as built, as data, and nothing run. The scene
-// is built headless with its output files in a folder of its own, removed
-// afterwards, so that exporting never touches a run's files.
+// is built headless under a hold on its output files that is never
+// released (StreamedFile::Hold): they are never opened, so exporting
+// touches no run's files and needs no temporary folder (nothing left in
+// TMPDIR when the export is cut short, nothing asked of it).
 class ExportWorld {
  public:
   explicit ExportWorld(std::string path) : path_(std::move(path)) {}
-  ~ExportWorld() {
-    std::error_code ignored;
-    if (!folder_.empty()) std::filesystem::remove_all(folder_, ignored);
-  }
   int operator()(AbstractWindow& scene, RunOptions options) {
-    // A new folder: create_directory says false when the name is taken.
-    std::random_device random;
-    const std::filesystem::path temp = std::filesystem::temp_directory_path();
-    for (int attempt = 0; attempt < 100 && folder_.empty(); ++attempt) {
-      const std::filesystem::path folder = temp / ("odelab-export-" + std::to_string(random()));
-      if (std::filesystem::create_directory(folder)) folder_ = folder.string();
-    }
-    if (folder_.empty()) throw std::runtime_error("--export-world: cannot make a temporary folder in " + temp.string());
+    const StreamedFile::Hold outputsNeverOpened;
     options.headless = true;
-    options.outDir = folder_;
     options.metricsJson.clear();
     scene.initialize(options);
     writeFileAtomically(path_, world::worldToJson(scene.describeWorld()));
@@ -125,7 +116,6 @@ class ExportWorld {
 
  private:
   std::string path_;
-  std::string folder_;
 };
 
 // One scene's command line: the common options, the scene's own, one per
@@ -178,8 +168,28 @@ struct SceneCommandLine {
                  "at the run's end print \"command line: \" and the command line that starts it again with every "
                  "value it is tuned by then (as the panel's Copy as command line)");
     cli::rejectEmptyValues(app);
-    app.footer(cli::keysHelp(scene));
+    app.footer(cli::keysHelp(scene) + cli::exitStatusHelp());
   }
+};
+
+// The folders --compare makes for the other engines' files (OUT-DIR/ENGINE):
+// a run refused before it steps (a later engine's folder in the way, an
+// engine that cannot build the scene) takes back the ones it made, empty.
+class FoldersMadeForRun {
+ public:
+  void noteIfAbsent(const std::string& folder) {
+    if (platform::fileKind(folder) == platform::FileKind::Absent) folders_.push_back(folder);
+  }
+  void removeEmpty() {
+    for (auto folder = folders_.rbegin(); folder != folders_.rend(); ++folder) {
+      std::error_code notEmpty;  // a folder something else has written to stays
+      std::filesystem::remove(*folder, notEmpty);
+    }
+    folders_.clear();
+  }
+
+ private:
+  std::vector<std::string> folders_;
 };
 
 // --compare: each other engine's scene, made by `makeAnother` and parsed
@@ -188,7 +198,9 @@ struct SceneCommandLine {
 // option: test10's --launches). A refusal is the status to end with.
 std::optional<int> addCompareScenes(CompareRun& compare, std::vector<std::unique_ptr<SceneCommandLine>>& lines,
                                     const RunOptions& options, const char* description, int argc, char** argv,
-                                    const std::function<std::unique_ptr<AbstractWindow>()>& makeAnother) {
+                                    const std::function<std::unique_ptr<AbstractWindow>()>& makeAnother,
+                                    FoldersMadeForRun& made) {
+  for (const std::string& engine : options.compare) made.noteIfAbsent(joinPath(options.outDir, engine));
   for (const std::string& engine : options.compare) {
     std::unique_ptr<AbstractWindow> scene = makeAnother();
     lines.push_back(std::make_unique<SceneCommandLine>(*scene, description));
@@ -201,12 +213,16 @@ std::optional<int> addCompareScenes(CompareRun& compare, std::vector<std::unique
       own.outDir = compareFolder(options.outDir, engine);
       cli::refuseOwnOutputs(own, scene->outputFileNames());
       cli::refuseUnwritableOutputs(own, scene->outputFileNames());
+      cli::refuseInputsAsOutputs(own, scene->outputFileNames(), scene->inputFiles(), "");
       own.metricsJson.clear();  // the compare run writes every engine's
       cli::checkKnobs(line->app, scene->tuning().knobs(), scene->tuning().settings().step);
       scene->setRunOptions(own);
       scene->checkOptions();
     });
-    if (refused) return refused;
+    if (refused) {
+      made.removeEmpty();
+      return refused;
+    }
     scene->session().setGivenSceneOptions(givenOptions(line->sceneOptions));
     compare.add(engine, std::move(scene));
   }
@@ -255,6 +271,7 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
     }
     cli::refuseOwnOutputs(options, outputs);
     cli::refuseUnwritableOutputs(options, outputs);
+    cli::refuseInputsAsOutputs(options, outputs, scene.inputFiles(), exportWorld);
     cli::refuseRunShorterThanStep(options, scene.tuning().settings().step);
     cli::checkKnobs(app, scene.tuning().knobs(), scene.tuning().settings().step);
     options.engineBest = line->engineSetting == "best";
@@ -284,14 +301,15 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   // before anything runs (doc/peers.md, "Several engines in one run").
   std::vector<std::unique_ptr<SceneCommandLine>> otherLines;  // outlive the scenes that read them
   std::unique_ptr<CompareRun> compare;
+  FoldersMadeForRun madeFolders;
   if (!options.compare.empty()) {
     compare = std::make_unique<CompareRun>();
     if (const std::optional<int> refusedOther =
-            addCompareScenes(*compare, otherLines, options, description, argc, argv, makeAnother))
+            addCompareScenes(*compare, otherLines, options, description, argc, argv, makeAnother, madeFolders))
       return *refusedOther;
   }
   installStopSignalHandlers();
-  std::optional<ExportWorld> exporter;  // its folder goes after the scene has closed its files
+  std::optional<ExportWorld> exporter;
   if (!exportWorld.empty()) exporter.emplace(exportWorld);
   OdeLibrary ode;
   if (!dCheckConfiguration("ODE_double_precision")) {
@@ -315,11 +333,21 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
     else
       status = run(current, options, switching);
   } catch (const world::EngineError& error) {
-    // An engine that cannot build the scene refuses it before any step; one
-    // that fails while stepping ends the run as a blow-up does (stepOnce).
-    std::cerr << "error: " << error.what() << '\n';
-    markOpenScene(error.what());
-    status = exit_code::USAGE;
+    // An engine that cannot build the scene refuses it before any step
+    // (status 2); one whose process fails, before or while stepping, is an
+    // engine failure (status 7), never a blow-up (stepEngine). Either way
+    // the output files were held until every scene was built, so a refusal
+    // leaves them as they were. A stop signal that came while the engine
+    // was being waited for ends the run as any stop does.
+    if (stopSignal() != 0) {
+      status = current.isOpen() ? current.scene().stoppedBySignal() : 128 + stopSignal();
+      if (compare) compare->markCutShort(std::string("stopped by ") + stopSignalName());
+    } else {
+      const bool failed = dynamic_cast<const world::EngineFailure*>(&error) != nullptr;
+      std::cerr << "error: " << error.what() << '\n';
+      markOpenScene(failed ? "engine failure: " + std::string(error.what()) : std::string(error.what()));
+      status = failed ? exit_code::ENGINE_FAILED : exit_code::USAGE;
+    }
   } catch (const OdeError& error) {
     // ODE's state is not to be trusted after its own error: tearing the
     // world down can raise another one from a destructor. Leave without
@@ -340,6 +368,7 @@ int runScene(std::unique_ptr<AbstractWindow> first, const char* description, int
   if (line->printCommandLine && current.isOpen()) std::cout << "command line: " << copyLine(current.scene()) << std::endl;
   if (compare) compare->close();  // while ODE is still initialised
   current.close();
+  if (status == exit_code::USAGE || status == exit_code::ENGINE_FAILED) madeFolders.removeEmpty();
   return status;
 }
 

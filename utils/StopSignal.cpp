@@ -31,6 +31,11 @@ const char* stopSignalName() {
 #ifdef SIGHUP
     case SIGHUP: return "SIGHUP";
 #endif
+#ifdef SIGUSR1
+    case SIGUSR1: return "SIGUSR1";
+    case SIGUSR2: return "SIGUSR2";
+    case SIGALRM: return "SIGALRM";
+#endif
     default: return "a signal";
   }
 }

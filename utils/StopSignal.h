@@ -4,11 +4,13 @@
 
 namespace odelab {
 
-// SIGINT, SIGTERM and SIGHUP ask a run to stop rather than kill it: the step loops
+// SIGINT, SIGTERM and SIGHUP (and on POSIX SIGUSR1, SIGUSR2 and SIGALRM) ask
+// a run to stop rather than kill it: the step loops
 // (headless and window) end at the next step, the output files get an
 // "# incomplete: stopped by SIGTERM ..." line, no metrics JSON is written,
-// and the program exits with 128 + the signal's number (130, 143, 129), as a
-// shell reports a process killed by it. SDL's own handlers, which would turn
+// and the program exits with 128 + the signal's number (130, 143, 129, 138,
+// 142), as a shell reports a process killed by it. SIGPIPE and SIGXFSZ are
+// ignored: a write they would have ended fails instead, and says so. SDL's own handlers, which would turn
 // the signal into an ordinary window close (status 0), are switched off.
 void installStopSignalHandlers();
 namespace detail {

@@ -44,6 +44,7 @@ void WorldRun::create(unsigned seed) {
   wallSeconds_ = 0.0;
   engineWallSeconds_ = 0.0;
   blowUpReason_.clear();
+  engineFailed_ = false;
 }
 
 void WorldRun::setSpaceKind(SpaceKind kind, const SceneBounds& bounds) {

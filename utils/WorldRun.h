@@ -41,7 +41,13 @@ class WorldRun {
   // Real seconds spent in dSpaceCollide since the program started (the window's frame profile).
   double collideWallSeconds() const { return collideWallSeconds_; }
   double lastStepWallSeconds() const { return lastStepWallSeconds_; }  // 0 unless the scene called timeSteps()
+  // Why the run stopped before its end, or "": a blow-up (a state not
+  // finite) or, with engineFailed(), the engine that stepped it failing.
   const std::string& blowUpReason() const { return blowUpReason_; }
+  // The engine --engine named failed while stepping (its process died,
+  // answered what is not the protocol, or missed its deadline): the run
+  // ended, but not for its physics (exit_code::ENGINE_FAILED).
+  bool engineFailed() const { return engineFailed_; }
   int bodyCount() const;
   int disabledBodyCount() const;
   // A hash of the step count, the simulated time, the world's settings and
@@ -96,6 +102,7 @@ class WorldRun {
   bool unattended_ = false;  // inside runFor(): no input, rewind or plot, so stepOnce() skips them
   double wallSeconds_ = 0.0;  // real time spent in this run (headless) or its frames (window)
   std::string blowUpReason_;
+  bool engineFailed_ = false;
 };
 
 }  // namespace odelab

@@ -9,7 +9,7 @@ once with `--engine ENGINE` (its default setting). The engine's run must:
   - end with status 0;
   - report the same metric names as the ODE run, plus only those an engine
     run adds (engine, engine_cpu_seconds, translation_note_count,
-    translation_notes), each of those present;
+    translation_notes, engine_failed), each of those present;
   - name itself: engine == [ENGINE, "default"];
   - say what the engine could not express: translation_notes a non-empty
     list of strings, translation_note_count its length (every engine is
@@ -24,7 +24,7 @@ import shutil
 import subprocess
 import sys
 
-ENGINE_ONLY = {"engine", "engine_cpu_seconds", "translation_note_count", "translation_notes"}
+ENGINE_ONLY = {"engine", "engine_cpu_seconds", "translation_note_count", "translation_notes", "engine_failed"}
 
 
 def run(program, args, folder):

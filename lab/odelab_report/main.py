@@ -78,9 +78,18 @@ def parse_args(argv):
         parser.error(f"--only: unknown experiment {error}; known: {names_help()}")
     args.partial = bool(names)
     try:
-        output_folder.check(args.out.resolve())
+        # As given, not resolved: a symbolic link at --out is refused as one
+        # (resolving it first would send the report into where it points).
+        output_folder.check(args.out.absolute())
     except output_folder.Refused as error:
         parser.error(f"--out: {error}")
+    if args.world is not None:
+        # The report replaces --out as a whole: a world file inside it would
+        # be gone before the report that read it is written.
+        world, out = args.world.resolve(), args.out.resolve()
+        if world == out or out in world.parents:
+            parser.error(f"--world: {args.world} is inside --out {args.out}, which the report replaces as a whole; "
+                         f"keep the world file elsewhere")
     return args
 
 

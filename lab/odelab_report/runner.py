@@ -29,6 +29,11 @@ from .inputs import InputError, check_regular, read_text
 # Exit statuses of the test programs (doc/manual.md). 3 and 4 are results
 # (the simulation blew up / ODE reported an error), not mistakes of the lab.
 EXIT_OK, EXIT_BLEW_UP, EXIT_ODE_ERROR = 0, 3, 4
+# 7: the engine --engine or --compare named failed (its process died or was
+# killed, it answered what is not the protocol, it missed a deadline). Not
+# physics: never a result, not even where an experiment counts blow-ups (an
+# engine killed for memory is no stability limit).
+EXIT_ENGINE_FAILED = 7
 # Timed runs that got less than this share of a processor are made again...
 RETRY_SHARE = 0.9
 # ...up to this many times in all, when one run is shorter than this (seconds),
@@ -130,6 +135,11 @@ class RunResult:
         counts and values are judged (the cache shares a run between
         experiments, so it is judged again for each request)."""
         where = f"{spec.command_line()} --headless (on {self.host}, in {self.workdir})"
+        if self.rc == EXIT_ENGINE_FAILED:
+            tail = "\n".join(self.stderr.strip().splitlines()[-5:])
+            raise LabError(f"{where}: the engine failed (status 7: its process died, answered what is not the "
+                           f"protocol or missed a deadline); that is not a physics result, so the run gives no "
+                           f"figure and is never counted as a blow-up:\n{tail}")
         if self.rc not in RESULT_STATUSES:
             tail = "\n".join(self.stderr.strip().splitlines()[-5:])
             raise LabError(f"{where} exited with status {self.rc}:\n{tail}")

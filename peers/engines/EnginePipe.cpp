@@ -1,10 +1,12 @@
 #include "EnginePipe.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <poll.h>
 #include <pthread.h>
 #include <spawn.h>
 #include <stdexcept>
@@ -12,6 +14,9 @@
 #include <thread>
 #include <time.h>
 #include <unistd.h>
+
+#include "FormatValue.h"
+#include "StopSignal.h"
 
 extern char** environ;
 
@@ -22,6 +27,10 @@ namespace {
 // How long the destructor lets the child end by itself once its stdin is
 // closed (Node ends at once) before it kills it.
 constexpr auto GRACE = std::chrono::seconds(5);
+// How often a wait for the child looks at the stop signal: the signal may
+// have gone to another thread (a compare run's), so poll's EINTR is not
+// enough.
+constexpr int SLICE_MS = 100;
 
 void closeFd(int& fd) {
   if (fd >= 0) ::close(fd);
@@ -74,12 +83,26 @@ EnginePipe::EnginePipe(const std::vector<std::string>& argv) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  const int error = posix_spawnp(&pid_, args[0], &actions, nullptr, args.data(), environ);
+  // The program ignores SIGPIPE and SIGXFSZ (StopSignal.h); the child gets
+  // them at their defaults, as if started from a shell.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  sigaddset(&defaults, SIGXFSZ);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  const int error = posix_spawnp(&pid_, args[0], &actions, &attributes, args.data(), environ);
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   ::close(in[0]);
   ::close(out[1]);
   toChild_ = in[1];
   fromChild_ = out[0];
+  // Never blocked in write(2) by a child that stopped reading: writeLine
+  // waits in poll, where the deadline and stop signals are seen.
+  if (toChild_ >= 0) ::fcntl(toChild_, F_SETFL, ::fcntl(toChild_, F_GETFL) | O_NONBLOCK);
   if (error != 0) {
     closeFd(toChild_);
     closeFd(fromChild_);
@@ -91,6 +114,42 @@ EnginePipe::EnginePipe(const std::vector<std::string>& argv) {
 EnginePipe::~EnginePipe() {
   finish();
   closeFd(fromChild_);
+}
+
+void EnginePipe::setDeadline(double seconds) {
+  deadlineSeconds_ = seconds;
+  deadline_ = std::chrono::steady_clock::now() +
+              std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+void EnginePipe::kill(const std::string& why) {
+  cutOff_ = why;
+  closeFd(toChild_);
+  closeFd(fromChild_);
+  if (pid_ > 0 && !reaped_) {
+    ::kill(pid_, SIGKILL);  // a stopped child (SIGSTOP) dies of it too
+    reap(true);
+  }
+}
+
+bool EnginePipe::waitReady(int fd, short events, const char* doing) {
+  for (;;) {
+    if (odelab::stopSignal() != 0) {
+      kill(std::string(odelab::stopSignalName()) + " came while it was " + doing + "; it was ended (SIGKILL)");
+      return false;
+    }
+    const auto left = deadline_ - std::chrono::steady_clock::now();
+    if (left <= std::chrono::steady_clock::duration::zero()) {
+      kill("no answer within " + formatValue(deadlineSeconds_) + " s, the deadline of that request, while it was " +
+           doing + "; it was ended (SIGKILL)");
+      return false;
+    }
+    const long long leftMs = std::chrono::duration_cast<std::chrono::milliseconds>(left).count() + 1;
+    pollfd ready{fd, events, 0};
+    const int n = ::poll(&ready, 1, static_cast<int>(std::min<long long>(leftMs, SLICE_MS)));
+    if (n > 0) return true;  // readable, writable, or hung up: the read or write says which
+    if (n < 0 && errno != EINTR) return true;  // let the read or write report it
+  }
 }
 
 void EnginePipe::finish() {
@@ -126,8 +185,11 @@ bool EnginePipe::writeLine(const std::string& line) {
   SigpipeBlocked blocked;
   size_t done = 0;
   while (done < text.size()) {
+    // A child that stopped reading fills the pipe; the write waits no
+    // longer than the request's deadline.
+    if (!waitReady(toChild_, POLLOUT, "taking a message")) return false;
     const ssize_t n = ::write(toChild_, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
     if (n <= 0) {
       closeFd(toChild_);
       return false;
@@ -150,9 +212,10 @@ bool EnginePipe::readLine(std::string& line) {
       return true;
     }
     if (fromChild_ < 0) return false;
+    if (!waitReady(fromChild_, POLLIN, "answering")) return false;
     char chunk[65536];
     const ssize_t n = ::read(fromChild_, chunk, sizeof chunk);
-    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
     if (n <= 0) {
       closeFd(fromChild_);
       return false;
@@ -163,6 +226,7 @@ bool EnginePipe::readLine(std::string& line) {
 
 std::string EnginePipe::endedHow() {
   finish();
+  if (!cutOff_.empty()) return cutOff_;
   if (WIFEXITED(status_)) return "exit status " + std::to_string(WEXITSTATUS(status_));
   if (WIFSIGNALED(status_)) return "killed by signal " + std::to_string(WTERMSIG(status_)) + " (" + strsignal(WTERMSIG(status_)) + ")";
   return "ended";

@@ -69,6 +69,7 @@ class PipeLink : public ProtocolLink {
   bool writeLine(const std::string& line) override { return pipe_.writeLine(line); }
   bool readLine(std::string& line) override { return pipe_.readLine(line); }
   std::string endedHow() override { return pipe_.endedHow() + "; its messages are above on stderr"; }
+  void setDeadline(double seconds) override { pipe_.setDeadline(seconds); }
 
  private:
   EnginePipe pipe_;  // its destructor closes the pipe and waits for the child
@@ -107,7 +108,7 @@ std::unique_ptr<world::Engine> makeNodeEngine(const std::string& name, world::En
   try {
     link = std::make_unique<PipeLink>(argv);
   } catch (const std::exception& error) {
-    throw world::EngineError(std::string(kind->title) + ": " + error.what() + " (" + INSTALL + ")");
+    throw world::EngineFailure(std::string(kind->title) + ": " + error.what() + " (" + INSTALL + ")");
   }
   return makeProtocolEngine(kind->title, "Node.js engine server", std::move(link));
 }

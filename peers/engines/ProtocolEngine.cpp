@@ -18,6 +18,23 @@ namespace {
 
 using nlohmann::json;
 
+// The deadlines' parts (doc/engine-protocol.md, "Deadlines"): a build or add
+// starts from a minute (Node.js starting and compiling the engine's
+// WebAssembly on a loaded machine take seconds), every other message from
+// ten seconds; each body, geom or joint it carries or the world holds adds
+// a millisecond, and each step asked for ten times that per body on top of
+// its own ten milliseconds. The slowest step seen in the lab (test5's 300
+// plates on Havok) is a few milliseconds.
+constexpr double BUILD_BASE_SECONDS = 60.0;
+constexpr double MESSAGE_BASE_SECONDS = 10.0;
+constexpr double SECONDS_PER_PART = 1e-3;
+constexpr double SECONDS_PER_STEP = 1e-2;
+constexpr double SECONDS_PER_PART_STEP = 1e-2;
+
+std::size_t partsOf(const world::World& world) {
+  return world.bodies.size() + world.geoms.size() + world.joints.size();
+}
+
 // A state from the other side: 14 numbers (null for a number that was not
 // finite), the last the enabled flag.
 bool readState(const json& value, world::BodyState& state) {
@@ -41,11 +58,15 @@ class ProtocolEngine : public world::Engine {
   ProtocolEngine(std::string title, const std::string& where, std::unique_ptr<ProtocolLink> link)
       : name_(std::move(title)), side_(name_ + "'s " + where), link_(std::move(link)) {}
 
-  ~ProtocolEngine() override { link_->writeLine(R"({"op":"quit"})"); }
+  ~ProtocolEngine() override {
+    link_->setDeadline(requestDeadlineSeconds("quit", 0, 0));
+    link_->writeLine(R"({"op":"quit"})");
+  }
 
   void build(const world::World& world) override {
     json message = worldMessage("build", world);
-    takeStates(request(message));
+    parts_ = partsOf(world);
+    takeStates(request(message, requestDeadlineSeconds("build", parts_, 0)));
   }
 
   void add(const world::World& world, int firstBody, int firstGeom, int firstJoint) override {
@@ -53,7 +74,8 @@ class ProtocolEngine : public world::Engine {
     message["first_body"] = firstBody;
     message["first_geom"] = firstGeom;
     message["first_joint"] = firstJoint;
-    takeStates(request(message));
+    parts_ = partsOf(world);
+    takeStates(request(message, requestDeadlineSeconds("add", parts_, 0)));
   }
 
   void remove(int body) override { send({{"op", "remove"}, {"body", body}}); }
@@ -79,7 +101,7 @@ class ProtocolEngine : public world::Engine {
   void changeSettings(const world::World& world) override { send(worldMessage("settings", world)); }
 
   void step() override {
-    const json reply = request({{"op", "step"}, {"count", 1}});
+    const json reply = request({{"op", "step"}, {"count", 1}}, requestDeadlineSeconds("step", parts_, 1));
     takeStates(reply);
     const auto number = [&](const char* key, double fallback) {
       const auto it = reply.find(key);
@@ -109,6 +131,7 @@ class ProtocolEngine : public world::Engine {
   std::vector<std::string> notes_;
   int contacts_ = -1;
   double wall_ = 0, cpu_ = 0;
+  std::size_t parts_ = 0;  // bodies, geoms and joints of the world last sent
 
   // The world as JSON with every body in it, removed ones named apart:
   // worldToJson leaves removed bodies out and renumbers the rest, and the
@@ -125,24 +148,28 @@ class ProtocolEngine : public world::Engine {
   }
 
   [[noreturn]] void died(const std::string& doing) {
-    throw world::EngineError(side_ + " ended while " + doing + " (" + link_->endedHow() + ")");
+    throw world::EngineFailure(side_ + " ended while " + doing + " (" + link_->endedHow() + ")");
   }
 
-  void send(const json& message) {
+  // A message that takes no reply (an edit, new settings) is written within
+  // a deadline too: a child that stopped reading cannot hold the program.
+  void send(const json& message, double deadline = -1) {
+    link_->setDeadline(deadline > 0 ? deadline
+                                     : requestDeadlineSeconds(message.value("op", std::string()), parts_, 0));
     if (!link_->writeLine(message.dump())) died("taking a message");
   }
 
-  json request(const json& message) {
-    send(message);
+  json request(const json& message, double deadline) {
+    send(message, deadline);
     std::string line;
     if (!link_->readLine(line)) died("answering '" + message.value("op", std::string()) + "'");
     json reply;
     try {
       reply = json::parse(line);
     } catch (const json::exception&) {
-      throw world::EngineError(side_ + " answered what is not JSON: " + line.substr(0, 200));
+      throw world::EngineFailure(side_ + " answered what is not JSON: " + line.substr(0, 200));
     }
-    if (!reply.is_object()) throw world::EngineError(side_ + " answered what is not a reply: " + line.substr(0, 200));
+    if (!reply.is_object()) throw world::EngineFailure(side_ + " answered what is not a reply: " + line.substr(0, 200));
     if (const auto error = reply.find("error"); error != reply.end())
       throw world::EngineError(name_ + ": " + (error->is_string() ? error->get<std::string>() : error->dump()));
     if (const auto notes = reply.find("notes"); notes != reply.end() && notes->is_array())
@@ -153,17 +180,24 @@ class ProtocolEngine : public world::Engine {
 
   void takeStates(const json& reply) {
     const auto states = reply.find("states");
-    if (states == reply.end() || !states->is_array()) throw world::EngineError(side_ + "'s reply has no states");
+    if (states == reply.end() || !states->is_array()) throw world::EngineFailure(side_ + "'s reply has no states");
     states_.resize(states->size());
     for (size_t i = 0; i < states->size(); ++i) {
       if ((*states)[i].is_null()) continue;  // a removed body keeps its last state
       if (!readState((*states)[i], states_[i]))
-        throw world::EngineError(side_ + " sent a state that is not 14 numbers (body " + std::to_string(i) + ")");
+        throw world::EngineFailure(side_ + " sent a state that is not 14 numbers (body " + std::to_string(i) + ")");
     }
   }
 };
 
 }  // namespace
+
+double requestDeadlineSeconds(const std::string& op, std::size_t bodies, long steps) {
+  const bool builds = op == "build" || op == "add";
+  const double parts = static_cast<double>(bodies), count = static_cast<double>(steps < 0 ? 0 : steps);
+  return (builds ? BUILD_BASE_SECONDS : MESSAGE_BASE_SECONDS) + SECONDS_PER_PART * parts +
+         count * (SECONDS_PER_STEP + SECONDS_PER_PART_STEP * parts);
+}
 
 std::unique_ptr<world::Engine> makeProtocolEngine(const std::string& title, const std::string& where,
                                                   std::unique_ptr<ProtocolLink> link) {

@@ -6,6 +6,7 @@
 // or, in the browser build, in the page itself (BrowserEngine.cpp); the link
 // is all that differs.
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -23,7 +24,17 @@ class ProtocolLink {
   virtual bool readLine(std::string& line) = 0;
   // After a failed write or read: how the other side ended, in words.
   virtual std::string endedHow() = 0;
+  // The next message and its reply must be done within `seconds` (the page
+  // answers at once, within the call: it has none).
+  virtual void setDeadline(double seconds) { (void)seconds; }
 };
+
+// How long the other side may take over one message, scaled to the work it
+// asks for (doc/engine-protocol.md, "Deadlines"): `bodies` is the number of
+// bodies, geoms and joints the message carries or the world holds, `steps`
+// the steps it asks for (0 for a message that steps nothing). A build
+// includes starting Node.js and compiling the engine's WebAssembly.
+double requestDeadlineSeconds(const std::string& op, std::size_t bodies, long steps);
 
 // `title` names the engine in messages ("Jolt"), `where` its side ("Node.js
 // engine server"). Sends quit when destroyed.

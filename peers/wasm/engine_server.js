@@ -19,6 +19,16 @@ const MAX_LINE_BYTES = 128 * 1024 * 1024;
 
 const NAMES = require('./src/engines/names');
 const ENGINES = Object.fromEntries(NAMES.map((name) => [name, `./src/engines/${name}`]));
+// An engine's name is one of ENGINES' own keys: a name such as '__proto__'
+// or 'toString', which every object inherits, is not one.
+const isEngine = (name) => typeof name === 'string' && Object.prototype.hasOwnProperty.call(ENGINES, name);
+
+// The reader of stdout gone (the C++ side ended, `| head`): end quietly, as
+// a program whose reader left, instead of an 'EPIPE' traceback.
+process.stdout.on('error', (error) => {
+  if (error.code === 'EPIPE') process.exit(0);
+  throw error;
+});
 
 function fail(message) {
   process.stderr.write(`engine_server: ${message}\n`);
@@ -68,13 +78,12 @@ async function serve(name, setting) {
 
 function main(argv) {
   if (argv[0] === '--info') {
-    if (!ENGINES[argv[1]]) fail(`--info: unknown engine '${argv[1]}' (${NAMES.join(', ')})`);
+    if (!isEngine(argv[1])) fail(`--info: unknown engine '${argv[1]}' (${NAMES.join(', ')})`);
     info(argv[1]);
     return;
   }
   const [name, setting] = argv;
-  if (!ENGINES[name] || !['default', 'best'].includes(setting))
-    fail(`usage: engine_server.js ${NAMES.join('|')} default|best, or --info ENGINE`);
+    if (!isEngine(argv[1])) fail(`--info: unknown engine '${argv[1]}' (${NAMES.join(', ')})`);
   serve(name, setting);
 }
 

@@ -19,11 +19,22 @@
 namespace odelab::world {
 
 // An engine that cannot run the world (a shape or joint it lacks, a body
-// it cannot add) or that failed: the program ends with status 2 (before
-// the run) or 4 (during it), naming the engine and this message.
+// it cannot add): before the run, the program ends with status 2 naming the
+// engine and this message.
 class EngineError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// An engine that failed rather than refused: its process died or was
+// killed, it answered what is not the protocol, or it missed a request's
+// deadline. The run ends with exit_code::ENGINE_FAILED (7), before or
+// during its steps; never read as physics. Any other EngineError while
+// stepping (a state that is not finite, the engine's own error) is a
+// blow-up on that engine (status 3).
+class EngineFailure : public EngineError {
+ public:
+  using EngineError::EngineError;
 };
 
 struct BodyState {

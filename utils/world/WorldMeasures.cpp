@@ -210,7 +210,11 @@ void WorldMeasures::addMetrics(Metrics& m) const {
         m.set("energy_scale_J", energyScale_);
         m.set("energy_max_deviation", energyDeviation_);
         m.set("energy_drift", (last_.energy - start_.energy) / energyScale_);
-        m.set("energy_rel_variation", (energyMax_ - energyMin_) / energyMax_);
+        // Over the measure's scale, as the other energy figures: the largest
+        // energy is 0 in a world at rest without gravity (0 / 0) and below 0
+        // in a world under y = 0, where dividing by it gave no figure or a
+        // negative one.
+        m.set("energy_rel_variation", (energyMax_ - energyMin_) / energyScale_);
         break;
       case MeasureKind::Momentum:
         m.set("linear_momentum_drift", linearDrift_);

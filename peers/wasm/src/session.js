@@ -80,6 +80,12 @@ class Session {
     }
   }
 
+  // Gives the engine's world back to its module (a page runs many sessions
+  // on one module): at quit, and by a host that ends a session otherwise.
+  dispose() {
+    if (this.engine && typeof this.engine.dispose === 'function') this.engine.dispose();
+  }
+
   // One line in; the reply's line, or null for a message that takes none.
   // After 'quit' `quit` is true: the host ends the session.
   line(text) {
@@ -92,6 +98,7 @@ class Session {
     }
     if (message && message.op === 'quit') {
       this.quit = true;
+      this.dispose();
       return null;
     }
     let reply;

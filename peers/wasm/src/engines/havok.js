@@ -165,6 +165,7 @@ class HavokEngine {
       check(HK.HP_Body_SetShape(id, this.shapes[geoms[0]]), 'HP_Body_SetShape');
     } else if (geoms.length > 1) {
       const container = check(HK.HP_Shape_CreateContainer(), 'HP_Shape_CreateContainer');
+      (this.containers = this.containers || []).push(container);
       for (const g of geoms)
         check(HK.HP_Shape_AddChild(container, this.shapes[g], [[0, 0, 0], [0, 0, 0, 1], [1, 1, 1]]), 'HP_Shape_AddChild');
       check(HK.HP_Body_SetShape(id, container), 'HP_Body_SetShape');
@@ -283,6 +284,30 @@ class HavokEngine {
     check(HK.HP_Constraint_SetCollisionsEnabled(c, false), 'HP_Constraint_SetCollisionsEnabled');
     check(HK.HP_Constraint_SetEnabled(c, true), 'HP_Constraint_SetEnabled');
     for (const b of [joint.body1, joint.body2]) if (b >= 0) this.bodies[b].joints.push(c);
+  }
+
+  // The end of a session: every constraint, body, shape and the world given
+  // back to the module, which a page shares between sessions.
+  dispose() {
+    const HK = this.HK;
+    if (this.id === undefined || this.id === null) return;
+    const constraints = new Set();
+    for (const body of this.bodies) if (body) for (const c of body.joints) constraints.add(c);
+    for (const c of constraints) HK.HP_Constraint_Release(c);
+    const bodyIds = [...this.bodies.filter(Boolean).map((b) => b.id), ...this.statics, this.anchor].filter((id) => id);
+    for (const id of bodyIds) {
+      HK.HP_World_RemoveBody(this.id, id);
+      HK.HP_Body_Release(id);
+    }
+    for (const shape of this.shapes) if (shape) HK.HP_Shape_Release(shape);
+    for (const shape of this.containers || []) HK.HP_Shape_Release(shape);
+    HK.HP_World_Release(this.id);
+    this.id = null;
+    this.bodies = [];
+    this.statics = [];
+    this.shapes = [];
+    this.containers = [];
+    this.anchor = null;
   }
 
   remove(index) {

@@ -48,6 +48,20 @@ class JoltEngine {
     this.clock = new StepClock();
   }
 
+  // The end of a session: the physics system (its bodies, shapes and
+  // constraints with it) and the callbacks given back to the module, which
+  // a page shares between sessions. JoltInterface owns the layer tables.
+  dispose() {
+    const J = this.J;
+    if (!this.jolt) return;
+    J.destroy(this.jolt);
+    this.jolt = null;
+    this.system = this.bi = null;
+    for (const callback of [this.listener, this.filter]) if (callback) J.destroy(callback);
+    this.listener = this.filter = null;
+    this.bodies = [];
+  }
+
   v3(a) { return new this.J.Vec3(a[0], a[1], a[2]); }
   rv3(a) { return new this.J.RVec3(a[0], a[1], a[2]); }
   quat(q) { return new this.J.Quat(q[1], q[2], q[3], q[0]); }

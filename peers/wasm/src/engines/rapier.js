@@ -56,6 +56,14 @@ class RapierEngine {
     this.clock = new StepClock();
   }
 
+  // The end of a session: the world (its bodies, colliders and joints with
+  // it) given back to the module, which a page shares between sessions.
+  dispose() {
+    if (!this.rapier) return;
+    this.rapier.free();
+    this.rapier = null;
+  }
+
   build(json, removed = []) {
     const R = this.R;
     for (const r of removed) this.removedSet.add(r);
