@@ -35,7 +35,9 @@ class Progress:
 
     def start(self):
         self._started = time.monotonic()
-        self._bar = tqdm(total=sum(self._weights.values()) or 1.0, file=self._stream, disable=None,
+        # Counted in whole percent: whatever tqdm shows, a count reads "13/100",
+        # never a weight's long fraction.
+        self._bar = tqdm(total=100, file=self._stream, disable=None,
                          mininterval=1.0, dynamic_ncols=True,
                          bar_format="{desc} {percentage:3.0f}%|{bar}| elapsed {elapsed}, {remaining} left{postfix}")
         self._describe()
@@ -76,7 +78,7 @@ class Progress:
         running = self._running()
         self._bar.set_postfix_str("running: " + ", ".join(running[:3]) + (" ..." if len(running) > 3 else "")
                                   if running else "", refresh=False)
-        self._bar.update(self._fraction() * self._bar.total - self._bar.n)
+        self._bar.update(int(100 * self._fraction()) - self._bar.n)
         if self._bar.disable:
             self._log_tenths(running)
 
