@@ -5,6 +5,7 @@
 
 #include "AbstractWindow.h"
 #include "FormatValue.h"
+#include "KnobReach.h"
 #include "world/EngineCatalog.h"
 
 namespace odelab {
@@ -29,9 +30,14 @@ void AbstractWindow::startEngine() {
   const world::EngineSetting setting = options_.engineBest ? world::EngineSetting::Best : world::EngineSetting::Default;
   const bool first = !engine_.active();
   try {
-    engine_.start(world::makeEngine(options_.engine, setting), options_.engine, setting,
-                  world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_)),
-                  run_.objects_, surfaceOf());
+    // R and a rewind build the world again: in the engine running now where
+    // it can be emptied in place (no new Node.js process), else in a new one.
+    const world::Settings settings =
+        world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_));
+    const bool same = !first && engine_.engineName() == options_.engine && engine_.setting() == setting;
+    if (!same || !engine_.restart(settings, run_.objects_, surfaceOf()))
+      engine_.start(world::makeEngine(options_.engine, setting), options_.engine, setting, settings, run_.objects_,
+                    surfaceOf());
   } catch (const world::EngineError& error) {
     throw world::EngineError("engine " + options_.engine + ": " + error.what());
   }
@@ -56,6 +62,11 @@ bool AbstractWindow::stepEngine() {
   const int contacts = engine_.contactCount();
   run_.contactsThisStep_ = contacts < 0 ? 0 : contacts;
   return true;
+}
+
+std::string AbstractWindow::knobNotReached(const Knob& knob) const {
+  if (!engine_.active()) return {};
+  return odelab::knobNotReached(knob.name, engine_.engineName(), engine_.translationNotes());
 }
 
 void AbstractWindow::engineSettingsChanged() {

@@ -26,6 +26,10 @@ class EngineLink {
   // Builds the scene's world, as ODE holds it now, in `engine`.
   void start(std::unique_ptr<Engine> engine, const std::string& name, EngineSetting setting, Settings settings,
              const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf);
+  // Builds the scene's world again in the engine running now, emptied in
+  // place (Engine::reset); false, with nothing done, where it cannot be.
+  bool restart(Settings settings, const std::vector<std::unique_ptr<AbstractObject>>& objects,
+               const SurfaceOf& surfaceOf);
   void stop() { engine_.reset(); }
   // The scene's changes since the last step, as edits.
   void sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf);

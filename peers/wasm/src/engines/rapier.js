@@ -283,6 +283,12 @@ class RapierEngine {
     this.forced.clear();
   }
 
+  // Before a fresh engine takes over (the session's 'reset'): the world's memory back.
+  dispose() {
+    if (this.rapier) this.rapier.free();
+    this.rapier = null;
+  }
+
   state(index) {
     const b = this.bodies[index];
     if (!b) return null;
