@@ -135,17 +135,19 @@ long long CompareLanes::stepsWithin(double seconds) const {
 }
 
 std::string CompareLanes::timingLine() const {
-  // Short enough for six engines in a 1280-pixel window with the panel open.
-  std::string steps = "ms/step";
+  // Items three spaces apart: the HUD wraps the line between them where it
+  // is too wide (six engines with the panel open at 1280x720).
+  std::string steps = "ms/step:";
   const Lane* slowest = &lanes_.front();
   for (const Lane& lane : lanes_) {
-    steps += " " + lane.engine + " " + (lane.failure.empty() ? millisecondsText(lane.msPerStep) : "stopped");
+    steps += (&lane == &lanes_.front() ? " " : "   ") + lane.engine + " " +
+             (lane.failure.empty() ? millisecondsText(lane.msPerStep) : "stopped");
     if (lane.failure.empty() && lane.msPerStep > slowest->msPerStep) slowest = &lane;
   }
   const TimeControl& time = lanes_.front().scene->session().time();
   if (time.paused() || time.recentRealTimeFactor() >= BEHIND) return steps;
   // First, so that a HUD row too narrow for every engine still names it.
-  return "behind real time (slowest " + slowest->engine + ")  " + steps;
+  return "behind real time (slowest " + slowest->engine + ")   " + steps;
 }
 
 }  // namespace odelab

@@ -298,7 +298,8 @@ void FrameLoop::draw() {
   if (lanes_ && scene_.session().hudMode() != HudMode::Off) {
     const long at = std::min<long>(3, static_cast<long>(hud.size()));
     hud.insert(hud.begin() + at, {lanes_->timingLine(), views_.compare.hudLine()});
-    oneRow.insert(oneRow.begin() + at, {true, true});
+    // Wrapped between engines rather than cut: every engine's figure shows.
+    oneRow.insert(oneRow.begin() + at, {false, false});
   }
   hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.session().hudMode() == HudMode::Full,
                                     oneRow);
