@@ -184,7 +184,12 @@ void CompareViews::drawLabels(const CompareLanes& lanes, const std::vector<Rect>
         // setting and notes are the views' labels'), so that the legend
         // stays low and short.
         const std::string colour = lane > 0 ? outlineOf(all[lane].engine).name : "solid";
-        lines.push_back(colour + " " + all[lane].engine + (label.size() > 1 ? ": " + label[1] : ""));
+        std::string headline = label.size() > 1 ? label[1] : "";
+        // A closing aside ("   (start 29.567 J)") is the same for every
+        // engine: left to the views' labels, so a line fits a narrow view.
+        const size_t aside = headline.rfind("   (");
+        if (aside != std::string::npos && headline.back() == ')') headline.erase(aside);
+        lines.push_back(colour + " " + all[lane].engine + (headline.empty() ? "" : ": " + headline));
         continue;
       }
       label.front() = (lane > 0 ? std::string(outlineOf(all[lane].engine).name) : std::string("blue")) + ": " +
