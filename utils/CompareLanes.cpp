@@ -28,10 +28,10 @@ void addTiming(double& msPerStep, double seconds, long long steps) {
   msPerStep = msPerStep > 0.0 ? (1.0 - SMOOTHING) * msPerStep + SMOOTHING * now : now;
 }
 
-// Two significant figures: "0.0071", "0.11", "1.4", "12".
+// Two significant figures: "0.0071", "0.11", "1.4", "12"; whole from 100 ("110", not "1.1e+02").
 std::string millisecondsText(double ms) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.2g", ms);
+  std::snprintf(text, sizeof text, ms >= 100.0 ? "%.0f" : "%.2g", ms);
   return text;
 }
 
