@@ -4,25 +4,32 @@
 # other engines, at 1280x720 and 1024x768, and test5 merged (M: the others
 # as outlines over ODE's stack) at 1280x720. Each is the run's last frame
 # (--screenshot with --seconds). Files: OUT_DIR/compare_<program>_<size>.png
-# and compare_test5_1280x720_merged.png, reduced to 256 colours with
+# and compare_test5_1280x720_merged.png; and test2 (the pendulum) on all six
+# engines, one view each and merged, running and paused, at both sizes with
+# the compact HUD and the panel open: compare_test2_<size>_{views,merged}_
+# {running,paused}.png, each frame 20 (--frames). Reduced to 256 colours with
 # pngquant where it is installed.
 #
 #   scripts/compare_screenshots.sh [OUT_DIR]   (default: doc/screenshots)
 #
 # Environment: BUILD_DIR (default: build), ENGINES (default: bullet,havok,jolt;
-# Havok's thesis comparison beside two others). Needs xvfb-run and the
+# Havok's thesis comparison beside two others), ALL_ENGINES (test2's six:
+# default bullet,mujoco,havok,jolt,rapier), PICTURES (all, or test2 for
+# test2's alone). Needs xvfb-run and the
 # engines named (testN --list-engines).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$root/build}
 engines=${ENGINES:-bullet,havok,jolt}
+all_engines=${ALL_ENGINES:-bullet,mujoco,havok,jolt,rapier}
+pictures=${PICTURES:-all}
 out=${1:-$root/doc/screenshots}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 
 if [ -z "${ODELAB_SCREENSHOTS_INNER:-}" ]; then
   command -v xvfb-run >/dev/null || { echo "compare_screenshots: xvfb-run not found (apt-get install xvfb xauth)" >&2; exit 1; }
-  ODELAB_SCREENSHOTS_INNER=1 BUILD_DIR=$build_dir ENGINES=$engines exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$out"
+  ODELAB_SCREENSHOTS_INNER=1 BUILD_DIR=$build_dir ENGINES=$engines ALL_ENGINES=$all_engines PICTURES=$pictures exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$out"
 fi
 
 work=$(mktemp -d)
@@ -46,8 +53,25 @@ plates=(--spawn-interval 0.25 --plates 40 --seconds 11)
 # (A second one launched with B a frame later would start inside the first
 # on a fast machine, and the two would knock each other off course.)
 launch=(--velocity 600 --seconds 0.5)
+if [ "$pictures" = all ]; then
+  for size in 1280x720 1024x768; do
+    shot "compare_test5_$size" "$size" test5 "${plates[@]}"
+    shot "compare_test10_$size" "$size" test10 "${launch[@]}"
+  done
+  shot compare_test5_1280x720_merged 1280x720 test5 "${plates[@]}" --events "$work/merge.events"
+fi
+
+# test2 on every engine: one view each or merged (M), running or paused (P
+# five frames before the picture), at frame 20.
+printf '1 key M\n' >"$work/merged_running.events"
+printf '15 key P\n' >"$work/views_paused.events"
+printf '1 key M\n15 key P\n' >"$work/merged_paused.events"
+: >"$work/views_running.events"
 for size in 1280x720 1024x768; do
-  shot "compare_test5_$size" "$size" test5 "${plates[@]}"
-  shot "compare_test10_$size" "$size" test10 "${launch[@]}"
+  for layout in views merged; do
+    for state in running paused; do
+      engines=$all_engines shot "compare_test2_${size}_${layout}_${state}" "$size" test2 --frames 20 \
+        --events "$work/${layout}_${state}.events"
+    done
+  done
 done
-shot compare_test5_1280x720_merged 1280x720 test5 "${plates[@]}" --events "$work/merge.events"

@@ -9,8 +9,10 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_set>
 
 #include "ExitCodes.h"
+#include "MechanicalEnergy.h"
 #include "FormatValue.h"
 #include "LineText.h"
 #include "MeasurementLog.h"
@@ -59,7 +61,10 @@ void AbstractWindow::initialize(const RunOptions& options) {
 }
 
 void AbstractWindow::reset() {
+  rewindJob_.active = false;  // R wins over a rewind under way
+  session_.rewind_.setReplaying(false);
   session_.rewind_.newEpoch();
+  session_.dragEnergy_.clear();
   session_.failure_.clear();
   run_.destroy();
   createWorld();
@@ -70,14 +75,8 @@ void AbstractWindow::reset() {
 void AbstractWindow::beginRun() { session_.rewind_.begin({tuning_.settings_, run_.spaceKind_, tuning_.increment_}); }
 
 void AbstractWindow::replayTo(long long step) {
-  session_.rewind_.setReplaying(true);
-  const RunStart& start = session_.rewind_.restore();
-  tuning_.settings_ = start.settings;
-  run_.spaceKind_ = start.space;
-  tuning_.increment_ = start.increment;
-  run_.destroy();
-  createWorld();
-  session_.rewind_.timeline().rewindCursor();
+  rewindJob_.active = false;
+  beginReplay();
   while (run_.steps_ < step && stepOnce()) {
   }
   session_.rewind_.setReplaying(false);
@@ -162,9 +161,19 @@ bool AbstractWindow::stepOnce() {
   // Inputs, the drag, contact markers, rewind marks and the live plot: none
   // can come or be seen inside runFor(), which skips their cost.
   const bool attended = !run_.unattended_;
+  // The drag's energy books (DragEnergy) are kept for the run as it goes,
+  // not for a replay after a rewind.
+  const bool booked = attended && !session_.rewind_.replaying();
+  int pulledIndex = -1;
   if (attended) {
     session_.rewind_.timeline().applyDue(run_.steps_, [this](const TimelineEvent& event) { applyEvent(event); });
-    session_.drag_.pull(run_.objects_, tuning_.settings_.gravity);
+    double force[3], point[3];
+    const double energyBefore =
+        booked && session_.drag_.active() && !session_.dragEnergy_.watching() ? bodiesEnergy() : 0.0;
+    if (session_.drag_.pull(run_.objects_, tuning_.settings_.gravity, force, point)) {
+      pulledIndex = session_.drag_.index();
+      if (booked) session_.dragEnergy_.pulled(energyBefore, force, point);
+    }
     if (session_.viewFlags_.contacts) session_.contactMarkers_.clear();
   }
   run_.contactsThisStep_ = 0;
@@ -201,6 +210,12 @@ bool AbstractWindow::stepOnce() {
     run_.lastStepWallSeconds_ = engine_.active() ? run_.engineStepWallSeconds_
                                                  : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   afterStep();
+  if (booked && pulledIndex >= 0) {
+    double point[3];
+    if (session_.drag_.grabbedPoint(run_.objects_, pulledIndex, point)) session_.dragEnergy_.moved(point);
+  } else if (booked && session_.dragEnergy_.watching()) {
+    session_.dragEnergy_.released(bodiesEnergy());
+  }
   if (attended) {
     session_.rewind_.afterStep(run_.simulatedTime_, run_.steps_);
     if (run_.simulatedTime_ >= session_.nextChartTime_) {
@@ -217,6 +232,16 @@ bool AbstractWindow::stepOnce() {
   return false;
 }
 
+double AbstractWindow::bodiesEnergy() const {
+  // Objects attached into one body (test2's rod and bob) share it: counted once.
+  std::unordered_set<dBodyID> counted;
+  double energy = 0.0;
+  for (const auto& object : run_.objects_)
+    if (const dBodyID body = object->getBody())
+      if (!dBodyIsKinematic(body) && counted.insert(body).second) energy += mechanicalEnergy(body, run_.world_);
+  return energy;
+}
+
 std::string AbstractWindow::momentAndSettings() const {
   return " at t=" + formatValue(run_.simulatedTime_) + " s" + tuning_.settingsInForce();
 }
@@ -224,6 +249,10 @@ std::string AbstractWindow::momentAndSettings() const {
 void AbstractWindow::advanceFrame(double elapsedSeconds, double steppingBudget) {
   run_.profileCollision_ = true;  // only a window advances by frames
   run_.wallSeconds_ += elapsedSeconds;
+  if (rewindJob_.active) {
+    continueRewind(steppingBudget);
+    return;
+  }
   const int stepsNow = session_.time_.stepsFor(elapsedSeconds, tuning_.settings_.step);
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < stepsNow; ++i) {
@@ -377,6 +406,9 @@ Metrics AbstractWindow::metrics() const {
   for (const Knob& knob : tuning_.knobs_) m.set("knob_" + knob.name, knob.metricValue());
   addMetrics(m);
   for (const auto& [name, value] : session_.marks_.entries()) m.set(name, value);
+  session_.dragEnergy_.write(m);
+  if (rewindJob_.longestFrameSeconds >= 0.0)
+    m.set("rewind_longest_frame_stepping_ms", 1000.0 * rewindJob_.longestFrameSeconds);
   return m;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <string>
@@ -84,6 +85,8 @@ class AbstractWindow {
   void applyInput(const TimelineEvent& event);
   // " at t=1.23 s (step 0.001, ERP 0.2, ...)": the end of every ODE error and blow-up message.
   std::string momentAndSettings() const;
+  // Kinetic and potential energy of every dynamic body, J (the drag's energy books).
+  double bodiesEnergy() const;
   // "key: value" pairs naming every setting in force, for output file headers.
   std::vector<std::pair<std::string, std::string>> settingsDescription() const;
 
@@ -119,12 +122,32 @@ class AbstractWindow {
   void endDrag();
   const AbstractObject* draggedObject() const;
   void replayTo(long long step);  // resets and replays up to `step`; leaves it paused
+  // A rewind (',') that spreads its replay over frames (AbstractWindowRewind.cpp):
+  // rewindTo() starts it or moves its target (presses in a burst coalesce
+  // into one target), advanceFrame() replays a frame's budget of steps
+  // (at most `rewindStepsPerFrame`, set by a compare window for its
+  // slowest engines), and cancelRewind() (Esc, or any recorded input)
+  // stops it at the step reached, paused.
+  void rewindTo(long long step, const std::string& leftAt);
+  bool rewinding() const { return rewindJob_.active; }
+  long long rewindTarget() const { return rewindJob_.target; }
+  void cancelRewind();
+  void setRewindStepsPerFrame(long long steps) { rewindJob_.stepsPerFrame = steps; }
+  // The window's stepping time in a frame a rewind was under way (the
+  // replay and every engine following it): the longest goes in the metrics
+  // as rewind_longest_frame_stepping_ms, a rewind answered frame by frame.
+  void noteRewindFrame(double steppingSeconds) {
+    rewindJob_.longestFrameSeconds = std::max(rewindJob_.longestFrameSeconds, steppingSeconds);
+  }
   void offerSceneSwitch(std::vector<SceneChoice> scenes, int current);  // the launcher's Page Down / Up
   void mark(const std::string& label);  // step, time and state hash as metrics mark_<label>_*
   void applySettings(const std::string& change);  // settings() to the world now; reports `change`
   void setSpaceKind(SpaceKind kind);  // moves every geom into a new space of that kind
   // The world as built and as it is now, as data (doc/world-format.md): --export-world.
   world::World describeWorld();
+  // "" where the knob reaches the engine stepping the scene, else why not
+  // (KnobReach.h): the HUD and the panel grey its row and say so.
+  std::string knobNotReached(const Knob& knob) const;
   // The engine stepping the scene (--engine); inactive for ODE.
   const world::EngineLink& engine() const { return engine_; }
 
@@ -216,6 +239,19 @@ class AbstractWindow {
   void changeKnob(Knob& knob, double value, const char* source);
   void stepKnob(Knob& knob, int direction);
   void recoverFrom(const std::string& failure);
+  // The rewind under way: where it goes, the moment it left (for its
+  // notice), and the cap on the steps one frame replays (0: the budget only).
+  struct RewindJob {
+    bool active = false;
+    long long target = 0;
+    std::string leftAt;
+    long long stepsPerFrame = 0;
+    double longestFrameSeconds = -1.0;  // -1: no rewind yet
+  };
+  void beginReplay();                         // the world rebuilt at the run's start, replaying
+  void continueRewind(double budgetSeconds);  // a frame's share of the replay
+  void endRewind(const std::string& notice);
+  std::string rewindLine() const;             // "rewinding... (n of m steps; Esc stops)"
   world::SurfaceOf surfaceOf();
   void startEngine();       // after every (re)build, when --engine names another engine
   bool stepEngine();        // instead of collide and ODE's step; false: the engine's state is not finite
@@ -224,6 +260,7 @@ class AbstractWindow {
   WorldRun run_;
   Tuning tuning_;
   SessionTools session_;
+  RewindJob rewindJob_;
   std::string programName_;
   std::string title_;
   RunOptions options_;

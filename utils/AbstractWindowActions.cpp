@@ -117,6 +117,9 @@ void AbstractWindow::changeKnob(int index, double value) {
 }
 
 void AbstractWindow::recordAndApply(const TimelineEvent& event) {
+  // An input that changes the run stops a rewind under way where it is:
+  // the input belongs at the step shown.
+  cancelRewind();
   // An input that rebuilt the scene began a new run: nothing to record.
   const long long epochBefore = session_.rewind_.epoch();
   applyEvent(event);
@@ -229,6 +232,7 @@ const AbstractObject* AbstractWindow::draggedObject() const {
 void AbstractWindow::bindTimeAndViewKeys() {
   bindViewKey(SDLK_p, "P", "pause / resume", [this](int) { session_.time_.setPaused(!session_.time_.paused()); });
   bindViewKey(SDLK_o, "O", "advance exactly one step (pauses first)", [this](int) {
+    cancelRewind();
     session_.time_.setPaused(true);
     try {
       if (!stepOnce()) recoverFrom(run_.blowUpReason_);
@@ -241,14 +245,17 @@ void AbstractWindow::bindTimeAndViewKeys() {
   bindViewKey(SDLK_EQUALS, "=", "faster: double the time scale (up to 8x, as far as the machine keeps up)",
               [this](int) { session_.time_.faster(); });
   bindViewKey(SDLK_COMMA, ",", "rewind to the previous snapshot (every 0.25 s of simulated time) and pause", [this](int) {
-    const long long target = std::max(0LL, session_.rewind_.timeline().previousSnapshot(run_.steps_));
-    const std::string at = timeStamp(run_.simulatedTime_);
-    replayTo(target);
-    notify(at + ": rewound to " + timeStamp(run_.simulatedTime_));
+    // A press during a rewind goes a snapshot further back from its target.
+    const long long from = rewinding() ? rewindTarget() : run_.steps_;
+    rewindTo(std::max(0LL, session_.rewind_.timeline().previousSnapshot(from)), timeStamp(run_.simulatedTime_));
   });
   bindViewKey(SDLK_PERIOD, ".", "forward to the next snapshot or the furthest step reached, and pause", [this](int) {
-    const long long target = session_.rewind_.timeline().nextSnapshot(run_.steps_);
+    const long long target = session_.rewind_.timeline().nextSnapshot(rewinding() ? rewindTarget() : run_.steps_);
     session_.time_.setPaused(true);
+    if (rewinding()) {  // the rewind under way stops a snapshot later
+      if (target >= 0) rewindTo(target, timeStamp(run_.simulatedTime_));
+      return;
+    }
     if (target < 0) {
       notify("no later snapshot: press P to run on");
       return;

@@ -5,6 +5,7 @@
 
 #include "AbstractWindow.h"
 #include "FormatValue.h"
+#include "KnobReach.h"
 #include "world/EngineCatalog.h"
 
 namespace odelab {
@@ -29,9 +30,14 @@ void AbstractWindow::startEngine() {
   const world::EngineSetting setting = options_.engineBest ? world::EngineSetting::Best : world::EngineSetting::Default;
   const bool first = !engine_.active();
   try {
-    engine_.start(world::makeEngine(options_.engine, setting), options_.engine, setting,
-                  world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_)),
-                  run_.objects_, surfaceOf(), fileOrigin());
+    // R and a rewind build the world again: in the engine running now where
+    // it can be emptied in place (no new Node.js process), else in a new one.
+    const world::Settings settings =
+        world::settingsOf(run_.world_, tuning_.settings_, maxContacts(), spaceKindName(run_.spaceKind_));
+    const bool same = !first && engine_.engineName() == options_.engine && engine_.setting() == setting;
+    if (!same || !engine_.restart(settings, run_.objects_, surfaceOf(), fileOrigin()))
+      engine_.start(world::makeEngine(options_.engine, setting), options_.engine, setting, settings, run_.objects_,
+                    surfaceOf(), fileOrigin());
   } catch (const world::EngineFailure& error) {  // the engine failed: its kind kept (status 7, not 2)
     throw world::EngineFailure("engine " + options_.engine + ": " + error.what());
   } catch (const world::EngineError& error) {
@@ -67,6 +73,11 @@ bool AbstractWindow::stepEngine() {
   const int contacts = engine_.contactCount();
   run_.contactsThisStep_ = contacts < 0 ? 0 : contacts;
   return true;
+}
+
+std::string AbstractWindow::knobNotReached(const Knob& knob) const {
+  if (!engine_.active()) return {};
+  return odelab::knobNotReached(knob.name, engine_.engineName(), engine_.translationNotes());
 }
 
 void AbstractWindow::engineSettingsChanged() {

@@ -3,6 +3,7 @@
 // switches to the full one and off.
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <sstream>
 
 #include "AbstractWindow.h"
@@ -31,14 +32,18 @@ std::string springLine(const WorldSettings& settings) {
   return s.str();
 }
 
-// Every world setting with an F-key on one line: "ERP 0.2   CFM 1e-06   step 0.001 s ...".
-std::string settingsLine(const std::deque<Knob>& knobs) {
-  std::string line;
+// Every world setting with an F-key on one line: "ERP 0.2   CFM 1e-06   step 0.001 s ...";
+// those that do not reach the engine shown last, after "not in jolt:".
+std::string settingsLine(const std::deque<Knob>& knobs, const std::function<bool(const Knob&)>& reaches,
+                         const std::string& engine) {
+  std::string line, unreached;
   for (const Knob& knob : knobs) {
     if (!knob.appliesToWorld || knob.key == SDLK_UNKNOWN) continue;
-    if (!line.empty()) line += "   ";
-    line += knob.label + ' ' + knob.words() + (knob.unit.empty() ? "" : " " + knob.unit);
+    std::string& to = reaches(knob) ? line : unreached;
+    if (!to.empty()) to += "   ";
+    to += knob.label + ' ' + knob.words() + (knob.unit.empty() ? "" : " " + knob.unit);
   }
+  if (!unreached.empty()) line += "   | not in " + engine + ": " + unreached;
   return line;
 }
 
@@ -78,7 +83,8 @@ std::vector<std::string> AbstractWindow::hudLines() const {
                                                     (engine_.setting() == world::EngineSetting::Best ? " (best)" : "")
                                               : std::string();
   lines.push_back(title_ + engine + (full ? "" : "   (F1 more, H keys, Tab panel)"));
-  lines.push_back(settingsLine(tuning_.knobs_));
+  lines.push_back(settingsLine(
+      tuning_.knobs_, [this](const Knob& knob) { return knobNotReached(knob).empty(); }, engine_.engineName()));
   std::ostringstream s;
   char rate[96];
   // Paused, no simulated time passes: a factor would only say how long ago
@@ -138,6 +144,7 @@ std::vector<std::string> AbstractWindow::hudPassingLines() const {
   std::vector<std::string> lines;
   if (session_.hudMode_ == HudMode::Off) return lines;
   if (!session_.failure_.empty()) lines.push_back(session_.failure_);
+  if (rewindJob_.active) lines.push_back(rewindLine());
   const std::string current = session_.notice();
   if (!current.empty() && current != session_.failure_) lines.push_back(current);
   for (const auto& message : OdeMessages::recent()) lines.push_back(message);

@@ -1,5 +1,6 @@
 #include "CompareLanes.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -27,9 +28,10 @@ void addTiming(double& msPerStep, double seconds, long long steps) {
   msPerStep = msPerStep > 0.0 ? (1.0 - SMOOTHING) * msPerStep + SMOOTHING * now : now;
 }
 
+// Two significant figures: "0.0071", "0.11", "1.4", "12"; whole from 100 ("110", not "1.1e+02").
 std::string millisecondsText(double ms) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3f", ms);
+  std::snprintf(text, sizeof text, ms >= 100.0 ? "%.0f" : "%.2g", ms);
   return text;
 }
 
@@ -48,6 +50,7 @@ CompareLanes::CompareLanes(AbstractWindow& lead, const std::vector<std::pair<std
   // Every lane takes every input, one that stopped too: R or a knob then
   // holds when a rewind or a reset brings it back.
   lead.echoInputs([this](const TimelineEvent& event) {
+    const auto start = std::chrono::steady_clock::now();
     for (size_t i = 1; i < lanes_.size(); ++i) {
       Lane& lane = lanes_[i];
       try {
@@ -58,6 +61,8 @@ CompareLanes::CompareLanes(AbstractWindow& lead, const std::vector<std::pair<std
         stop(lane, error.what());
       }
     }
+    longestInputSeconds_ =
+        std::max(longestInputSeconds_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   });
 }
 
@@ -121,17 +126,28 @@ std::vector<std::string> CompareLanes::label(const Lane& lane) const {
   return headline.empty() ? std::vector<std::string>{first} : std::vector<std::string>{first, headline};
 }
 
+long long CompareLanes::stepsWithin(double seconds) const {
+  double ms = 0.0;
+  for (const Lane& lane : lanes_)
+    if (lane.failure.empty()) ms += lane.msPerStep;
+  if (ms <= 0.0) return 0;
+  return std::max(1LL, static_cast<long long>(1000.0 * seconds / ms));
+}
+
 std::string CompareLanes::timingLine() const {
-  std::string steps = "step ms:";
+  // Items three spaces apart: the HUD wraps the line between them where it
+  // is too wide (six engines with the panel open at 1280x720).
+  std::string steps = "ms/step:";
   const Lane* slowest = &lanes_.front();
   for (const Lane& lane : lanes_) {
-    steps += "  " + lane.engine + " " + (lane.failure.empty() ? millisecondsText(lane.msPerStep) : "stopped");
+    steps += (&lane == &lanes_.front() ? " " : "   ") + lane.engine + " " +
+             (lane.failure.empty() ? millisecondsText(lane.msPerStep) : "stopped");
     if (lane.failure.empty() && lane.msPerStep > slowest->msPerStep) slowest = &lane;
   }
   const TimeControl& time = lanes_.front().scene->session().time();
   if (time.paused() || time.recentRealTimeFactor() >= BEHIND) return steps;
   // First, so that a HUD row too narrow for every engine still names it.
-  return "behind real time, slowest: " + slowest->engine + "   " + steps;
+  return "behind real time (slowest " + slowest->engine + ")   " + steps;
 }
 
 }  // namespace odelab

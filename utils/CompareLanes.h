@@ -46,6 +46,13 @@ class CompareLanes {
   // The viewport's label: "bullet 3.24 default   2 notes" and, under it, the
   // scene's headline measurement on that engine (or why it stopped).
   std::vector<std::string> label(const Lane& lane) const;
+  // How many steps every lane together takes within `seconds` of wall time
+  // (from their smoothed times per step; at least 1, 0 while none is
+  // known): the most steps a frame's share of a rewind may replay.
+  long long stepsWithin(double seconds) const;
+  // The longest time one input took to reach every other engine (R builds
+  // each engine's world again there), seconds; 0 before any input.
+  double longestInputSeconds() const { return longestInputSeconds_; }
   // The HUD's line: each engine's time per step and, when the window falls
   // behind real time, the engine that takes the longest.
   std::string timingLine() const;
@@ -54,6 +61,7 @@ class CompareLanes {
   void stop(Lane& lane, const std::string& why);
 
   std::vector<Lane> lanes_;
+  double longestInputSeconds_ = 0.0;
 };
 
 }  // namespace odelab

@@ -93,6 +93,22 @@ class Turns {
 };
 #endif
 
+// Columns padded to their widest cell, the last left as it is.
+void printTable(std::ostream& out, const std::vector<std::vector<std::string>>& rows) {
+  std::vector<size_t> widths;
+  for (const auto& row : rows)
+    for (size_t c = 0; c + 1 < row.size(); ++c) {
+      if (widths.size() <= c) widths.push_back(0);
+      widths[c] = std::max(widths[c], row[c].size());
+    }
+  for (const auto& row : rows) {
+    std::string line;
+    for (size_t c = 0; c < row.size(); ++c)
+      line += c + 1 < row.size() ? row[c] + std::string(widths[c] - row[c].size() + 2, ' ') : row[c];
+    out << line << '\n';
+  }
+}
+
 // The frame loop's figures (frames per second, the longest frame, the
 // window's failures) are the window's, in ODE's block; an engine that
 // followed ODE's scene has its steps' own wall time, as a headless run has.
@@ -307,6 +323,8 @@ int CompareRun::finishWindow(AbstractWindow& ode, const RunOptions& options, int
     lane.odeError = failure.rfind("ODE error", 0) == 0;
     lane.status = failure.empty() ? exit_code::OK : lane.odeError ? exit_code::ODE_ERROR : exit_code::BLEW_UP;
     lane.metrics = i == 0 ? lane.scene->metrics() : followerMetrics(*lane.scene, windowLanes_->lanes()[i]);
+    // The window's: how long the slowest input (R) took to reach every engine.
+    if (i == 0) lane.metrics.set("longest_input_to_engines_ms", 1000.0 * windowLanes_->longestInputSeconds());
     lane.reported = true;
   }
   return report(lanes, options);
@@ -319,6 +337,10 @@ int CompareRun::report(const std::vector<Lane*>& lanes, const RunOptions& option
   all.set("engines", static_cast<double>(lanes.size()));
   int worst = exit_code::OK;
   bool odeError = false;
+  // On the terminal a short table, an engine a row: its status, how far it
+  // ran, what a step cost and the scene's headline; every metric goes to
+  // --metrics-json (some 40 an engine would bury the table).
+  std::vector<std::vector<std::string>> table = {{"engine", "status", "sim s", "ms/step", "headline"}};
   for (Lane* lane : lanes) {
     worst = std::max(worst, lane->status);
     odeError = odeError || lane->odeError;
@@ -327,9 +349,13 @@ int CompareRun::report(const std::vector<Lane*>& lanes, const RunOptions& option
       Metrics block;
       addPrefixed(block, prefix, lane->metrics);
       block.set(prefix + "exit_status", lane->status);
-      std::cout << lane->scene->title() << " on " << lane->engine << ": "
-                << formatValue(lane->metrics.get("sim_seconds")) << " simulated seconds\n";
-      block.print(std::cout);
+      const double steps = lane->metrics.has("steps") ? lane->metrics.get("steps") : 0.0;
+      const double engineSeconds =
+          lane->metrics.has("engine_wall_seconds") ? lane->metrics.get("engine_wall_seconds") : 0.0;
+      const std::string headline = lane->scene->headline();
+      table.push_back({lane->engine, std::to_string(lane->status), formatValue(lane->metrics.get("sim_seconds")),
+                       steps > 0 ? formatValue(1000.0 * engineSeconds / steps, 2) : "-",
+                       headline.empty() ? "-" : headline});
       addPrefixed(all, "", block);
       if (!lane->error.empty())
         std::cerr << "error: " << lane->engine << ": " << lane->error << '\n';
@@ -337,9 +363,14 @@ int CompareRun::report(const std::vector<Lane*>& lanes, const RunOptions& option
         std::cerr << "error: " << lane->engine << ": " << lane->scene->run().blowUpReason() << '\n';
     } else {
       all.set(prefix + "exit_status", lane->status);
+      table.push_back({lane->engine, std::to_string(lane->status), "-", "-", "did not report"});
       if (!lane->error.empty()) std::cerr << "error: " << lane->engine << ": " << lane->error << '\n';
     }
   }
+  std::cout << lanes.front()->scene->title() << ", engines side by side:\n";
+  printTable(std::cout, table);
+  std::cout << (options.metricsJson.empty() ? "every metric of every engine: add --metrics-json FILE\n"
+                                            : "every metric of every engine: " + options.metricsJson + "\n");
   // Stopped by a signal, no engine's run is whole: nothing is written (as one run's).
   if (!stopped && !options.metricsJson.empty()) all.writeJsonAtomically(options.metricsJson);
   if (odeError) {

@@ -23,7 +23,8 @@ PickHit pickObject(const std::vector<std::unique_ptr<AbstractObject>>& objects, 
   return best;
 }
 
-void DragSpring::apply(dBodyID body, const double grabLocal[3], const double target[3], double gravity) {
+void DragSpring::apply(dBodyID body, const double grabLocal[3], const double target[3], double gravity,
+                       double applied[3], double appliedAt[3]) {
   dMass mass;
   dBodyGetMass(body, &mass);
   const double omega = 2.0 * M_PI * FREQUENCY_HZ;
@@ -41,8 +42,18 @@ void DragSpring::apply(dBodyID body, const double grabLocal[3], const double tar
   magnitude = std::sqrt(magnitude);
   const double cap = MAX_FORCE_IN_WEIGHTS * mass.mass * std::max(gravity, 1.0);
   const double scale = magnitude > cap ? cap / magnitude : 1.0;
+  for (int k = 0; k < 3; ++k) {
+    applied[k] = force[k] * scale;
+    appliedAt[k] = point[k];
+  }
   dBodyEnable(body);
-  dBodyAddForceAtPos(body, force[0] * scale, force[1] * scale, force[2] * scale, point[0], point[1], point[2]);
+  dBodyAddForceAtPos(body, applied[0], applied[1], applied[2], point[0], point[1], point[2]);
+}
+
+void DragSpring::grabbedPoint(dBodyID body, const double grabLocal[3], double point[3]) {
+  dVector3 p;
+  dBodyGetRelPointPos(body, grabLocal[0], grabLocal[1], grabLocal[2], p);
+  for (int k = 0; k < 3; ++k) point[k] = p[k];
 }
 
 double DragSpring::distance(dBodyID body, const double grabLocal[3], const double target[3]) {

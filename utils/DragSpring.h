@@ -30,7 +30,12 @@ class DragSpring {
   static constexpr double MAX_FORCE_IN_WEIGHTS = 50.0;
 
   // Applies the spring force for one step; wakes the body if it was disabled.
-  static void apply(dBodyID body, const double grabLocal[3], const double target[3], double gravity);
+  // `force` and `point` receive the force applied and the world point where
+  // it acts (for the drag's energy books, DragEnergy).
+  static void apply(dBodyID body, const double grabLocal[3], const double target[3], double gravity,
+                    double force[3], double point[3]);
+  // The grabbed point in the world frame.
+  static void grabbedPoint(dBodyID body, const double grabLocal[3], double point[3]);
   // Distance from the grabbed point to the target.
   static double distance(dBodyID body, const double grabLocal[3], const double target[3]);
 };

@@ -49,9 +49,20 @@ void MouseDrag::apply(const TimelineEvent& event, int objectCount) {
   std::copy(event.target, event.target + 3, target_);
 }
 
-void MouseDrag::pull(const Objects& objects, double gravity) const {
-  if (index_ < 0) return;
-  if (const dBodyID body = objects[index_]->getBody()) DragSpring::apply(body, grab_, target_, gravity);
+bool MouseDrag::pull(const Objects& objects, double gravity, double force[3], double point[3]) const {
+  if (index_ < 0) return false;
+  const dBodyID body = objects[index_]->getBody();
+  if (!body) return false;
+  DragSpring::apply(body, grab_, target_, gravity, force, point);
+  return true;
+}
+
+bool MouseDrag::grabbedPoint(const Objects& objects, int index, double point[3]) const {
+  if (index < 0 || index >= static_cast<int>(objects.size())) return false;
+  const dBodyID body = objects[index]->getBody();
+  if (!body) return false;
+  DragSpring::grabbedPoint(body, grab_, point);
+  return true;
 }
 
 double MouseDrag::gap(const Objects& objects) const {

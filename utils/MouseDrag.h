@@ -25,8 +25,12 @@ class MouseDrag {
   bool endEvent(long long step, TimelineEvent& event) const;
   // Applies a Drag or Release event (live or replayed).
   void apply(const TimelineEvent& event, int objectCount);
-  // Before a step: the spring pulls the held body.
-  void pull(const Objects& objects, double gravity) const;
+  // Before a step: the spring pulls the held body. Returns whether it did,
+  // with the force and the world point where it acts.
+  bool pull(const Objects& objects, double gravity, double force[3], double point[3]) const;
+  // The grabbed point in the world frame, of the object at `index` (held now
+  // or a moment ago); false when it has no body.
+  bool grabbedPoint(const Objects& objects, int index, double point[3]) const;
   // The gap the spring still has to close, in metres (0 when not dragging).
   double gap(const Objects& objects) const;
 

@@ -5,6 +5,7 @@
 
 #include "CopyLine.h"
 #include "DebugMarkers.h"
+#include "DragEnergy.h"
 #include "Metrics.h"
 #include "MouseDrag.h"
 #include "Rewind.h"
@@ -77,6 +78,7 @@ class SessionTools {
   TimeControl time_;
   Rewind rewind_;
   MouseDrag drag_;
+  DragEnergy dragEnergy_;  // the drag's work against what the bodies gained
   RunLog runLog_;
   ViewFlags viewFlags_;
   std::vector<ContactMarker> contactMarkers_;

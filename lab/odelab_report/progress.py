@@ -13,10 +13,15 @@ def clock(seconds):
     return f"{seconds // 60}:{seconds % 60:02d}"
 
 
+# Without a terminal (a log, a pipe) there is no bar: a line each time the
+# work done passes another tenth, so a long experiment still shows it moves.
+LOG_STEP_PERCENT = 10
+
+
 class Progress:
     """tqdm's bar over the experiments' weighed work, with a line for each
     experiment that ends. The bar is drawn on a terminal only; a log gets
-    the lines."""
+    the lines, and one each time another tenth of the work is done."""
 
     def __init__(self, experiments, quick, stream=None):
         self._weights = {e.name: e.cost[1 if quick else 0] for e in experiments}
@@ -26,10 +31,13 @@ class Progress:
         self._stream = stream or sys.stderr  # looked up now: main() may have wrapped it
         self._lock = threading.Lock()
         self._bar = None
+        self._logged_percent = 0
 
     def start(self):
         self._started = time.monotonic()
-        self._bar = tqdm(total=sum(self._weights.values()) or 1.0, file=self._stream, disable=None,
+        # Counted in whole percent: whatever tqdm shows, a count reads "13/100",
+        # never a weight's long fraction.
+        self._bar = tqdm(total=100, file=self._stream, disable=None,
                          mininterval=1.0, dynamic_ncols=True,
                          bar_format="{desc} {percentage:3.0f}%|{bar}| elapsed {elapsed}, {remaining} left{postfix}")
         self._describe()
@@ -70,12 +78,27 @@ class Progress:
         running = self._running()
         self._bar.set_postfix_str("running: " + ", ".join(running[:3]) + (" ..." if len(running) > 3 else "")
                                   if running else "", refresh=False)
-        self._bar.update(self._fraction() * self._bar.total - self._bar.n)
+        self._bar.update(int(100 * self._fraction()) - self._bar.n)
+        if self._bar.disable:
+            self._log_tenths(running)
+
+    def _log_tenths(self, running):
+        """Without a terminal: a line as the work done passes each tenth (whole percentages)."""
+        percent = int(100 * self._fraction()) // LOG_STEP_PERCENT * LOG_STEP_PERCENT
+        if percent <= self._logged_percent or percent >= 100:
+            return
+        self._logged_percent = percent
+        doing = ("; running: " + ", ".join(running)) if running else ""
+        self._stream.write(self._line_unlocked() + doing + "\n")
+        self._stream.flush()
 
     def line(self):
         with self._lock:
-            fraction = self._fraction()
-            done = len(self._done)
+            return self._line_unlocked()
+
+    def _line_unlocked(self):
+        fraction = self._fraction()
+        done = len(self._done)
         elapsed = self.elapsed()
         if fraction >= 1.0:
             left = "done"

@@ -112,6 +112,15 @@ class ProtocolEngine : public world::Engine {
     cpu_ = number("engine_cpu_s", cpu_);
   }
 
+  bool reset() override {
+    send({{"op", "reset"}});
+    states_.clear();
+    notes_.clear();
+    contacts_ = -1;
+    wall_ = cpu_ = 0;
+    return true;
+  }
+
   world::BodyState state(int body) const override {
     if (body < 0 || static_cast<size_t>(body) >= states_.size())
       throw world::EngineError(name_ + ": no body " + std::to_string(body));

@@ -55,7 +55,8 @@ async function serve(name, setting) {
   let session;
   try {
     const adapter = require(ENGINES[name]);
-    session = new Session(adapter.make(await loadEngine(adapter), setting));
+    const module = await loadEngine(adapter);
+    session = new Session(adapter.make(module, setting), () => adapter.make(module, setting));
   } catch (error) {
     // The first reply the C++ side reads says why.
     process.stdout.write(`${JSON.stringify({ error: `cannot load ${name}: ${error.message}; run \`npm ci\` in peers/wasm` })}\n`);

@@ -20,17 +20,32 @@ const int CIRCLE_SEGMENTS = 24;
 const double APART_METRES = 0.005;
 const double APART_DEGREES = 1.0;
 
-// The outline colours of the other engines, in the order named, and their names for the labels.
+// Each engine's colour, the same in every run and everywhere it is shown
+// (its outlines, its label's heading, its plot curve, the legend), keyed
+// by the engine and not by its place in --compare. ODE's is the plot's blue.
 struct Outline {
   Rgba color;
   const char* name;
 };
 // See-through, so that ODE's solid bodies show under where the others agree.
 const std::uint8_t OUTLINE_ALPHA = 110;
-const Outline OUTLINES[] = {{{255, 140, 30, OUTLINE_ALPHA}, "orange"}, {{40, 220, 255, OUTLINE_ALPHA}, "cyan"},
-                            {{255, 60, 200, OUTLINE_ALPHA}, "magenta"}, {{250, 240, 60, OUTLINE_ALPHA}, "yellow"},
-                            {{120, 255, 90, OUTLINE_ALPHA}, "green"}, {{255, 70, 70, OUTLINE_ALPHA}, "red"}};
-constexpr size_t OUTLINE_COUNT = sizeof OUTLINES / sizeof OUTLINES[0];
+struct EngineOutline {
+  const char* engine;
+  Outline outline;
+};
+const EngineOutline ENGINE_OUTLINES[] = {
+    {"bullet", {{255, 140, 30, OUTLINE_ALPHA}, "orange"}},  {"mujoco", {{120, 255, 90, OUTLINE_ALPHA}, "green"}},
+    {"havok", {{255, 60, 200, OUTLINE_ALPHA}, "magenta"}},  {"jolt", {{250, 240, 60, OUTLINE_ALPHA}, "yellow"}},
+    {"rapier", {{40, 220, 255, OUTLINE_ALPHA}, "cyan"}},   {"physx", {{255, 70, 70, OUTLINE_ALPHA}, "red"}},
+};
+// An engine the table does not know (a later one): white until it is given its own.
+const Outline OTHER_OUTLINE = {{240, 240, 240, OUTLINE_ALPHA}, "white"};
+
+const Outline& outlineOf(const std::string& engine) {
+  for (const EngineOutline& e : ENGINE_OUTLINES)
+    if (engine == e.engine) return e.outline;
+  return OTHER_OUTLINE;
+}
 
 // The grid for `count` views: columns, rows.
 void gridFor(size_t count, int& columns, int& rows) {
@@ -162,13 +177,33 @@ void CompareViews::drawLabels(const CompareLanes& lanes, const std::vector<Rect>
     for (size_t lane = merged_ ? 0 : views[i].lane; lane < (merged_ ? all.size() : views[i].lane + 1); ++lane) {
       if (!shown(lane)) continue;
       std::vector<std::string> label = lanes.label(all[lane]);
-      if (merged_)
-        label.front() = (lane == 0 ? std::string("solid: ") : std::string(OUTLINES[(lane - 1) % OUTLINE_COUNT].name) + ": ") +
-                        label.front();
+      // Headed by the engine's colour (its outlines and its plot curve);
+      // merged, ODE's bodies are the solid ones.
+      if (merged_) {
+        // One line an engine, its colour, name and headline (the version,
+        // setting and notes are the views' labels'), so that the legend
+        // stays low and short.
+        const std::string colour = lane > 0 ? outlineOf(all[lane].engine).name : "solid";
+        std::string headline = label.size() > 1 ? label[1] : "";
+        // A closing aside ("   (start 29.567 J)") is the same for every
+        // engine: left to the views' labels, so a line fits a narrow view.
+        const size_t aside = headline.rfind("   (");
+        if (aside != std::string::npos && headline.back() == ')') headline.erase(aside);
+        lines.push_back(colour + " " + all[lane].engine + (headline.empty() ? "" : ": " + headline));
+        continue;
+      }
+      label.front() = (lane > 0 ? std::string(outlineOf(all[lane].engine).name) : std::string("blue")) + ": " +
+                      label.front();
       lines.insert(lines.end(), label.begin(), label.end());
     }
     text.prepare(*labels_[i], lines, views[i].width - 2 * MARGIN);
-    text.drawAt(*labels_[i], views[i].x + MARGIN, views[i].y + MARGIN, windowWidth, windowHeight);
+    // Merged, the legend sits at the view's bottom left, clear of the scene's
+    // subject (test2's pivot is near the top), a row above the window's
+    // notice line.
+    const int row = labels_[i]->height() / static_cast<int>(std::max<size_t>(1, lines.size()));
+    const int y = merged_ ? std::max(views[i].y + MARGIN, views[i].y + views[i].height - MARGIN - labels_[i]->height() - 2 * row)
+                          : views[i].y + MARGIN;
+    text.drawAt(*labels_[i], views[i].x + MARGIN, y, windowWidth, windowHeight);
   }
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
@@ -179,7 +214,7 @@ void CompareViews::drawOutlines(const CompareLanes& lanes, const glm::mat4& view
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
   for (size_t lane = 1; lane < all.size(); ++lane) {
     if (!all[lane].failure.empty() || !shown(lane)) continue;
-    const Rgba color = OUTLINES[(lane - 1) % OUTLINE_COUNT].color;
+    const Rgba color = outlineOf(all[lane].engine).color;
     const auto& ode = all.front().scene->run().objects();
     const auto& theirs = all[lane].scene->run().objects();
     for (size_t i = 0; i < theirs.size(); ++i) {
@@ -206,7 +241,7 @@ std::vector<LivePlot::Curve> CompareViews::curves(const CompareLanes& lanes) con
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
   for (size_t lane = 1; lane < all.size(); ++lane) {
     if (!shown(lane)) continue;
-    Rgba color = OUTLINES[(lane - 1) % OUTLINE_COUNT].color;
+    Rgba color = outlineOf(all[lane].engine).color;
     color.a = 255;
     curves.push_back({&all[lane].scene->session().chart(), color});
   }
@@ -217,13 +252,12 @@ std::string CompareViews::legend(const CompareLanes& lanes) const {
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
   std::string text = all.front().engine + " blue";
   for (size_t lane = 1; lane < all.size(); ++lane)
-    if (shown(lane)) text += ", " + all[lane].engine + " " + OUTLINES[(lane - 1) % OUTLINE_COUNT].name;
+    if (shown(lane)) text += ", " + all[lane].engine + " " + outlineOf(all[lane].engine).name;
   return text;
 }
 
 std::string CompareViews::hudLine() const {
-  return merged_ ? "compare: others outlined where 5 mm or 1 deg from ODE's (M: views)"
-                 : "compare: a view per engine (M: outlines over ODE)";
+  return merged_ ? "merged: others outlined 5 mm/1 deg off ODE (M views)" : "a view per engine (M merged)";
 }
 
 std::string CompareViews::helpLine() {

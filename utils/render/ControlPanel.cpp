@@ -381,6 +381,22 @@ void ControlPanel::knobs(AbstractWindow& scene) {
 }
 
 void ControlPanel::knobRow(AbstractWindow& scene, int index, const Knob& knob) {
+  // A setting the engine shown does not take: greyed, marked, and the
+  // engine's note as its tooltip (it stays editable: ODE's lane takes it).
+  const std::string notReached = scene.knobNotReached(knob);
+  if (!notReached.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextUnformatted(("not in " + scene.engine().engineName() + ":").c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", notReached.c_str());
+  }
+  knobRowControls(scene, index, knob);
+  if (!notReached.empty()) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", notReached.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void ControlPanel::knobRowControls(AbstractWindow& scene, int index, const Knob& knob) {
   if (knob.kind == KnobKind::Switch) {
     const std::string effect = knob.effectText();
     bool on = knob.get() > 0;

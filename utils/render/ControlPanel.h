@@ -58,6 +58,7 @@ class ControlPanel {
   void viewToggles(AbstractWindow& scene);  // C, J, X, V, L, H and the F2 increment
   void knobs(AbstractWindow& scene);
   void knobRow(AbstractWindow& scene, int index, const Knob& knob);
+  void knobRowControls(AbstractWindow& scene, int index, const Knob& knob);  // the row without its reach
   // A value edited by slider or typing, committed when the edit ends, so a
   // drag is one change on the timeline, not one per frame: a slider when a
   // drag (not a click) is released, a field on Enter, Tab or a click

@@ -51,6 +51,17 @@ GlWindow::VideoSubsystem::VideoSubsystem() {
   // SDL would turn SIGINT and SIGTERM into a window close, which ends the
   // run as if complete (status 0); the program handles them (StopSignal.h).
   SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+#if defined(__linux__) && !defined(__EMSCRIPTEN__)
+  // With neither display named (DISPLAY= included), SDL would try each of
+  // its drivers and print its own complaints (Wayland's "XDG_RUNTIME_DIR is
+  // invalid or not set") before ours: said here first, and only ours.
+  const auto unset = [](const char* name) {
+    const char* value = SDL_getenv(name);
+    return !value || !*value;
+  };
+  if (unset("DISPLAY") && unset("WAYLAND_DISPLAY") && unset("SDL_VIDEODRIVER"))
+    throw NoDisplayError("no display found (DISPLAY and WAYLAND_DISPLAY are not set)");
+#endif
   if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) throw NoDisplayError(SDL_GetError());
   try {
     refuseInvisibleFallback();

@@ -298,7 +298,8 @@ void FrameLoop::draw() {
   if (lanes_ && scene_.session().hudMode() != HudMode::Off) {
     const long at = std::min<long>(3, static_cast<long>(hud.size()));
     hud.insert(hud.begin() + at, {lanes_->timingLine(), views_.compare.hudLine()});
-    oneRow.insert(oneRow.begin() + at, {true, true});
+    // Wrapped between engines rather than cut: every engine's figure shows.
+    oneRow.insert(oneRow.begin() + at, {false, false});
   }
   hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.session().hudMode() == HudMode::Full,
                                     oneRow);
@@ -385,10 +386,25 @@ void FrameLoop::recordFrame(long long frame) {
   saveScreenshot(joinPath(options_.recordDir, scene_.programName() + name), window_.width(), window_.height());
 }
 
-// Paused, with no script playing, no key flying the camera and no drag:
+void sayWhereFilesGo(const AbstractWindow& scene, const RunOptions& options) {
+  const std::vector<std::string> names = scene.outputFileNames();
+  if (names.empty()) return;
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  std::error_code failed;
+  std::filesystem::path folder =
+      std::filesystem::absolute(options.outDir.empty() ? "." : options.outDir, failed).lexically_normal();
+  if (folder.has_parent_path() && folder.filename().empty()) folder = folder.parent_path();  // "/a/b/" -> "/a/b"
+  std::fprintf(stderr, "%s writes %s in %s (--out-dir DIR chooses the folder)\n", scene.programName().c_str(),
+               list.c_str(), failed ? options.outDir.c_str() : folder.string().c_str());
+}
+
+// Paused, with no rewind under way, no script playing, no key flying the camera and no drag:
 // nothing changes until an event comes.
 bool FrameLoop::idle() const {
-  return scene_.session().time().paused() && !player_.playing() && !cameraKeysHeld() && !scene_.session().dragging() &&
+  return scene_.session().time().paused() && !scene_.rewinding() && !player_.playing() && !cameraKeysHeld() &&
+         !scene_.session().dragging() &&
          options_.recordDir.empty() && options_.screenshot.empty();
 }
 
@@ -415,10 +431,14 @@ double FrameLoop::runFrame() {
   // An OdeError leaves through here; RAII cleans up. A compare window
   // shares the stepping budget among its engines.
   const double engines = lanes_ ? static_cast<double>(lanes_->lanes().size()) : 1.0;
+  const bool rewindFrame = scene_.rewinding();  // begun by this frame's keys, or before
+  // A rewind replays, each frame, what every engine can replay in the budget.
+  if (lanes_) scene_.setRewindStepsPerFrame(lanes_->stepsWithin(TimeControl::STEPPING_BUDGET));
   scene_.advanceFrame(recording ? RECORD_FRAME_SECONDS : elapsed,
                       recording ? std::numeric_limits<double>::infinity() : TimeControl::STEPPING_BUDGET / engines);
   if (lanes_) lanes_->follow(seconds(now, SDL_GetPerformanceCounter()), scene_.run().steps() - stepsBefore);
   const double stepping = seconds(now, SDL_GetPerformanceCounter());
+  if (rewindFrame) scene_.noteRewindFrame(stepping);
   input_.followBody(scene_);
   // A reset or a rewind moves time back: only forward steps count.
   const double advanced =
@@ -578,6 +598,9 @@ int runWindowWith(AbstractWindow& first, const RunOptions& options,
     long long windowFrames = 0;
     for (;;) {
       initializeScenes(*scene, options, lanes);
+      // The launcher's window visits scenes that write files: each visit
+      // says which and where, since no option of the user's named them.
+      if (next) sayWhereFilesGo(*scene, options);
       FrameLoop loop(*scene, options, *window, *views, *player, windowFrames, lanes);
       const int status = loop.run();
       if (!next || !scene->session().switchRequested() || stopSignal() != 0) return finish(status);

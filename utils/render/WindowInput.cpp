@@ -122,7 +122,9 @@ bool WindowInput::handleEvent(const SDL_Event& event, AbstractWindow& scene, con
       // Auto-repeat would toggle switches and step settings at the repeat
       // rate (and a held Esc would answer its own prompt); one press is one action.
       if (event.key.keysym.sym == SDLK_ESCAPE) {
-        if (!event.key.repeat) escape(scene);
+        // Esc first stops a rewind under way, where it is.
+        if (scene.rewinding()) scene.cancelRewind();
+        else if (!event.key.repeat) escape(scene);
         break;
       }
       if (camera_.handleKey(event.key, scene)) break;

@@ -66,6 +66,11 @@ class Engine {
   // New world settings (a key or the panel), or new surfaces (mu changed).
   virtual void changeSettings(const World& world) = 0;
   virtual void step() = 0;  // one step of world.settings.step
+  // Empties the engine for another build() (R, a rewind) where it can do so
+  // in place, cheaper than a new one (an engine in another process keeps
+  // its process and its loaded module); false where it cannot, and then a
+  // new engine is made. Its notes and clocks start again.
+  virtual bool reset() { return false; }
   virtual BodyState state(int body) const = 0;
   virtual int contactCount() const { return -1; }  // in the last step, or -1: unknown
   // What the engine could not express exactly, one sentence each, said once.

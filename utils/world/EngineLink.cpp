@@ -58,6 +58,13 @@ void EngineLink::start(std::unique_ptr<Engine> engine, const std::string& name, 
   bodyChanges_ = AbstractObject::bodyChanges();
 }
 
+bool EngineLink::restart(Settings settings, const std::vector<std::unique_ptr<AbstractObject>>& objects,
+                         const SurfaceOf& surfaceOf, const FileOrigin* file) {
+  if (!engine_ || !engine_->reset()) return false;
+  start(std::move(engine_), name_, setting_, std::move(settings), objects, surfaceOf, file);
+  return true;
+}
+
 void EngineLink::sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf) {
   // A body the scene made kinematic or dynamic again (test10 parks a cube
   // that passed the wall) is another body to an engine: removed, and added

@@ -40,6 +40,10 @@ class EngineLink {
   void start(std::unique_ptr<Engine> engine, const std::string& name, EngineSetting setting, Settings settings,
              const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf,
              const FileOrigin* file = nullptr);
+  // Builds the scene's world again in the engine running now, emptied in
+  // place (Engine::reset); false, with nothing done, where it cannot be.
+  bool restart(Settings settings, const std::vector<std::unique_ptr<AbstractObject>>& objects,
+               const SurfaceOf& surfaceOf, const FileOrigin* file = nullptr);
   void stop() { engine_.reset(); }
   // The scene's changes since the last step, as edits.
   void sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf);

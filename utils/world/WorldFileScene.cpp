@@ -104,6 +104,26 @@ void WorldFileScene::buildScene() {
   measures_ = std::make_unique<WorldMeasures>(world_, world(), space(), std::move(bodies));
 }
 
+// Each body its own colour, the same in every run (by its index in the
+// file): three stacked boxes read as three. Hues a golden angle apart stay
+// distinct for any count; none is the grey of static geoms.
+Color WorldFileScene::bodyColor(int body) {
+  const double hue = std::fmod(0.08 + 0.618033988749895 * body, 1.0) * 6.0;
+  const double saturation = 0.55, value = 0.9;
+  const int sector = static_cast<int>(hue);
+  const double f = hue - sector;
+  const float p = static_cast<float>(value * (1 - saturation)), q = static_cast<float>(value * (1 - saturation * f)),
+              t = static_cast<float>(value * (1 - saturation * (1 - f))), v = static_cast<float>(value);
+  switch (sector % 6) {
+    case 0: return {v, t, p};
+    case 1: return {q, v, p};
+    case 2: return {p, v, t};
+    case 3: return {p, q, v};
+    case 4: return {t, p, v};
+    default: return {v, p, q};
+  }
+}
+
 void WorldFileScene::buildGeoms(const std::vector<bool>& bodies, bool statics) {
   // One object per geom, in the file's order (the order the program made
   // them: the collision order, and the state hash's body order). A second
@@ -129,6 +149,7 @@ void WorldFileScene::buildGeoms(const std::vector<bool>& bodies, bool statics) {
     }
     geomIndex_[object->getGeom()] = static_cast<int>(i);
     made.emplace_back(i, object);
+    if (g.body >= 0) object->color = bodyColor(g.body);
     if (g.shape == ShapeKind::Plane) continue;
     if (g.body < 0) {
       object->setAsFixedGeom();
@@ -346,8 +367,15 @@ std::string WorldFileScene::fileTitle(const std::string& path) const {
 
 void WorldFileScene::addHudLines(std::vector<std::string>& lines) const {
   auto count = [](size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
-  // The measures first: the compact HUD shows the first line.
-  if (measures_) measures_->addHudLines(lines);
+  // The measures first, on one line: the compact HUD shows the first line,
+  // and every measure belongs in it.
+  if (measures_) {
+    std::vector<std::string> measured;
+    measures_->addHudLines(measured);
+    std::string joined;
+    for (const std::string& line : measured) joined += (joined.empty() ? "" : "   ") + line;
+    if (!joined.empty()) lines.push_back(joined);
+  }
   lines.push_back("world file" + (world_.scene.empty() ? std::string() : " from " + world_.scene) + ": " +
                   count(world_.bodies.size(), "body", "bodies") + ", " + count(world_.geoms.size(), "geom", "geoms") +
                   ", " + count(world_.joints.size(), "joint", "joints"));

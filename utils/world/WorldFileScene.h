@@ -38,6 +38,8 @@ class WorldFileScene : public AbstractWindow {
   const FileOrigin* fileOrigin() const override { return &origin_; }
 
  private:
+  bool droppedLater(int body) const;
+  static Color bodyColor(int body);  // a body's own colour, by its index in the file
   // The geoms of the bodies marked in `bodies` (and the static ones when
   // `statics`), their bodies, offsets and collide bits.
   void buildGeoms(const std::vector<bool>& bodies, bool statics);

@@ -60,7 +60,8 @@ function info(name) {
 function open(name, setting) {
   const entry = loaded[name];
   if (!entry || !entry.module) throw new Error(JSON.parse(info(name)).missing || `${name} is not loaded`);
-  sessions.set(++lastSession, new Session(entry.adapter.make(entry.module, setting)));
+  sessions.set(++lastSession, new Session(entry.adapter.make(entry.module, setting),
+    () => entry.adapter.make(entry.module, setting)));
   return lastSession;
 }
 

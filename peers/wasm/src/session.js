@@ -24,8 +24,12 @@ function statesOf(engine, count) {
 }
 
 class Session {
-  constructor(engine) {
+  // `remake` (optional) makes a fresh engine on the module already loaded:
+  // 'reset' uses it, so that R or a rewind in a window empties the engine
+  // without a new process and a new WebAssembly module.
+  constructor(engine, remake = null) {
     this.engine = engine;
+    this.remake = remake;
     this.bodies = 0;
     this.pending = null;  // an error in a message without a reply, told in the next reply
     this.quit = false;
@@ -55,6 +59,12 @@ class Session {
         return undefined;
       case 'set_state':
         engine.setState(this.bodyIndex(message), message.state);
+        return undefined;
+      case 'reset':
+        if (!this.remake) throw new Error('this session cannot make a fresh engine');
+        if (typeof engine.dispose === 'function') engine.dispose();
+        this.engine = this.remake();
+        this.bodies = 0;
         return undefined;
       case 'force':
         engine.applyForce(this.bodyIndex(message), message.force, message.torque);

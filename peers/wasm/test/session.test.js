@@ -67,3 +67,26 @@ test('a number that is not finite goes as null; quit ends the session', () => {
   assert.strictEqual(send(s, { op: 'quit' }), null);
   assert.strictEqual(s.quit, true);
 });
+
+for (const name of ['havok', 'jolt', 'rapier']) {
+  test(`${name}: reset makes a fresh engine in the same session, and a build after it starts over`, async () => {
+    const adapter = require(`../src/engines/${name}`);
+    const wasmBinary = adapter.wasmFile ? fs.readFileSync(require.resolve(adapter.wasmFile)) : undefined;
+    const module = await adapter.load({ wasmBinary });
+    const s = new Session(adapter.make(module, 'default'), () => adapter.make(module, 'default'));
+    send(s, { op: 'build', world: WORLD, removed: [] });
+    const before = JSON.parse(send(s, { op: 'step', count: 100 })).states[0];
+    assert.strictEqual(send(s, { op: 'reset' }), null);
+    send(s, { op: 'build', world: WORLD, removed: [] });
+    const again = JSON.parse(send(s, { op: 'step', count: 100 }));
+    assert.strictEqual(again.error, undefined);
+    assert.deepStrictEqual(again.states[0], before, 'the same world built again steps to the same state');
+  });
+}
+
+test('reset without a way to make an engine is an error told in the next reply', async () => {
+  const s = await session();
+  send(s, { op: 'build', world: WORLD, removed: [] });
+  assert.strictEqual(send(s, { op: 'reset' }), null);
+  assert.match(JSON.parse(send(s, { op: 'step' })).error, /^reset: this session cannot make a fresh engine/);
+});

@@ -352,6 +352,12 @@ class HavokEngine {
     this.clock.time(() => this.HK.HP_World_Step(this.id, this.h));
   }
 
+  // Before a fresh engine takes over (the session's 'reset'): the world released.
+  dispose() {
+    if (this.id !== undefined && this.id !== null) this.HK.HP_World_Release(this.id);
+    this.id = null;
+  }
+
   state(index) {
     const HK = this.HK, body = this.bodies[index];
     if (!body) return null;

@@ -431,6 +431,12 @@ class JoltEngine {
     this.clock.time(() => this.jolt.Step(this.h, 1));
   }
 
+  // Before a fresh engine takes over (the session's 'reset'): the system and its bodies freed.
+  dispose() {
+    if (this.jolt) this.J.destroy(this.jolt);
+    this.jolt = null;
+  }
+
   state(index) {
     const entry = this.bodies[index];
     if (!entry) return null;

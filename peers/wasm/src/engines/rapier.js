@@ -18,8 +18,10 @@
 // - each joint is an impulse joint, its first body ODE's body2 (or the
 //   world) and its second ODE's body1, so that its angle and position are
 //   ODE's (body1 against body2);
-// - a force for one step is added before the step and reset after it
-//   (Rapier's forces persist until reset).
+// - a force and a torque for one step are added before the step and both
+//   reset after it: Rapier's user forces and torques persist until reset,
+//   and resetForces leaves the torques (a drag's torque kept spinning the
+//   body after the drag was released).
 // "best": 50 solver iterations (default 4), continuous collision (CCD) on
 // every moving body (Rapier sweeps only those that move far in a step), and
 // the speed cap (400 m/s times lengthUnit) moved out of reach by a
@@ -280,8 +282,19 @@ class RapierEngine {
 
   step() {
     this.clock.time(() => this.rapier.step(this.hooks && this.events, this.hooks));
-    for (const i of this.forced) if (this.bodies[i]) this.bodies[i].resetForces(false);
+    for (const i of this.forced) {
+      const b = this.bodies[i];
+      if (!b) continue;
+      b.resetForces(false);
+      b.resetTorques(false);
+    }
     this.forced.clear();
+  }
+
+  // Before a fresh engine takes over (the session's 'reset'): the world's memory back.
+  dispose() {
+    if (this.rapier) this.rapier.free();
+    this.rapier = null;
   }
 
   state(index) {
