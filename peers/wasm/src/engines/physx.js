@@ -379,6 +379,13 @@ class PhysxEngine {
     for (const b of [joint.body1, joint.body2]) if (b >= 0) (this.bodies[b].joints = this.bodies[b].joints || []).push(created);
   }
 
+  // The session ends, or R and a rewind make a fresh engine: the scene goes
+  // from the module, which every session in the process shares.
+  dispose() {
+    if (this.scene) this.releaseScene();
+    this.scene = null;
+  }
+
   releaseScene() {
     const joints = new Set();  // a joint is in both its bodies' lists
     for (const entry of this.bodies) for (const joint of (entry && entry.joints) || []) joints.add(joint);
