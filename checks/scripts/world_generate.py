@@ -14,8 +14,8 @@ their middles, gravity along any direction. Every world must pass the schema
                                         builds it and runs it (status 0, or 3 for a blow-up, which is physics)
   odelab --world W --engine X (every --engine-every'th world, each engine named) runs or refuses as above
 
-Never: a signal (134 abort, 139 segfault), status 4 (ODE's internal error) at t = 0,
-status 1, a hang, an export the schema or the reader refuses. The same --seed
+Never: a signal (134 abort, 139 segfault), status 4 (ODE's internal error)
+but for dWorldStep's singular LCP (DWORLDSTEP_SINGULAR below), status 1, a hang, an export the schema or the reader refuses. The same --seed
 gives the same worlds; a failing world stays under --work. Exit 0: all held.
 Prints the time taken and the counts of each outcome.
 """
@@ -163,9 +163,10 @@ def world(d, index):
             if rng.random() < 0.3:
                 low = rng.uniform(-3, 0)
                 j["low_stop"], j["high_stop"] = low, low + rng.uniform(0, 3)
-        for name in ("erp", "cfm"):
-            if rng.random() < 0.2:
-                j[name] = rng.random()
+        if kind in ("ball", "fixed"):  # a hinge's or slider's own erp/cfm has no meaning in ODE: refused
+            for name in ("erp", "cfm"):
+                if rng.random() < 0.2:
+                    j[name] = rng.random()
         joints.append(j)
     surfaces = []
     for _ in range(rng.randint(1, 3)):
@@ -217,9 +218,19 @@ def run(cmd, cwd, timeout):
         return "hang", "", ""
 
 
+# ODE's big-matrix solver (dWorldStep) fails its own quaternion check on some
+# valid worlds (deep overlaps, CFM 0, unbounded friction make its LCP singular:
+# doc/hardening.md, "The 18 ODE errors"). That is ODE's verdict on the world,
+# ended cleanly with status 4 and a message naming the time and the settings;
+# the same status from QuickStep, or without that message, is still a failure.
+DWORLDSTEP_SINGULAR = re.compile(r'assertion "!bSafeNormalize4Fault" failed in dxNormalize4\(\).* at t=\S+ s \(.*solver step,')
+
+
 def judge(status, out, err, seconds):
     """'' when the answer is one a valid world may get; else what was wrong."""
     if status == 0 or status == 3:
+        return ""
+    if status == 4 and DWORLDSTEP_SINGULAR.search(err):
         return ""
     if status == 2:
         text = err.strip()
@@ -285,9 +296,10 @@ def main():
             except (OSError, ValueError) as error:
                 wrong.append("the export cannot be read: %s" % error)
             status, out2, err2 = run([args.odelab, "--world", exported] + common, folder, args.timeout)
-            if status not in (0, 3):
-                wrong.append("the export does not read back and run: %s" % (judge(status, out2, err2, args.seconds)
-                                                                           or "status %s: %s" % (status, err2.strip()[-300:])))
+            if status == 2:
+                wrong.append("the export does not read back: %s" % err2.strip()[-300:])
+            elif judge(status, out2, err2, args.seconds):
+                wrong.append("the export does not read back and run: %s" % judge(status, out2, err2, args.seconds))
         if engines and i % args.engine_every == 0:
             for engine in engines:
                 status3, out3, err3 = run([args.odelab, "--world", path, "--engine", engine] + common, folder, args.timeout)

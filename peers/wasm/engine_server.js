@@ -84,7 +84,8 @@ function main(argv) {
     return;
   }
   const [name, setting] = argv;
-    if (!isEngine(argv[1])) fail(`--info: unknown engine '${argv[1]}' (${NAMES.join(', ')})`);
+  if (!isEngine(name) || !['default', 'best'].includes(setting))
+    fail(`usage: engine_server.js ${NAMES.join('|')} default|best, or --info ENGINE`);
   serve(name, setting);
 }
 
