@@ -15,12 +15,8 @@
 #   - with ENGINE_SERVER_JS: `engine_server.js --info __proto__` is refused
 #     with status 2 and one line, no traceback.
 program=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") server=${2:-}
-root=$(mktemp -d "${TMPDIR:-/tmp}/odelab_signals.XXXXXX") || exit 2
-pids=
-trap 'for p in $pids; do kill -KILL "$p" 2>/dev/null; done; rm -rf "$root"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-ok() { echo "ok:   $*"; }
+file=Test2_output.txt check_name=signals
+. "$(dirname "$0")/output_check_common.sh"
 no_temporaries() {
   left=$(ls -A | grep '^\.' | tr '\n' ' ')
   [ -z "$left" ] && ok "$1: no hidden temporary left" || fail "$1: left $left"
@@ -32,8 +28,7 @@ for signal_status in USR1:138 ALRM:142; do
   "$program" --headless --seconds 100000 --metrics-json m.json >/dev/null 2>err.txt &
   pid=$!
   pids=$pid
-  n=0
-  while [ "$(cat Test2_output.txt 2>/dev/null | wc -l)" -lt 50 ] && [ $n -lt 600 ]; do sleep 0.1; n=$((n + 1)); done
+  wait_lines . 50
   kill -"$signal" "$pid"
   wait "$pid"
   status=$?
