@@ -286,7 +286,8 @@ class HavokEngine {
     for (const b of [joint.body1, joint.body2]) if (b >= 0) this.bodies[b].joints.push(c);
   }
 
-  // The end of a session: every constraint, body, shape and the world given
+  // The end of a session, or a fresh engine taking over ('reset'):
+  // every constraint, body, shape and the world given
   // back to the module, which a page shares between sessions.
   dispose() {
     const HK = this.HK;
@@ -350,12 +351,6 @@ class HavokEngine {
 
   step() {
     this.clock.time(() => this.HK.HP_World_Step(this.id, this.h));
-  }
-
-  // Before a fresh engine takes over (the session's 'reset'): the world released.
-  dispose() {
-    if (this.id !== undefined && this.id !== null) this.HK.HP_World_Release(this.id);
-    this.id = null;
   }
 
   state(index) {

@@ -48,7 +48,8 @@ class JoltEngine {
     this.clock = new StepClock();
   }
 
-  // The end of a session: the physics system (its bodies, shapes and
+  // The end of a session, or a fresh engine taking over ('reset'):
+  // the physics system (its bodies, shapes and
   // constraints with it) and the callbacks given back to the module, which
   // a page shares between sessions. JoltInterface owns the layer tables.
   dispose() {
@@ -429,12 +430,6 @@ class JoltEngine {
   step() {
     this.contacts = 0;
     this.clock.time(() => this.jolt.Step(this.h, 1));
-  }
-
-  // Before a fresh engine takes over (the session's 'reset'): the system and its bodies freed.
-  dispose() {
-    if (this.jolt) this.J.destroy(this.jolt);
-    this.jolt = null;
   }
 
   state(index) {

@@ -58,7 +58,8 @@ class RapierEngine {
     this.clock = new StepClock();
   }
 
-  // The end of a session: the world (its bodies, colliders and joints with
+  // The end of a session, or a fresh engine taking over ('reset'):
+  // the world (its bodies, colliders and joints with
   // it) given back to the module, which a page shares between sessions.
   dispose() {
     if (!this.rapier) return;
@@ -289,12 +290,6 @@ class RapierEngine {
       b.resetTorques(false);
     }
     this.forced.clear();
-  }
-
-  // Before a fresh engine takes over (the session's 'reset'): the world's memory back.
-  dispose() {
-    if (this.rapier) this.rapier.free();
-    this.rapier = null;
   }
 
   state(index) {
