@@ -4,6 +4,7 @@
 // state. Shapes: BulletShapes; per-pair surfaces and collide bits:
 // BulletContacts; joints: BulletJoints; the world and its settings:
 // BulletWorld. This file holds the bodies and the edits a scene makes.
+#include <cmath>
 #include <time.h>
 
 #include <chrono>
@@ -233,7 +234,12 @@ class BulletEngine : public world::Engine {
   }
 
   void addJoint(int index) {
-    const world::Joint joint = world_.jointAsBuilt(index);
+    world::Joint joint = world_.jointAsBuilt(index);
+    // A joint with no ERP or CFM of its own takes the world's, as in ODE;
+    // Bullet's constraints would take Bullet's own defaults instead.
+    const world::Settings& settings = world_.description().settings;
+    if (std::isnan(joint.erp)) joint.erp = settings.erp;
+    if (std::isnan(joint.cfm)) joint.cfm = settings.cfm;
     auto bodyOf = [&](int body) -> btRigidBody* {
       if (body < 0) return nullptr;
       if (body >= static_cast<int>(bodies_.size()) || !bodies_[body].body)
