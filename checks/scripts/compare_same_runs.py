@@ -68,7 +68,7 @@ from launcher_same_run import CLOCK_METRICS  # noqa: E402
 
 METRICS = "m.json"
 # The frame loop's figures: in a compare window, ODE's block has them.
-WINDOW_METRICS = {"window_fps", "longest_frame_ms", "window_failures"}
+WINDOW_METRICS = {"window_fps", "longest_frame_ms", "window_failures", "longest_input_to_engines_ms"}
 SHOT = "shot.png"
 WIDTH, HEIGHT = 1280, 720
 # The top of a view that its label may cover, left out of the picture's check.

@@ -23,8 +23,8 @@ using nlohmann::json;
 // WebAssembly on a loaded machine take seconds), every other message from
 // ten seconds; each body, geom or joint it carries or the world holds adds
 // a millisecond, and each step asked for ten times that per body on top of
-// its own ten milliseconds. The slowest step seen in the lab (test5's 300
-// plates on Havok) is a few milliseconds.
+// its own ten milliseconds. The slowest step seen in the lab (its largest
+// world, on Havok) is a few milliseconds.
 constexpr double BUILD_BASE_SECONDS = 60.0;
 constexpr double MESSAGE_BASE_SECONDS = 10.0;
 constexpr double SECONDS_PER_PART = 1e-3;

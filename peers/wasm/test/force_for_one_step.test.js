@@ -2,7 +2,7 @@
 // A force and a torque given through 'force' act for the next step only
 // (doc/engine-protocol.md): the step after gives a free body nothing more.
 // A torque that outlived its step kept spinning a dragged body after the
-// drag was released, and the mouse drag poured energy into it (test2's
+// drag was released, and the mouse drag poured energy into it (a
 // pendulum on Rapier whirled upright: 25 J became 37,657 J).
 //   node --test peers/wasm/test/
 const test = require('node:test');
