@@ -395,6 +395,8 @@ Metrics AbstractWindow::metrics() const {
   // The engine's own collision and step calls (ODE's, or --engine's without
   // the edits and states passed to it): the cost compared like with like.
   m.set("engine_wall_seconds", engine_.active() ? engine_.engineWallSeconds() : run_.engineWallSeconds_);
+  // The link's own time outside those calls; ODE steps in this process with no link: 0.
+  m.set("link_wall_seconds", engine_.active() ? engine_.linkWallSeconds() : 0.0);
   if (engine_.active()) {
     m.set("engine_cpu_seconds", engine_.engineCpuSeconds());
     m.set("translation_note_count", static_cast<double>(engine_.translationNotes().size()));

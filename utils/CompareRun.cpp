@@ -338,9 +338,12 @@ int CompareRun::report(const std::vector<Lane*>& lanes, const RunOptions& option
   int worst = exit_code::OK;
   bool odeError = false;
   // On the terminal a short table, an engine a row: its status, how far it
-  // ran, what a step cost and the scene's headline; every metric goes to
-  // --metrics-json (some 40 an engine would bury the table).
-  std::vector<std::vector<std::string>> table = {{"engine", "status", "sim s", "ms/step", "headline"}};
+  // ran, what a step cost (the engine's own calls, and the link outside
+  // them beside it, never added: lab/odelab_report/costs.py) and the scene's
+  // headline; every metric goes to --metrics-json (some 40 an engine would
+  // bury the table).
+  std::vector<std::vector<std::string>> table = {
+      {"engine", "status", "sim s", "engine ms/step", "link ms/step", "headline"}};
   for (Lane* lane : lanes) {
     worst = std::max(worst, lane->status);
     odeError = odeError || lane->odeError;
@@ -350,11 +353,13 @@ int CompareRun::report(const std::vector<Lane*>& lanes, const RunOptions& option
       addPrefixed(block, prefix, lane->metrics);
       block.set(prefix + "exit_status", lane->status);
       const double steps = lane->metrics.has("steps") ? lane->metrics.get("steps") : 0.0;
-      const double engineSeconds =
-          lane->metrics.has("engine_wall_seconds") ? lane->metrics.get("engine_wall_seconds") : 0.0;
+      const auto perStep = [&](const char* name) {
+        return steps > 0 && lane->metrics.has(name) ? formatValue(1000.0 * lane->metrics.get(name) / steps, 2)
+                                                    : std::string("-");
+      };
       const std::string headline = lane->scene->headline();
       table.push_back({lane->engine, std::to_string(lane->status), formatValue(lane->metrics.get("sim_seconds")),
-                       steps > 0 ? formatValue(1000.0 * engineSeconds / steps, 2) : "-",
+                       perStep("engine_wall_seconds"), perStep("link_wall_seconds"),
                        headline.empty() ? "-" : headline});
       addPrefixed(all, "", block);
       if (!lane->error.empty())
@@ -363,7 +368,7 @@ int CompareRun::report(const std::vector<Lane*>& lanes, const RunOptions& option
         std::cerr << "error: " << lane->engine << ": " << lane->scene->run().blowUpReason() << '\n';
     } else {
       all.set(prefix + "exit_status", lane->status);
-      table.push_back({lane->engine, std::to_string(lane->status), "-", "-", "did not report"});
+      table.push_back({lane->engine, std::to_string(lane->status), "-", "-", "-", "did not report"});
       if (!lane->error.empty()) std::cerr << "error: " << lane->engine << ": " << lane->error << '\n';
     }
   }

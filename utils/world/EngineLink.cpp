@@ -1,5 +1,6 @@
 #include "EngineLink.h"
 
+#include <chrono>
 #include <cmath>
 #include <set>
 #include <string>
@@ -14,6 +15,19 @@ bool same(const BodyState& a, const BodyState& b) {
 }
 
 bool nonZero(const dReal* v) { return v[0] != 0 || v[1] != 0 || v[2] != 0; }
+
+// Adds the wall time of the scope it lives in to a total.
+class WallClock {
+ public:
+  explicit WallClock(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~WallClock() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  WallClock(const WallClock&) = delete;
+  WallClock& operator=(const WallClock&) = delete;
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
 
 bool finite(const BodyState& s) {
   for (const auto* v : {&s.position, &s.linearVelocity, &s.angularVelocity})
@@ -44,6 +58,7 @@ void EngineLink::start(std::unique_ptr<Engine> engine, const std::string& name, 
                        const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf,
                        const FileOrigin* file) {
   engine_ = std::move(engine);
+  linkWallSeconds_ = 0.0;  // the engine's clocks start again with it (Engine::reset)
   file_ = file ? *file : FileOrigin{};
   name_ = name;
   setting_ = setting;
@@ -66,6 +81,7 @@ bool EngineLink::restart(Settings settings, const std::vector<std::unique_ptr<Ab
 }
 
 void EngineLink::sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& objects, const SurfaceOf& surfaceOf) {
+  const WallClock clock(linkWallSeconds_);
   // A body the scene made kinematic or dynamic again (test10 parks a cube
   // that passed the wall) is another body to an engine: removed, and added
   // anew under a new index.
@@ -122,6 +138,7 @@ void EngineLink::sendEdits(const std::vector<std::unique_ptr<AbstractObject>>& o
 }
 
 void EngineLink::changeSettings(const Settings& settings, const SurfaceOf& surfaceOf) {
+  const WallClock clock(linkWallSeconds_);
   world_.settings = settings;
   describeSurfaces(surfaceOf, world_, index_);
   adoptFileSurfaces();
@@ -176,6 +193,7 @@ void EngineLink::forget(int i) {
 }
 
 double EngineLink::step() {
+  const WallClock clock(linkWallSeconds_);
   const double before = engine_->engineWallSeconds();
   engine_->step();
   // Every state looked at before any is written: ODE would take a

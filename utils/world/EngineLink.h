@@ -56,6 +56,11 @@ class EngineLink {
   const std::vector<std::string>& translationNotes() const { return engine_->translationNotes(); }
   double engineWallSeconds() const { return engine_->engineWallSeconds(); }
   double engineCpuSeconds() const { return engine_->engineCpuSeconds(); }
+  // Wall seconds this program spent in the link outside the engine's own
+  // collision and step calls: translating edits and settings, the pipe to an
+  // engine in another process, the states copied back. The third cost beside
+  // the engine's own calls and the whole run's CPU, never added to either.
+  double linkWallSeconds() const { return linkWallSeconds_ - engine_->engineWallSeconds(); }
   const World& world() const { return world_; }
 
  private:
@@ -74,6 +79,7 @@ class EngineLink {
   std::vector<BodyState> written_;  // per body: what was last written into its ODE body
   std::uint64_t bodyChanges_ = 0;
   FileOrigin file_;  // world null: no file
+  double linkWallSeconds_ = 0.0;  // sendEdits, changeSettings and step as this program waits on them
 };
 
 }  // namespace odelab::world

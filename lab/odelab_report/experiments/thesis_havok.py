@@ -6,7 +6,7 @@ build's ODE at the same scene, step and length, and a verdict
 by a stated rule. Havok runs as a user gets it ("default"), except where
 the thesis speaks of Havok after its modifications ("best")."""
 
-from .. import markdown as md, swing_energy
+from .. import costs, markdown as md, swing_energy
 from ..thesis_quotes import quoted
 from ..claims import Claim, q as column, slot
 from ..runner import RunSpec, median
@@ -150,19 +150,31 @@ def test4(r, q, h4, plates):
 
 
 def test5(r, q, h4, plates):
-    h = [x.m("cpu_ms_per_step") for x in r["h5"]]
-    o = [x.m("cpu_ms_per_step") for x in r["o5"]]
+    """Faster by one cost for both, the engine's own collision and step calls
+    per step (costs.py), the whole run's CPU beside it: Havok's own calls run
+    in Node.js, so the program's own CPU holds little of Havok's work."""
+    def ms(results, definition):
+        return [1000 * costs.per_step(x, definition) for x in results if costs.per_step(x, definition) is not None]
+    h, o = ms(r["h5"], costs.ENGINE), ms(r["o5"], costs.ENGINE)
+    hw, ow = ms(r["h5"], costs.WHOLE_RUN), ms(r["o5"], costs.WHOLE_RUN)
     offset = max(x.m("max_axis_offset") for x in r["h5"])
-    faster = max(h) < min(o)
-    said = f"CPU ms per step {median(h):.3g} [{min(h):.3g}, {max(h):.3g}], largest plate offset {offset:.2g} m"
-    verdict_text = ("faster in every run" if faster else "a tie within the scatter" if min(h) < max(o) else "slower")
-    out = row("test5", "Havok faster; plates pushed out of the column until modified", f"{said}: {verdict_text}",
-              f"{median(o):.3g} [{min(o):.3g}, {max(o):.3g}] ({plates} plates, simple space)",
+    faster = bool(h and o) and max(h) < min(o)
+    tie = bool(h and o) and not faster and min(h) < max(o)
+
+    def spread(v):
+        return f"{median(v):.3g} [{min(v):.3g}, {max(v):.3g}]" if v else "not timed"
+    verdict_text = "faster in every run" if faster else "a tie within the scatter" if tie else "slower"
+    out = row("test5", "Havok faster; plates pushed out of the column until modified",
+              f"engine's own calls {spread(h)} ms per step: {verdict_text}; whole run CPU {spread(hw)} ms per step "
+              f"(Node.js included); largest plate offset {offset:.2g} m",
+              f"engine's own calls {spread(o)} ms per step; whole run CPU {spread(ow)} ms per step ({plates} plates, "
+              "simple space)",
               faster and offset > PUSHED_OUT_M,
-              f"the runs' ranges {'overlap' if min(h) < max(o) and min(o) < max(h) else 'are apart'}; "
+              f"the runs' ranges {'overlap' if h and o and min(h) < max(o) and min(o) < max(h) else 'are apart'}; "
               f"no plate left the column by more than {PUSHED_OUT_M:g} m",
-              f"reproduced when every Havok run costs less CPU per step than every ODE run and a plate is pushed "
-              f"out more than {PUSHED_OUT_M:g} m", f"test5 --engine havok --plates {plates} (timed)")
+              f"reproduced when in every run Havok's own collision and step calls cost less per step than ODE's "
+              f"(the same definition for both: {costs.DEFINITIONS[costs.ENGINE]}) and a plate is pushed out more "
+              f"than {PUSHED_OUT_M:g} m", f"test5 --engine havok --plates {plates} (timed)")
     if faster and offset <= PUSHED_OUT_M:
         out["verdict"] = "partly"
     return out
