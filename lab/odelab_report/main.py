@@ -39,9 +39,10 @@ def parse_args(argv):
     parser.add_argument("--jobs", type=int, default=None, metavar="N",
                         help="programs run at once (default: what the executor offers: all cores here, "
                              "the workers' threads with dask, the allocation's CPUs with srun)")
-    parser.add_argument("--out", type=Path, default=REPO_ROOT / "doc" / "results", metavar="DIR",
+    parser.add_argument("--out", type=Path, default=None, metavar="DIR",
                         help="where the report goes: a new or empty folder, or one holding a previous "
-                             "report, replaced as a whole when the run succeeds (default: doc/results/)")
+                             "report, replaced as a whole when the run succeeds (default: doc/results/, with --atlas "
+                             "doc/atlas-report/)")
     parser.add_argument("--only", action="append", default=[], metavar="EXPERIMENT",
                         help="run only these experiments or groups (repeatable, or a comma list)")
     parser.add_argument("--build-dir", type=Path, default=REPO_ROOT / "build" / "tests", metavar="DIR",
@@ -53,6 +54,12 @@ def parse_args(argv):
                         help="the lab on your own world file (doc/world-format.md) instead of the thesis scenes: "
                              "step, solver, iterations, ERP and CFM swept on ODE, the step's stability limit, "
                              "every engine at its defaults and best (doc/lab.md, \"Your own world\")")
+    parser.add_argument("--atlas", type=Path, nargs="?", const=REPO_ROOT / "doc" / "atlas", default=None,
+                        metavar="DIR",
+                        help="the accuracy atlas instead of the thesis scenes: every case of DIR (default "
+                             "doc/atlas/, listed with its family in DIR/families.csv) on every engine at its "
+                             "defaults and best, at steps 1/60, 1/240 and 1/1000 s (--quick: 1/240, one timed "
+                             "run); writes ATLAS.md (default --out doc/atlas-report/; doc/atlas.md)")
     parser.add_argument("--executor", default="local", metavar="local|dask:ADDRESS|srun",
                         help="where the programs run: child processes here (default), tasks on the Dask "
                              "scheduler at ADDRESS (its port 1 to 65535), or srun steps of the Slurm allocation "
@@ -65,6 +72,11 @@ def parse_args(argv):
         executors.parse(args.executor)
     except ValueError as error:
         parser.error(f"--executor: {error}")
+    if args.atlas is not None and (args.world is not None or args.only or args.second_build):
+        parser.error("--atlas runs its own grid: it takes no "
+                     + ("--world" if args.world is not None else "--only" if args.only else "--second-build"))
+    if args.out is None:
+        args.out = REPO_ROOT / "doc" / ("atlas-report" if args.atlas is not None else "results")
     if args.world is not None and (args.only or args.second_build):
         parser.error(f"--world runs its own sweep: it takes no {'--only' if args.only else '--second-build'}")
     names = [n.strip() for item in args.only for n in item.split(",") if n.strip()]
@@ -83,6 +95,11 @@ def parse_args(argv):
         output_folder.check(args.out.absolute())
     except output_folder.Refused as error:
         parser.error(f"--out: {error}")
+    if args.atlas is not None:
+        atlas, out = args.atlas.resolve(), args.out.resolve()
+        if atlas == out or out in atlas.parents or atlas in out.parents:
+            parser.error(f"--atlas: the cases in {args.atlas} and --out {args.out} must not hold one another: the "
+                         f"report replaces --out as a whole")
     if args.world is not None:
         # The report replaces --out as a whole: a world file inside it would
         # be gone before the report that read it is written.
@@ -158,7 +175,13 @@ def _main(argv, stop):
                          f"{' '.join(p for _, p in missing)} (scripts/odelab.sh installs them)\n")
         return 3
     build_dir = args.build_dir.resolve()
-    if args.world is not None:  # lab/odelab_report/world_report.py: odelab, and the world it must read
+    if args.atlas is not None:  # lab/odelab_report/atlas_report.py: odelab, and every case it must read
+        from . import atlas_report
+        status = atlas_report.prepare(args, build_dir)
+        if status:
+            return status
+        programs = [build_dir / "odelab"]
+    elif args.world is not None:  # lab/odelab_report/world_report.py: odelab, and the world it must read
         from . import world_report
         status = world_report.prepare(args, build_dir)
         if status:
@@ -281,7 +304,9 @@ def _run_and_write(args, argv, stop, staging, runs_dir, out, header, jobs, execu
         _report_failures(failures)
         sys.stderr.write(f"odelab-report: nothing written to {out}; the runs are kept in {runs_dir}\n")
         return 1
-    if args.world is not None:
+    if args.atlas is not None:
+        from .atlas_report import write_atlas_report as write_report
+    elif args.world is not None:
         from .world_report import write_world_report as write_report
     elapsed = write_report(args, argv, staging, header, runner, progress, outcomes, jobs, executor.timing_host)
     if stop.is_set():

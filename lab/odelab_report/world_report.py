@@ -32,14 +32,21 @@ def heading(title, file_name):
     second heading, row or element) and its file's name."""
     return f"# ODE Lab: the world {md.text(title or file_name)} ({md.text(file_name)})"
 
+def odelab_missing(build_dir):
+    """True, with the message said, when build_dir holds no odelab to run."""
+    odelab = build_dir / "odelab"
+    if odelab.is_file() and os.access(odelab, os.X_OK):
+        return False
+    sys.stderr.write(f"odelab-report: error: no odelab in {build_dir} (--world and --atlas run it). Build the "
+                     f"programs first, e.g. `cmake -S . -B build && cmake --build build -j`, or point --build-dir "
+                     f"at the folder that holds them.\n")
+    return True
+
+
 def prepare(args, build_dir):
     """0, or the status to end with: 3 without odelab, 2 when odelab refuses
     the world (its message said first). Sets args.experiments."""
-    odelab = build_dir / "odelab"
-    if not (odelab.is_file() and os.access(odelab, os.X_OK)):
-        sys.stderr.write(f"odelab-report: error: no odelab in {build_dir} (--world runs it). Build the programs "
-                         f"first, e.g. `cmake -S . -B build && cmake --build build -j`, or point --build-dir at "
-                         f"the folder that holds them.\n")
+    if odelab_missing(build_dir):
         return 3
     world = args.world.resolve()
     message = check_world(build_dir, world)
