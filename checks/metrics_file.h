@@ -18,9 +18,10 @@
 namespace checks {
 
 // Throws std::runtime_error naming the file on a missing file, malformed
-// JSON, or a value that is neither a number nor a list of strings. null is a
-// non-finite value: the writer has no other way to say NaN or infinity in
-// JSON. A list of strings is kept as texts (no bound can be set on it).
+// JSON, or a value that is neither a number nor a list of strings. null is
+// a metric not measured; the strings "nan", "inf" and "-inf" a measured
+// value that is not finite (utils/Metrics.h, the writer's one rule). A list
+// of strings is kept as texts (no bound can be set on it).
 inline odelab::Metrics readMetricsFile(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("metrics JSON " + path + ": cannot read it");
@@ -34,7 +35,12 @@ inline odelab::Metrics readMetricsFile(const std::string& path) {
   odelab::Metrics metrics;
   for (const auto& [name, value] : document.items()) {
     if (value.is_null())
+      metrics.setNotMeasured(name);
+    else if (value == "nan")
       metrics.set(name, std::numeric_limits<double>::quiet_NaN());
+    else if (value == "inf" || value == "-inf")
+      metrics.set(name, value == "inf" ? std::numeric_limits<double>::infinity()
+                                       : -std::numeric_limits<double>::infinity());
     else if (value.is_number())
       metrics.set(name, value.get<double>());
     else if (value.is_array() && std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_string(); }))

@@ -120,7 +120,7 @@ Metrics followerMetrics(const AbstractWindow& scene, const CompareLanes::Lane& l
     if (name == "wall_seconds") m.set(name, lane.steppingSeconds);
     else if (name == "real_time_factor")
       m.set(name, lane.steppingSeconds > 0 ? scene.run().simulatedTime() / lane.steppingSeconds : 0.0);
-    else m.set(name, value);
+    else m.setAs(name, own, name);
   }
   for (const auto& [name, texts] : own.texts()) m.setTexts(name, texts);
   return m;

@@ -12,12 +12,35 @@
 
 namespace odelab {
 
-void Metrics::set(const std::string& name, double value) {
+size_t Metrics::entry(const std::string& name, double value) {
   const auto [found, added] = index_.emplace(name, entries_.size());
-  if (added)
+  if (added) {
     entries_.emplace_back(name, value);
-  else
+    notMeasured_.push_back(false);
+  } else {
     entries_[found->second].second = value;
+  }
+  return found->second;
+}
+
+void Metrics::set(const std::string& name, double value) { notMeasured_[entry(name, value)] = false; }
+
+void Metrics::setNotMeasured(const std::string& name) {
+  notMeasured_[entry(name, std::numeric_limits<double>::quiet_NaN())] = true;
+}
+
+void Metrics::set(const std::string& name, double value, bool measured) {
+  if (measured)
+    set(name, value);
+  else
+    setNotMeasured(name);
+}
+
+void Metrics::setAs(const std::string& name, const Metrics& from, const std::string& fromName) {
+  if (from.has(fromName) && !from.measured(fromName))
+    setNotMeasured(name);
+  else
+    set(name, from.get(fromName));
 }
 
 void Metrics::setTexts(const std::string& name, std::vector<std::string> texts) {
@@ -30,6 +53,11 @@ void Metrics::setTexts(const std::string& name, std::vector<std::string> texts) 
 }
 
 bool Metrics::has(const std::string& name) const { return index_.count(name) != 0; }
+
+bool Metrics::measured(const std::string& name) const {
+  const auto found = index_.find(name);
+  return found != index_.end() && !notMeasured_[found->second];
+}
 
 double Metrics::get(const std::string& name) const {
   const auto found = index_.find(name);
@@ -45,8 +73,15 @@ namespace {
 // "sim_seconds": 2). So the numbers are not nlohmann's: its writer gives
 // every digit, and for about 1 number in 1000 (Grisu2) 17 digits where 10
 // would do (2.538528487 as 2.5385284869999998).
+// The one spelling of each value that is not a finite number, measured: in
+// the "name = value" lines as it is, in JSON as a string of it. A metric
+// not measured is NOT_MEASURED_TEXT in the lines and null in JSON.
+const char* const NOT_MEASURED_TEXT = "not measured";
+const char* const NOT_MEASURED_JSON = "null";
+const char* nonFiniteText(double value) { return std::isnan(value) ? "nan" : value > 0 ? "inf" : "-inf"; }
+
 std::string formatNumber(double value) {
-  if (!std::isfinite(value)) return "null";
+  if (!std::isfinite(value)) return nonFiniteText(value);
   std::ostringstream out;
   if (value == std::floor(value) && std::fabs(value) < 18446744073709551616.0)
     out << std::fixed << std::setprecision(0) << value;
@@ -56,8 +91,21 @@ std::string formatNumber(double value) {
 }
 
 // In JSON, -0.0 as "-0.0": nlohmann and Python read "-0" as the integer 0,
-// which loses the sign. NaN and infinities, which JSON lacks, are null.
-std::string jsonNumber(double value) { return value == 0 && std::signbit(value) ? "-0.0" : formatNumber(value); }
+// which loses the sign. NaN and infinities, which JSON lacks, as strings
+// ("nan", "inf", "-inf"): never null, which says "not measured".
+std::string jsonNumber(double value) {
+  if (!std::isfinite(value)) return std::string("\"") + nonFiniteText(value) + "\"";
+  return value == 0 && std::signbit(value) ? "-0.0" : formatNumber(value);
+}
+
+// A JSON string a measured value that is not finite was written as.
+bool nonFiniteFromText(const std::string& text, double& value) {
+  if (text == "nan") value = std::numeric_limits<double>::quiet_NaN();
+  else if (text == "inf") value = std::numeric_limits<double>::infinity();
+  else if (text == "-inf") value = -std::numeric_limits<double>::infinity();
+  else return false;
+  return true;
+}
 
 // Reads the one flat object straight into Metrics, whose index keeps
 // 100,000 names fast; a document parsed whole into ordered_json would look
@@ -67,13 +115,18 @@ class FlatObjectReader : public nlohmann::json_sax<nlohmann::json> {
  public:
   explicit FlatObjectReader(Metrics& metrics) : metrics_(metrics) {}
 
-  bool null() override { return opened_ ? metric(std::numeric_limits<double>::quiet_NaN()) : refuse("null"); }
+  bool null() override {
+    if (!opened_ || inArray_) return refuse("null");
+    metrics_.setNotMeasured(name_);
+    return true;
+  }
   bool number_integer(number_integer_t number) override { return metric(static_cast<double>(number)); }
   bool number_unsigned(number_unsigned_t number) override { return metric(static_cast<double>(number)); }
   bool number_float(number_float_t number, const string_t&) override { return metric(number); }
   bool boolean(bool) override { return refuse("a boolean"); }
   bool string(string_t& text) override {
-    if (!inArray_) return refuse("a string");
+    double nonFinite = 0.0;
+    if (!inArray_) return nonFiniteFromText(text, nonFinite) ? metric(nonFinite) : refuse("a string");
     texts_.push_back(text);
     return true;
   }
@@ -117,7 +170,8 @@ class FlatObjectReader : public nlohmann::json_sax<nlohmann::json> {
   }
   [[noreturn]] bool refuse(const char* found) {
     if (!opened_) throw std::runtime_error(std::string("metrics JSON: expected an object, found ") + found);
-    throw std::runtime_error("metrics JSON: \"" + name_ + "\" is " + found + ", not a number, null or list of strings");
+    throw std::runtime_error("metrics JSON: \"" + name_ + "\" is " + found +
+                             ", not a number, null, \"nan\", \"inf\", \"-inf\" or list of strings");
   }
 
   Metrics& metrics_;
@@ -129,7 +183,9 @@ class FlatObjectReader : public nlohmann::json_sax<nlohmann::json> {
 }  // namespace
 
 void Metrics::print(std::ostream& out) const {
-  for (const auto& [name, value] : entries_) out << name << " = " << formatNumber(value) << '\n';
+  for (size_t i = 0; i < entries_.size(); ++i)
+    out << entries_[i].first << " = " << (notMeasured_[i] ? NOT_MEASURED_TEXT : formatNumber(entries_[i].second))
+        << '\n';
   for (const auto& [name, texts] : texts_)
     for (const std::string& text : texts) out << name << ": " << text << '\n';
 }
@@ -142,7 +198,7 @@ std::string Metrics::toJson() const {
   for (size_t i = 0; i < entries_.size(); ++i) {
     const std::string name =
         nlohmann::json(entries_[i].first).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-    json += (i ? ",\n  " : "\n  ") + name + ": " + jsonNumber(entries_[i].second);
+    json += (i ? ",\n  " : "\n  ") + name + ": " + (notMeasured_[i] ? NOT_MEASURED_JSON : jsonNumber(entries_[i].second));
   }
   for (size_t i = 0; i < texts_.size(); ++i) {
     const nlohmann::json name(texts_[i].first), list(texts_[i].second);

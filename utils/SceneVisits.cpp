@@ -3,7 +3,7 @@
 namespace odelab {
 
 void addPrefixed(Metrics& into, const std::string& prefix, const Metrics& from) {
-  for (const auto& [metric, value] : from.entries()) into.set(prefix + metric, value);
+  for (const auto& entry : from.entries()) into.setAs(prefix + entry.first, from, entry.first);
   for (const auto& [name, texts] : from.texts()) into.setTexts(prefix + name, texts);
 }
 

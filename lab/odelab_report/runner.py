@@ -93,9 +93,11 @@ class RunResult:
 
     def m(self, name, default=None):
         """A metric as the program wrote it: a number, or a list (of strings,
-        e.g. "engine" or "translation_notes"), or `default` when absent or null."""
+        e.g. "engine" or "translation_notes"), or `default` when absent, not
+        measured (null) or measured but not finite ("nan", "inf", "-inf":
+        never a number; check() refuses a run that gives one as a result)."""
         value = self.metrics.get(name)
-        return default if value is None else value
+        return default if value is None or is_non_finite_metric(value) else value
 
     def texts(self, name):
         """A metric that lists texts (e.g. "translation_notes"), as a list of
@@ -451,15 +453,30 @@ def _is_number(value):
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
+# The programs' one rule for values that are not finite numbers
+# (utils/Metrics.h, doc/manual.md "Outputs"): a metric
+# not measured is null (None here) and nothing else is; a measured NaN or
+# infinity is one of these strings, never a number and never null.
+NON_FINITE_METRIC_TEXTS = ("nan", "inf", "-inf")
+
+
+def is_non_finite_metric(value):
+    """True for a measured value that is not finite, as the programs write
+    it (a string of NON_FINITE_METRIC_TEXTS) or as a float."""
+    return (isinstance(value, str) and value in NON_FINITE_METRIC_TEXTS) or (
+        isinstance(value, float) and not math.isfinite(value))
+
+
 def non_finite_metrics(metrics, prefix=""):
-    """The names of the metrics (nested ones as a.b, a[0]) that are NaN or infinite."""
+    """The names of the metrics (nested ones as a.b, a[0]) that were
+    measured NaN or infinite; a metric not measured (null) is not one."""
     bad = []
     items = metrics.items() if isinstance(metrics, dict) else enumerate(metrics)
     for name, value in items:
         label = f"{prefix}.{name}" if isinstance(metrics, dict) and prefix else (
             f"{prefix}[{name}]" if not isinstance(metrics, dict) else str(name))
-        if isinstance(value, float) and not math.isfinite(value):
-            bad.append(f"{label} = {value!r}")
+        if is_non_finite_metric(value):
+            bad.append(f"{label} = {value if isinstance(value, str) else repr(value)}")
         elif isinstance(value, (dict, list)):
             bad.extend(non_finite_metrics(value, label))
     return bad

@@ -136,8 +136,9 @@ class JumpingBalls : public AbstractWindow {
   void addMetrics(Metrics& m) const override {
     m.set("bounce_velocity", bounceVelocity_);
     const BallRecord* worst = worstBall();
-    m.set("max_rebound_error", worst ? worst->error() : NaN);
-    m.set("worst_ball", worst ? static_cast<double>(worst - balls_.data()) : NaN);
+    // Not measured until a ball has rebounded.
+    m.set("max_rebound_error", worst ? worst->error() : NaN, worst != nullptr);
+    m.set("worst_ball", worst ? static_cast<double>(worst - balls_.data()) : NaN, worst != nullptr);
     m.set("balls_measured", measuredCount());
     m.set("balls_bounced", static_cast<double>(std::count_if(
                                balls_.begin(), balls_.end(), [](const BallRecord& b) { return b.tracker.count() > 0; })));

@@ -188,9 +188,11 @@ class Pendulum : public PendulumScene {
     m.set("energy_min_J", minEnergy_);
     m.set("energy_max_J", maxEnergy_);
     m.set("energy_last_J", lastEnergy_);
-    m.set("period_seconds", swingTimer_.period());
+    // Not measured before a whole period (three crossings).
+    const bool periodMeasured = swingTimer_.crossings() >= 3;
+    m.set("period_seconds", swingTimer_.period(), periodMeasured);
     m.set("period_exact_seconds", exactPeriod_);
-    m.set("period_error", periodError());
+    m.set("period_error", periodError(), periodMeasured);
     m.set("output_rows", static_cast<double>(log_.rows()));
     m.set("rotational_energy_included", withoutRotation_ ? 0 : 1);
     // The spin about the centre of mass at its largest (the bottom of the

@@ -110,12 +110,15 @@ class RestitutionAccuracy : public AbstractWindow {
 
   void addMetrics(Metrics& m) const override {
     m.set("bounce_velocity", bounceVelocity_);
-    for (int bounces : REPORTED_BOUNCES) m.set("apex_error_" + std::to_string(bounces), errorAfter(bounces));
+    // An apex not reached in the run is not measured.
+    for (int bounces : REPORTED_BOUNCES)
+      m.set("apex_error_" + std::to_string(bounces), errorAfter(bounces),
+            bounces <= static_cast<int>(relativeErrors_.size()));
     // Every apex, for the lab (the printed lines carry six decimals only).
     for (size_t i = 0; i < relativeErrors_.size(); ++i) m.set("apex_error_" + std::to_string(i + 1), relativeErrors_[i]);
     m.set("max_horizontal_drift", maxHorizontalDrift_);
     m.set("bounces", tracker_.count());
-    m.set("last_apex_error", lastRelativeError());
+    m.set("last_apex_error", lastRelativeError(), !relativeErrors_.empty());
     // The scene as built, for the lab and the peer engines' constants check.
     m.set("start_height_m", START_HEIGHT);
     m.set("ball_radius_m", BALL_RADIUS);

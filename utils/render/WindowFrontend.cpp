@@ -14,6 +14,7 @@
 #include "../ExitCodes.h"
 #include "../MeasurementLog.h"
 #include "../StopSignal.h"
+#include "../StreamedFile.h"
 #include "../ResourcePaths.h"
 #include "CompareViews.h"
 #include "ControlPanel.h"
@@ -540,12 +541,19 @@ namespace {
 // Built only once the window can run, so that a refused window run (no
 // display, unusable shaders or font) leaves no output file behind; a runner
 // that built them already is fine too. Each other engine's scene with its
-// own options (its engine, its folder).
+// own options (its engine, its folder). Every scene is built under one hold
+// on the streamed outputs, released only once the last engine has built its
+// scene: an engine that refuses (its process dies, it cannot build the
+// scene) leaves every engine's files as the previous run left them, as in
+// the headless compare run (CompareRun::run). Each scene's own hold nests
+// in this one.
 void initializeScenes(AbstractWindow& scene, const RunOptions& options, const CompareLanes* lanes) {
+  StreamedFile::Hold outputsHeld;
   if (!scene.run().world()) scene.initialize(options);
-  if (!lanes) return;
-  for (const CompareLanes::Lane& lane : lanes->lanes())
-    if (!lane.scene->run().world()) lane.scene->initialize(lane.scene->options());
+  if (lanes)
+    for (const CompareLanes::Lane& lane : lanes->lanes())
+      if (!lane.scene->run().world()) lane.scene->initialize(lane.scene->options());
+  outputsHeld.release();
 }
 
 int runWindowWith(AbstractWindow& first, const RunOptions& options,

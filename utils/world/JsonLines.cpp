@@ -1,31 +1,42 @@
 #include "JsonLines.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string_view>
 #include <vector>
 
 namespace odelab::world {
 
 namespace {
 
-// "bodies[1].position" as its steps: "bodies", "[1]", "position".
-std::vector<std::string> pathSteps(const std::string& path) {
-  std::vector<std::string> steps;
-  std::string key;
+// One step of a path: an object's key (as written, escapes and all) or an
+// array's index. A view into the text or the path: the walk copies no key
+// (a copy per key and a "[i]" per item were a third of reading a large world).
+struct Step {
+  std::string_view key;
+  long index = -1;  // >= 0: an array's item
+  bool operator==(const Step& other) const { return index == other.index && key == other.key; }
+  std::string text() const { return index < 0 ? std::string(key) : "[" + std::to_string(index) + "]"; }
+};
+
+// "bodies[1].position" as its steps: "bodies", [1], "position".
+std::vector<Step> pathSteps(const std::string& path) {
+  std::vector<Step> steps;
+  std::size_t key = 0;  // where the key being read starts
   for (std::size_t i = 0; i < path.size(); ++i) {
     if (path[i] == '.' || path[i] == '[') {
-      if (!key.empty()) steps.push_back(key);
-      key.clear();
+      if (i > key) steps.push_back({std::string_view(path).substr(key, i - key)});
+      key = i + 1;
       if (path[i] == '[') {
         const std::size_t close = path.find(']', i);
-        if (close == std::string::npos) break;
-        steps.push_back(path.substr(i, close - i + 1));
+        if (close == std::string::npos) return steps;
+        steps.push_back({{}, std::strtol(path.c_str() + i + 1, nullptr, 10)});
         i = close;
+        key = i + 1;
       }
-    } else {
-      key += path[i];
     }
   }
-  if (!key.empty()) steps.push_back(key);
+  if (path.size() > key) steps.push_back({std::string_view(path).substr(key)});
   return steps;
 }
 
@@ -33,7 +44,7 @@ std::vector<std::string> pathSteps(const std::string& path) {
 // its shape stops making sense, and nlohmann's own message is then the one said.
 class Walker {
  public:
-  Walker(const std::string& text, std::vector<std::string> wanted)
+  Walker(const std::string& text, std::vector<Step> wanted)
       : text_(text), wanted_(std::move(wanted)), lines_(wanted_.size() + 1, 0) {}
 
   void walk() {
@@ -62,7 +73,7 @@ class Walker {
     }
   }
 
-  std::string string() {  // at the opening quote; returns the raw contents (escapes as written)
+  std::string_view string() {  // at the opening quote; returns the raw contents (escapes as written)
     const std::size_t start = ++at_;
     while (!atEnd() && text_[at_] != '"') {
       if (text_[at_] == '\n') ++line_;
@@ -70,16 +81,16 @@ class Walker {
     }
     const std::size_t end = std::min(at_, text_.size());
     ++at_;
-    return text_.substr(start, end - start);
+    return std::string_view(text_).substr(start, end - start);
   }
 
-  std::string pathText(const std::string& last) const {
+  std::string pathText(const Step& last) const {
     std::string path;
-    for (const std::string& step : steps_) path += (path.empty() || step[0] == '[' ? "" : ".") + step;
-    return path + (path.empty() || last[0] == '[' ? "" : ".") + last;
+    for (const Step& step : steps_) path += (path.empty() || step.index >= 0 ? "" : ".") + step.text();
+    return path + (path.empty() || last.index >= 0 ? "" : ".") + last.text();
   }
 
-  void push(const std::string& step) {
+  void push(const Step& step) {
     if (matched_ == steps_.size() && matched_ < wanted_.size() && wanted_[matched_] == step) ++matched_;
     steps_.push_back(step);
   }
@@ -110,10 +121,10 @@ class Walker {
     const char close = open == '{' ? '}' : ']';
     ++at_;
     ++depth_;
-    // The object's keys with their lines, sorted at its end to find one given twice
-    // (a few keys an object: no hash set's allocation per key).
-    std::vector<std::pair<std::string, int>> keys;
-    int index = 0;
+    // The object's keys with their lines, on one stack shared by every open
+    // object (no allocation per object), sorted at its end to find one given twice.
+    const std::size_t firstKey = keys_.size();
+    long index = 0;
     skipSpace();
     if (!atEnd() && text_[at_] == close) {
       ++at_;
@@ -122,23 +133,23 @@ class Walker {
     }
     struct Closing {  // on every way out: the keys looked at while steps_ is still this object's path
       Walker& walker;
-      std::vector<std::pair<std::string, int>>& keys;
-      ~Closing() { walker.duplicates(keys); }
-    } closing{*this, keys};
+      std::size_t firstKey;
+      ~Closing() { walker.duplicates(firstKey); }
+    } closing{*this, firstKey};
     while (!stopped_) {
       const std::size_t start = at_;
-      std::string step;
+      Step step;
       if (open == '{') {
         if (atEnd() || text_[at_] != '"') return stop();
         const int keyLine = line_;
-        step = string();
-        keys.emplace_back(step, keyLine);
+        step.key = string();
+        keys_.emplace_back(step.key, keyLine);
         skipSpace();
         if (atEnd() || text_[at_] != ':') return stop();
         ++at_;
         skipSpace();
       } else {
-        step = "[" + std::to_string(index++) + "]";
+        step.index = index++;
       }
       push(step);
       value();
@@ -163,15 +174,19 @@ class Walker {
     }
   }
 
-  void duplicates(std::vector<std::pair<std::string, int>>& keys) {
-    if (keys.size() < 2 || shape_.duplicateLine) return;
-    std::sort(keys.begin(), keys.end());
-    for (std::size_t i = 1; i < keys.size(); ++i)
-      if (keys[i].first == keys[i - 1].first) {
-        shape_.duplicateLine = keys[i].second;  // the second time it is given
-        shape_.duplicatePath = pathText(keys[i].first);
-        return;
-      }
+  // The keys of the object that ends, keys_ from `first` on, are looked at and let go.
+  void duplicates(std::size_t first) {
+    const auto begin = keys_.begin() + static_cast<std::ptrdiff_t>(first);
+    if (keys_.size() - first >= 2 && !shape_.duplicateLine) {
+      std::sort(begin, keys_.end());
+      for (auto key = begin + 1; key != keys_.end(); ++key)
+        if (key->first == (key - 1)->first) {
+          shape_.duplicateLine = key->second;  // the second time it is given
+          shape_.duplicatePath = pathText({key->first});
+          break;
+        }
+    }
+    keys_.erase(begin, keys_.end());
   }
 
   // The value from `start` to `end`, as a person would quote it: its first line, cut short.
@@ -188,9 +203,10 @@ class Walker {
   void stop() { stopped_ = true; }
 
   const std::string& text_;
-  const std::vector<std::string> wanted_;
+  const std::vector<Step> wanted_;
   std::vector<int> lines_;  // per length k of the wanted path's prefix found: its line
-  std::vector<std::string> steps_;
+  std::vector<Step> steps_;
+  std::vector<std::pair<std::string_view, int>> keys_;  // the open objects' keys and their lines
   std::size_t matched_ = 0;  // how many of steps_ agree with wanted_
   std::size_t at_ = 0;
   int line_ = 1;
@@ -208,7 +224,7 @@ JsonShape scanJsonShape(const std::string& text) {
 }
 
 int lineOfPath(const std::string& text, const std::string& path) {
-  Walker walker(text, pathSteps(path));
+  Walker walker(text, pathSteps(path));  // its steps view `path`, which outlives the walk
   walker.walk();
   return walker.wantedLine();
 }

@@ -6,6 +6,8 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -86,8 +88,8 @@ class Reader {
     for (const auto& item : object_.items())
       if (!used(item.key())) {
         std::string meant;
-        for (const char* field : used_)
-          if (nearly(item.key(), field)) meant = ": did you mean \"" + std::string(field) + "\"?";
+        for (const std::string_view field : used_)
+          if (nearly(item.key(), std::string(field))) meant = ": did you mean \"" + std::string(field) + "\"?";
         fail(path_ + "." + item.key(), "is not a field of this format (doc/world-format.md lists them)" + meant);
       }
   }
@@ -202,13 +204,15 @@ class Reader {
 
   const json& object_;
   std::string path_;
-  // The fields asked for (a dozen at most: a list searched beats a set's allocations).
-  bool used(const std::string& key) const {
-    for (const char* field : used_)
+  // The fields asked for (a dozen at most: a list searched beats a set's
+  // allocations), with their lengths: comparing with a bare char pointer
+  // measured its length each time, for every field of every object.
+  bool used(std::string_view key) const {
+    for (const std::string_view field : used_)
       if (key == field) return true;
     return false;
   }
-  std::vector<const char*> used_;
+  std::vector<std::string_view> used_;
 };
 
 Quat unitQuat(Reader& r, const char* key) {
@@ -220,11 +224,11 @@ Quat unitQuat(Reader& r, const char* key) {
 
 template <class Kind>
 Kind named(const std::map<Kind, const char*>& names, const std::string& word, const std::string& where) {
-  std::string known;
-  for (const auto& [kind, name] : names) {
+  for (const auto& [kind, name] : names)
     if (word == name) return kind;
-    known += (known.empty() ? "" : ", ") + std::string(name);
-  }
+  // The list of names spelt out only for the message (once per geom, it was a string built each time).
+  std::string known;
+  for (const auto& [kind, name] : names) known += (known.empty() ? "" : ", ") + std::string(name);
   Reader::fail(where, "\"" + word + "\" is not one of " + known);
 }
 
@@ -549,10 +553,13 @@ World worldFromParsed(const json& root) {
   const json* settings = r.object("settings");
   if (!settings) Reader::fail(r.at("settings"), "is missing");
   w.settings = readSettings(*settings);
-  if (const json* bodies = r.list("bodies", false))
+  if (const json* bodies = r.list("bodies", false)) {
+    w.bodies.reserve(bodies->size());
     for (size_t i = 0; i < bodies->size(); ++i) w.bodies.push_back(readBody((*bodies)[i], "bodies[" + std::to_string(i) + "]"));
+  }
   const int bodyCount = static_cast<int>(w.bodies.size());
   const json* geoms = r.list("geoms", true);
+  w.geoms.reserve(geoms->size());
   for (size_t i = 0; i < geoms->size(); ++i)
     w.geoms.push_back(readGeom((*geoms)[i], "geoms[" + std::to_string(i) + "]", bodyCount));
   if (const json* joints = r.list("joints", false))

@@ -233,11 +233,15 @@ void WorldMeasures::addMetrics(Metrics& m) const {
         break;
       case MeasureKind::Ballistic: m.set(measure.name + "_error_max_m", ballisticError_[i]); break;
       case MeasureKind::Period:
-        m.set(measure.name + "_period_s", swings_[i].period());
+        // Not measured before a whole period (three crossings).
+        m.set(measure.name + "_period_s", swings_[i].period(), swings_[i].count >= 3);
         m.set(measure.name + "_period_expected_s", measure.expected);
-        m.set(measure.name + "_period_error", (swings_[i].period() - measure.expected) / measure.expected);
+        m.set(measure.name + "_period_error", (swings_[i].period() - measure.expected) / measure.expected,
+              swings_[i].count >= 3);
         break;
-      case MeasureKind::Rest: m.set("time_to_rest_s", timeToRest_); break;
+      case MeasureKind::Rest:  // not measured until the bodies have rested for the measure's hold
+        m.set("time_to_rest_s", timeToRest_, !std::isnan(timeToRest_));
+        break;
     }
   }
 }
