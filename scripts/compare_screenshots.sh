@@ -4,24 +4,28 @@
 # other engines, at 1280x720 and 1024x768, and test5 merged (M: the others
 # as outlines over ODE's stack) at 1280x720. Each is the run's last frame
 # (--screenshot with --seconds). Files: OUT_DIR/compare_<program>_<size>.png
-# and compare_test5_1280x720_merged.png; and test2 (the pendulum) on all six
-# engines, one view each and merged, running and paused, at both sizes with
+# and compare_test5_1280x720_merged.png; test2 (the pendulum) on every
+# engine, one view each and merged, running and paused, at both sizes with
 # the compact HUD and the panel open: compare_test2_<size>_{views,merged}_
-# {running,paused}.png, each frame 20 (--frames). Reduced to 256 colours with
+# {running,paused}.png, each frame 20 (--frames), and its help (H) over it,
+# compare_test2_<size>_help.png; and a world file on every engine, one view
+# each, its bodies edged in each engine's colour:
+# compare_world_tumbling_brick_1280x720.png. Reduced to 256 colours with
 # pngquant where it is installed.
 #
 #   scripts/compare_screenshots.sh [OUT_DIR]   (default: doc/screenshots)
 #
 # Environment: BUILD_DIR (default: build), ENGINES (default: bullet,havok,jolt;
-# Havok's thesis comparison beside two others), ALL_ENGINES (test2's six:
-# default bullet,mujoco,havok,jolt,rapier), PICTURES (all, or test2 for
+# Havok's thesis comparison beside two others), ALL_ENGINES (test2's and the
+# world's: default every engine the build names, from test2 --list-engines), PICTURES (all, or test2 for
 # test2's alone). Needs xvfb-run and the
 # engines named (testN --list-engines).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$root/build}
 engines=${ENGINES:-bullet,havok,jolt}
-all_engines=${ALL_ENGINES:-bullet,mujoco,havok,jolt,rapier}
+# Every engine but ODE (which leads every compare run), in --list-engines' order.
+all_engines=${ALL_ENGINES:-$("$build_dir/tests/test2" --list-engines | awk -F: '/^[a-z]/ && $1 != "ode" {print $1}' | paste -sd, -)}
 pictures=${PICTURES:-all}
 out=${1:-$root/doc/screenshots}
 mkdir -p "$out"
@@ -41,8 +45,8 @@ shot() {
   local name=$1 size=$2 program=$3
   shift 3
   local file=$out/$name.png
-  "$build_dir/tests/$program" --compare "$engines" --width "${size%x*}" --height "${size#*x}" --screenshot "$file" \
-    --out-dir "$work" "$@" >"$work/$name.log" 2>&1 || { echo "compare_screenshots: $name failed:" >&2; cat "$work/$name.log" >&2; exit 1; }
+  "$build_dir/tests/$program" "$@" --compare "$engines" --width "${size%x*}" --height "${size#*x}" --screenshot "$file" \
+    --out-dir "$work" >"$work/$name.log" 2>&1 || { echo "compare_screenshots: $name failed:" >&2; cat "$work/$name.log" >&2; exit 1; }
   if command -v pngquant >/dev/null; then pngquant --force --quality 60-90 --speed 3 --output "$file" "$file" || true; fi
   echo "$file"
 }
@@ -74,4 +78,14 @@ for size in 1280x720 1024x768; do
         --events "$work/${layout}_${state}.events"
     done
   done
+  # The help (H, a key tap) over the paused views and the open panel.
+  printf '15 key P\n16 key H\n' >"$work/help.events"
+  engines=$all_engines shot "compare_test2_${size}_help" "$size" test2 --frames 20 --events "$work/help.events"
 done
+
+# A world file on every engine (odelab --world): its brick in each view,
+# edged in the view's engine colour, paused mid-flip (frame 20).
+# (doc/worlds/projectile.json's ball is out of the window's start view at
+# these sizes, so its views would show the ground alone.)
+engines=$all_engines shot compare_world_tumbling_brick_1280x720 1280x720 odelab --world "$root/doc/worlds/tumbling_brick.json" \
+  --frames 20 --events "$work/views_paused.events"

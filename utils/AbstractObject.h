@@ -60,6 +60,9 @@ class AbstractObject {
 
   Color color{0.8f, 0.8f, 0.8f};
   bool visible = true;
+  // Drawn with its edges in the engine's colour (a world file's bodies: boxes
+  // stacked in one colour would otherwise read as one column).
+  bool edged = false;
 
   // Counts every change of which bodies exist or which body a geom rides on
   // (an object made or destroyed, fixed or attached), so that a per-step

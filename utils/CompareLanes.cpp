@@ -135,17 +135,21 @@ long long CompareLanes::stepsWithin(double seconds) const {
 }
 
 std::string CompareLanes::timingLine() const {
+  const TimeControl& time = lanes_.front().scene->session().time();
+  return timingLine(lanes_, !time.paused() && time.recentRealTimeFactor() < BEHIND);
+}
+
+std::string CompareLanes::timingLine(const std::vector<Lane>& lanes, bool behindRealTime) {
   // Items three spaces apart: the HUD wraps the line between them where it
-  // is too wide (six engines with the panel open at 1280x720).
+  // is too wide (seven engines with the panel open at 1024x768).
   std::string steps = "ms/step:";
-  const Lane* slowest = &lanes_.front();
-  for (const Lane& lane : lanes_) {
-    steps += (&lane == &lanes_.front() ? " " : "   ") + lane.engine + " " +
+  const Lane* slowest = &lanes.front();
+  for (const Lane& lane : lanes) {
+    steps += (&lane == &lanes.front() ? " " : "   ") + lane.engine + " " +
              (lane.failure.empty() ? millisecondsText(lane.msPerStep) : "stopped");
     if (lane.failure.empty() && lane.msPerStep > slowest->msPerStep) slowest = &lane;
   }
-  const TimeControl& time = lanes_.front().scene->session().time();
-  if (time.paused() || time.recentRealTimeFactor() >= BEHIND) return steps;
+  if (!behindRealTime) return steps;
   // First, so that a HUD row too narrow for every engine still names it.
   return "behind real time (slowest " + slowest->engine + ")   " + steps;
 }

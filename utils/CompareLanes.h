@@ -56,6 +56,9 @@ class CompareLanes {
   // The HUD's line: each engine's time per step and, when the window falls
   // behind real time, the engine that takes the longest.
   std::string timingLine() const;
+  // The same for `lanes` as given, and whether the window is behind real
+  // time (then the slowest engine is named first).
+  static std::string timingLine(const std::vector<Lane>& lanes, bool behindRealTime);
 
  private:
   void stop(Lane& lane, const std::string& why);

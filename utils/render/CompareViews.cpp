@@ -6,6 +6,8 @@
 #include "../Box.h"
 #include "../Cylindrical.h"
 #include "../Sphere.h"
+#include "EngineColours.h"
+#include "WindowLayout.h"
 
 namespace odelab {
 
@@ -20,31 +22,25 @@ const int CIRCLE_SEGMENTS = 24;
 const double APART_METRES = 0.005;
 const double APART_DEGREES = 1.0;
 
-// Each engine's colour, the same in every run and everywhere it is shown
-// (its outlines, its label's heading, its plot curve, the legend), keyed
-// by the engine and not by its place in --compare. ODE's is the plot's blue.
-struct Outline {
-  Rgba color;
-  const char* name;
-};
 // See-through, so that ODE's solid bodies show under where the others agree.
 const std::uint8_t OUTLINE_ALPHA = 110;
-struct EngineOutline {
-  const char* engine;
-  Outline outline;
-};
-const EngineOutline ENGINE_OUTLINES[] = {
-    {"bullet", {{255, 140, 30, OUTLINE_ALPHA}, "orange"}},  {"mujoco", {{120, 255, 90, OUTLINE_ALPHA}, "green"}},
-    {"havok", {{255, 60, 200, OUTLINE_ALPHA}, "magenta"}},  {"jolt", {{250, 240, 60, OUTLINE_ALPHA}, "yellow"}},
-    {"rapier", {{40, 220, 255, OUTLINE_ALPHA}, "cyan"}},   {"physx", {{255, 70, 70, OUTLINE_ALPHA}, "red"}},
-};
-// An engine the table does not know (a later one): white until it is given its own.
-const Outline OTHER_OUTLINE = {{240, 240, 240, OUTLINE_ALPHA}, "white"};
+// A body's own edges are drawn on its faces, so they may be nearly opaque.
+const std::uint8_t EDGE_ALPHA = 200;
 
-const Outline& outlineOf(const std::string& engine) {
-  for (const EngineOutline& e : ENGINE_OUTLINES)
-    if (engine == e.engine) return e.outline;
-  return OTHER_OUTLINE;
+// The engine's colour (EngineColours: one table for every view, curve and legend).
+Rgba colourOf(const std::string& engine, std::uint8_t alpha) {
+  const EngineColour& c = engineColour(engine);
+  return {c.r, c.g, c.b, alpha};
+}
+
+// `line` without a closing aside: "   (start 29.567 J)", the same for every
+// engine and in ODE's HUD line, or "   [4 notes]", which --list-engines and
+// the exit table give in full.
+std::string withoutAside(std::string line) {
+  if (line.empty() || (line.back() != ')' && line.back() != ']')) return line;
+  const size_t aside = line.rfind(line.back() == ')' ? "   (" : "   [");
+  if (aside != std::string::npos) line.erase(aside);
+  return line;
 }
 
 // The grid for `count` views: columns, rows.
@@ -182,27 +178,31 @@ void CompareViews::drawLabels(const CompareLanes& lanes, const std::vector<Rect>
       if (merged_) {
         // One line an engine, its colour, name and headline (the version,
         // setting and notes are the views' labels'), so that the legend
-        // stays low and short.
-        const std::string colour = lane > 0 ? outlineOf(all[lane].engine).name : "solid";
-        std::string headline = label.size() > 1 ? label[1] : "";
-        // A closing aside ("   (start 29.567 J)") is the same for every
-        // engine: left to the views' labels, so a line fits a narrow view.
-        const size_t aside = headline.rfind("   (");
-        if (aside != std::string::npos && headline.back() == ')') headline.erase(aside);
+        // stays low and short; without the aside, so a line fits a narrow view.
+        const std::string colour = lane > 0 ? engineColour(all[lane].engine).name : "solid";
+        const std::string headline = label.size() > 1 ? withoutAside(label[1]) : "";
         lines.push_back(colour + " " + all[lane].engine + (headline.empty() ? "" : ": " + headline));
         continue;
       }
-      label.front() = (lane > 0 ? std::string(outlineOf(all[lane].engine).name) : std::string("blue")) + ": " +
-                      label.front();
+      label.front() = std::string(engineColour(all[lane].engine).name) + ": " + label.front();
       lines.insert(lines.end(), label.begin(), label.end());
     }
     text.prepare(*labels_[i], lines, views[i].width - 2 * MARGIN);
-    // Merged, the legend sits at the view's bottom left, clear of the scene's
-    // subject (test2's pivot is near the top), a row above the window's
-    // notice line.
+    // A view a quarter of whose height the label would cover: the label
+    // without its asides, at the bottom.
+    const bool short_ = !merged_ && labels_[i]->height() * 4 > views[i].height;
+    if (short_) {
+      for (std::string& line : lines) line = withoutAside(line);
+      text.prepare(*labels_[i], lines, views[i].width - 2 * MARGIN);
+    }
+    // Merged (and short), the legend sits at the view's bottom left, clear
+    // of the scene's subject (test2's pivot is near the top); merged, a row
+    // above the window's notice line.
     const int row = labels_[i]->height() / static_cast<int>(std::max<size_t>(1, lines.size()));
-    const int y = merged_ ? std::max(views[i].y + MARGIN, views[i].y + views[i].height - MARGIN - labels_[i]->height() - 2 * row)
-                          : views[i].y + MARGIN;
+    const int above = merged_ ? 2 * row : 0;
+    const int y = merged_ || short_
+                      ? std::max(views[i].y + MARGIN, views[i].y + views[i].height - MARGIN - labels_[i]->height() - above)
+                      : views[i].y + MARGIN;
     text.drawAt(*labels_[i], views[i].x + MARGIN, y, windowWidth, windowHeight);
   }
   glDisable(GL_BLEND);
@@ -214,7 +214,7 @@ void CompareViews::drawOutlines(const CompareLanes& lanes, const glm::mat4& view
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
   for (size_t lane = 1; lane < all.size(); ++lane) {
     if (!all[lane].failure.empty() || !shown(lane)) continue;
-    const Rgba color = outlineOf(all[lane].engine).color;
+    const Rgba color = colourOf(all[lane].engine, OUTLINE_ALPHA);
     const auto& ode = all.front().scene->run().objects();
     const auto& theirs = all[lane].scene->run().objects();
     for (size_t i = 0; i < theirs.size(); ++i) {
@@ -224,6 +224,18 @@ void CompareViews::drawOutlines(const CompareLanes& lanes, const glm::mat4& view
       if (!matched || apart(ode[i]->getGeom(), object.getGeom())) outline(outlines_, object, color);
     }
   }
+  drawLines(viewProjection);
+}
+
+void CompareViews::drawEdges(const AbstractWindow& scene, const std::string& engine, const glm::mat4& viewProjection) {
+  outlines_.clear();
+  const Rgba color = colourOf(engine, EDGE_ALPHA);
+  for (const auto& object : scene.run().objects())
+    if (object->visible && object->edged) outline(outlines_, *object, color);
+  drawLines(viewProjection);
+}
+
+void CompareViews::drawLines(const glm::mat4& viewProjection) {
   if (outlines_.size() == 0) return;
   stream_.upload(outlines_);
   program_.use(viewProjection);
@@ -241,8 +253,7 @@ std::vector<LivePlot::Curve> CompareViews::curves(const CompareLanes& lanes) con
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
   for (size_t lane = 1; lane < all.size(); ++lane) {
     if (!shown(lane)) continue;
-    Rgba color = outlineOf(all[lane].engine).color;
-    color.a = 255;
+    const Rgba color = colourOf(all[lane].engine, 255);
     curves.push_back({&all[lane].scene->session().chart(), color});
   }
   return curves;
@@ -250,14 +261,14 @@ std::vector<LivePlot::Curve> CompareViews::curves(const CompareLanes& lanes) con
 
 std::string CompareViews::legend(const CompareLanes& lanes) const {
   const std::vector<CompareLanes::Lane>& all = lanes.lanes();
-  std::string text = all.front().engine + " blue";
-  for (size_t lane = 1; lane < all.size(); ++lane)
-    if (shown(lane)) text += ", " + all[lane].engine + " " + outlineOf(all[lane].engine).name;
-  return text;
+  std::vector<std::string> engines;
+  for (size_t lane = 0; lane < all.size(); ++lane)
+    if (shown(lane)) engines.push_back(all[lane].engine);
+  return colourLegend(engines);
 }
 
 std::string CompareViews::hudLine() const {
-  return merged_ ? "merged: others outlined 5 mm/1 deg off ODE (M views)" : "a view per engine (M merged)";
+  return compareLayoutLine(merged_);
 }
 
 std::string CompareViews::helpLine() {

@@ -14,7 +14,7 @@
 namespace odelab {
 
 // Where a compare window draws: one view per engine shown in a grid (two
-// side by side, then two by two, then three by two), ODE's top left; or,
+// side by side, then two by two, then three columns), ODE's top left; or,
 // merged (M), ODE's view alone with every other shown engine's bodies
 // outlined over it where they are apart from ODE's, so a drift shows at
 // once. Each view carries its label (CompareLanes::label). An engine the
@@ -42,12 +42,19 @@ class CompareViews {
   // Each lane's label at the top left of its view (merged: every label in
   // one column, each in its engine's colour as a heading). `windowWidth` x
   // `windowHeight` is the whole window, the viewport when this is called.
+  // A view too short for its whole label (seven engines in a grid) gets it
+  // without the closing aside every engine shares, at its bottom left, clear
+  // of the scene's subject as the merged legend is.
   void drawLabels(const CompareLanes& lanes, const std::vector<Rect>& views, HudText& text, int windowWidth,
                   int windowHeight);
   // Merged: every other lane's moving bodies that are apart from ODE's body
   // of the same index, outlined in its colour over ODE's view with
   // `viewProjection`; the viewport is that view's.
   void drawOutlines(const CompareLanes& lanes, const glm::mat4& viewProjection);
+  // The edges of `scene`'s bodies that ask for them (AbstractObject::edged:
+  // a world file's), in `engine`'s colour, with the same outline the merged
+  // view draws; the viewport is that view's.
+  void drawEdges(const AbstractWindow& scene, const std::string& engine, const glm::mat4& viewProjection);
 
   // The live plot (L): every other engine's curve in its colour, and the
   // legend naming each engine's colour (ODE's is the plot's own).
@@ -60,6 +67,8 @@ class CompareViews {
   static std::string helpLine();
 
  private:
+  void drawLines(const glm::mat4& viewProjection);  // outlines_, over what is drawn
+
   LineProgram program_;
   VertexStream stream_;
   VertexList outlines_;

@@ -13,6 +13,7 @@
 #include "../SceneKeys.h"
 #include "../TypedNumber.h"
 #include "CameraControl.h"
+#include "WindowLayout.h"
 
 namespace odelab {
 
@@ -20,8 +21,7 @@ namespace {
 // The panel's width in text heights: room for a label, a slider and a
 // field; narrower (down to the least) in a narrow window, to leave the
 // scene at least three quarters of it.
-constexpr float WIDTH_IN_LINES = 18.0f, LEAST_WIDTH_IN_LINES = 14.0f;
-constexpr float MOST_WINDOW_SHARE = 0.25f;
+constexpr float WIDTH_IN_LINES = 18.0f;  // before the first frame (WindowLayout has the rule)
 }  // namespace
 
 ControlPanel::ControlPanel(SDL_Window* window, void* glContext, const std::string& fontPath, int textPixels,
@@ -485,8 +485,7 @@ void ControlPanel::draw(AbstractWindow& scene, int windowWidth, int windowHeight
   feedKeys();
   ImGui::NewFrame();
   if (visible_) {
-    width_ = std::clamp(MOST_WINDOW_SHARE * static_cast<float>(windowWidth), LEAST_WIDTH_IN_LINES * textPixels_,
-                        WIDTH_IN_LINES * textPixels_);
+    width_ = static_cast<float>(panelCoveredWidth(windowWidth, static_cast<int>(textPixels_)) - 2 * MARGIN);
     x_ = static_cast<float>(windowWidth) - width_ - MARGIN;
     y_ = MARGIN;
     ImGui::SetNextWindowPos(ImVec2(x_, y_), ImGuiCond_Always);

@@ -4,14 +4,15 @@
 
 #include "RenderError.h"
 #include "TextColumns.h"
+#include "WindowLayout.h"
 
 namespace odelab {
 
 namespace {
 
 const int FONT_POINTS = 15;
-const int PADDING = 8;          // pixels between a box's edge and its text
-const int MARGIN = 10;          // pixels between the window's corner and the HUD box
+const int PADDING = HUD_PADDING;
+const int MARGIN = HUD_MARGIN;
 const SDL_Color TEXT_COLOR{235, 238, 242, 255};
 
 TTF_Font* openFont(const std::string& path) {
@@ -73,7 +74,7 @@ HudText::HudText(const std::string& fontPath, const std::string& shaderDir)
 HudText::~HudText() { glDeleteVertexArrays(1, &emptyVertexArray_); }
 
 void HudText::setSizeFor(int pixels, int viewportHeight) {
-  const int wanted = pixels > 0 ? pixels : std::min(28, std::max(12, viewportHeight / 45));
+  const int wanted = textPixelsFor(pixels, viewportHeight);
   if (wanted == pixels_) return;
   if (TTF_SetFontSize(font_.get(), wanted) != 0) return;  // keeps the size it had
   TTF_SetFontSize(small_.get(), std::max(11, wanted * SMALL_PERCENT / 100));
@@ -177,8 +178,6 @@ int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth,
     return 0;
   }
   TTF_Font* font = small ? small_.get() : font_.get();
-  const int skip = TTF_FontLineSkip(font);
-  const int maxRows = std::max(1, (maxHeight - 2 * PADDING) / std::max(1, skip));
   const int totalWidth = std::max(80, viewportWidth - 2 * MARGIN);
   const TextWidth width = [font](const std::string& text) { return textWidth(font, text); };
   const auto tallest = [](const std::vector<std::vector<std::string>>& columns) {
@@ -189,11 +188,10 @@ int HudText::layoutHud(const std::vector<std::string>& lines, int viewportWidth,
   const HudFit fit{viewportWidth, maxHeight, generation_, small, lines.front()};
   std::vector<std::vector<std::string>> columns;
   if (fit == hudFit_ && !hudFirstLines_.empty())
-    columns = columnsFrom(lines, hudFirstLines_, totalWidth - 2 * PADDING, 2 * PADDING + MARGIN, width, Wrap::Items,
+    columns = columnsFrom(lines, hudFirstLines_, hudTotalTextWidth(viewportWidth), hudColumnGap(), width, Wrap::Items,
                           oneRow);
   if (columns.empty()) {
-    columns = spreadOverColumns(lines, totalWidth - 2 * PADDING, 2 * PADDING + MARGIN, maxRows, MAX_HUD_COLUMNS,
-                                width, Wrap::Items, &hudFirstLines_, oneRow);
+    columns = hudColumns(lines, viewportWidth, maxHeight, TTF_FontLineSkip(font), width, oneRow, &hudFirstLines_).columns;
     if (!(fit == hudFit_)) hudRows_ = 0;
     hudFit_ = fit;
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ShaderProgram.h"
+#include "WindowLayout.h"
 
 namespace odelab {
 
@@ -69,7 +70,6 @@ class HudText {
                 const std::vector<bool>& oneRow = {});
   // Draws the strip laid out last.
   void drawHud(int viewportWidth, int viewportHeight);
-  static constexpr int MAX_HUD_COLUMNS = 3;
   static constexpr int SMALL_PERCENT = 80;
 
   // Text height in pixels: `pixels`, or when 0 one 45th of the window's

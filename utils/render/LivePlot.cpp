@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "EngineColours.h"
+
 namespace odelab {
 
 namespace {
@@ -107,7 +109,9 @@ void LivePlot::rebuild(const StripChart& chart, const std::vector<Curve>& others
     // A setting changed (key or panel) at these times: a vertical mark.
     for (const double time : chart.changes())
       if (time >= t0 && time <= t1) vertices_.line({xOf(time), top, 0}, {xOf(time), bottom, 0}, CHANGE_COLOR);
-    addCurve(chart, CURVE_COLOR, t0, span);
+    // The scene's own curve in ODE's colour, as a compare window's legend names it.
+    const EngineColour& ode = engineColour("ode");
+    addCurve(chart, {ode.r, ode.g, ode.b, 255}, t0, span);
     for (const Curve& curve : others) addCurve(*curve.chart, curve.color, t0, span);
   }
   lineCount_ = vertices_.size() - backgroundCount_;

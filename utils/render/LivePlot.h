@@ -28,7 +28,6 @@ class LivePlot {
   // `legend` (one line, "" for none) is shown under the title.
   void draw(const StripChart& chart, HudText& text, int viewportWidth, int viewportHeight,
             const std::vector<Curve>& others = {}, const std::string& legend = "");
-  static constexpr Rgba CURVE_COLOR{110, 220, 255, 255};
 
  private:
   void rebuild(const StripChart& chart, const std::vector<Curve>& others, int viewportWidth, int viewportHeight,

@@ -45,9 +45,6 @@ const int IDLE_WAIT_MS = 1000;
 const double RECORD_FRAME_SECONDS = 1.0 / 60.0;
 const double NOTICE_SECONDS = 4.0;
 const int MARGIN = 10;
-// The HUD's strip takes at most this share of the window's height (its
-// columns spread wider first).
-const int HUD_MAX_PERCENT = 22;
 
 // Totals of the run, printed at exit and at each scripted mark (the
 // benchmark reads them): frames, real seconds, and the part of them spent
@@ -97,7 +94,7 @@ struct Views {
         plot(shaderDir),
         compare(shaderDir),
         panel(window.sdlWindow(), window.glContext(), fontPath,
-              options.textSize > 0 ? options.textSize : std::min(28, std::max(12, window.height() / 45)),
+              textPixelsFor(options.textSize, window.height()),
               options.panel) {}
   Renderer renderer;
   HudText text;
@@ -297,10 +294,7 @@ void FrameLoop::draw() {
   }
   // A compare window says how it is laid out and what each engine's step costs.
   if (lanes_ && scene_.session().hudMode() != HudMode::Off) {
-    const long at = std::min<long>(3, static_cast<long>(hud.size()));
-    hud.insert(hud.begin() + at, {lanes_->timingLine(), views_.compare.hudLine()});
-    // Wrapped between engines rather than cut: every engine's figure shows.
-    oneRow.insert(oneRow.begin() + at, {false, false});
+    insertCompareLines(hud, oneRow, lanes_->timingLine(), views_.compare.hudLine());
   }
   hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.session().hudMode() == HudMode::Full,
                                     oneRow);
@@ -312,6 +306,8 @@ void FrameLoop::draw() {
     views_.renderer.render(scene_, width, sceneHeight);
     glm::vec3 grabbed, target;
     const bool dragging = input_.dragLine(scene_, grabbed, target);
+    views_.compare.drawEdges(scene_, scene_.engine().active() ? scene_.engine().engineName() : "ode",
+                             views_.renderer.viewProjection());
     views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
     views_.renderer.present();
   }
@@ -352,6 +348,7 @@ void FrameLoop::drawCompare(int width, int height, int sceneHeight) {
       lane.session().showAs(scene_.session().viewFlags());
     }
     views_.renderer.renderView(lane, scene_.camera(), r.x, height - r.y - r.height, r.width, r.height);
+    views_.compare.drawEdges(lane, lanes_->lanes()[r.lane].engine, views_.renderer.viewProjection());
     views_.debug.draw(lane, views_.renderer.viewProjection(), dragging && r.lane == 0, grabbed, target);
     if (views_.compare.merged()) views_.compare.drawOutlines(*lanes_, views_.renderer.viewProjection());
     views_.renderer.present();

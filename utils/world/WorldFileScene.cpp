@@ -151,6 +151,7 @@ void WorldFileScene::buildGeoms(const std::vector<bool>& bodies, bool statics) {
     made.emplace_back(i, object);
     if (g.body >= 0) object->color = bodyColor(g.body);
     if (g.shape == ShapeKind::Plane) continue;
+    object->edged = true;
     if (g.body < 0) {
       object->setAsFixedGeom();
       dGeomSetPosition(object->getGeom(), g.position[0], g.position[1], g.position[2]);
