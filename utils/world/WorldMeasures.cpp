@@ -73,14 +73,20 @@ double WorldMeasures::reading(const Measure& m, dBodyID body) const {
 // A time between two steps (`at`, a crossing) is interpolated linearly
 // between their readings, so the figure does not move by a step's share.
 void WorldMeasures::Probe::take(const Measure& m, double reading, double time) {
-  const bool inWindow = time >= m.from && time <= m.until;
+  // A step's time is a sum of steps, a rounding off the bound a file names
+  // (70 steps of 0.01 s end at 0.7000000000000001 s): a thousandth of the
+  // smallest step keeps a step that lands on a bound inside the window.
+  constexpr double SLACK = 1e-9;  // s
+  const bool inWindow = time >= m.from - SLACK && time <= m.until + SLACK;
   switch (m.take) {
     case ProbeTake::At:
       if (std::isnan(m.at)) {
         figure = reading;  // the run's last state
-      } else if (time == m.at || (time > m.at && previousTime < m.at && !std::isnan(previous))) {
-        if (std::isnan(figure))
-          figure = time == m.at ? reading : previous + (reading - previous) * (m.at - previousTime) / (time - previousTime);
+      } else if (std::isnan(figure) && time >= m.at - SLACK) {
+        // On a step (to rounding): its reading; past one: between it and the step before.
+        figure = time <= m.at + SLACK || std::isnan(previous)
+                     ? reading
+                     : previous + (reading - previous) * (m.at - previousTime) / (time - previousTime);
       }
       break;
     case ProbeTake::Max:
@@ -90,7 +96,7 @@ void WorldMeasures::Probe::take(const Measure& m, double reading, double time) {
       if (inWindow && !(figure <= reading)) figure = reading;
       break;
     case ProbeTake::FirstCrossing:
-      if (inWindow && std::isnan(figure) && !std::isnan(previous) && previousTime >= m.from &&
+      if (inWindow && std::isnan(figure) && !std::isnan(previous) && previousTime >= m.from - SLACK &&
           (previous - m.value > 0) != (reading - m.value > 0))
         figure = previousTime + (time - previousTime) * (previous - m.value) / (previous - reading);
       break;
