@@ -47,7 +47,10 @@ def apply(schema, ranges):
         kind, field = name.split(".")
         array = field.endswith("[]")
         field = field.rstrip("[]")
-        found = list(places(want["$defs"][kind], field))
+        # "world.": a field of the file's top level; any other kind: that $defs entry.
+        found = list(places(want if kind == "world" else want["$defs"][kind], field))
+        if kind == "world":
+            found = [props for props in found if props is want["properties"]]
         if not found:
             raise SystemExit(f"world_schema_ranges: no place for {name} in the schema's $defs.{kind}")
         for props in found:

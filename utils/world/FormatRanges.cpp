@@ -30,6 +30,14 @@ std::string rangesAsJson() {
       {"joint.anchor[]", {-LENGTH, LENGTH}},
       {"joint.axis[]", {-LENGTH, LENGTH}},
       {"event.impulse[]", {-IMPULSE, IMPULSE}},
+      {"world.duration", {DURATION_MIN, TIME}},
+      {"probe.at", {0.0, TIME}},
+      {"probe.from", {0.0, TIME}},
+      {"probe.until", {0.0, TIME}},
+      {"probe.value", {-READING, READING}},
+      {"probe.expect", {-READING, READING}},
+      {"probe.tolerance", {0.0, READING}},
+      {"probe.relative_tolerance", {0.0, RELATIVE_TOLERANCE}},
   };
   std::ostringstream out;
   out.precision(17);

@@ -26,6 +26,15 @@ constexpr double MASS_MAX = 1e15;       // kg
 constexpr double INERTIA = 1e27;        // kg m^2: |each entry| (MASS_MAX at LENGTH's reach)
 constexpr double IMPULSE = 1e21;        // N s: each component (MASS_MAX at SPEED)
 constexpr double GRAVITY_COMPONENT = 100.0;  // m/s^2: each component; the magnitude is ranges::GRAVITY's
+// A probe's numbers (doc/world-format.md, "probe"). Times: a world's
+// duration, a probe's `at`, `from` and `until`, within a run of TIME; the
+// shortest duration is one step at the smallest step. A reading and its
+// expected value or tolerance: at most READING in its unit, the largest a
+// body's state gives (angular momentum, INERTIA at ANGULAR_SPEED).
+constexpr double TIME = 1e6;            // s
+constexpr double DURATION_MIN = 1e-6;   // s: ranges::STEP's smallest
+constexpr double READING = 1e33;        // m, m/s, rad/s, kg m^2/s, s
+constexpr double RELATIVE_TOLERANCE = 1.0;  // a fraction of |expect|: past 1 no figure is checked
 constexpr std::size_t ITEMS = 1000000;  // items in one list (bodies, geoms, ...): more than 64 MiB could hold
 constexpr std::size_t BYTES = 64u << 20;  // a world file's size
 

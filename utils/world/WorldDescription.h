@@ -116,7 +116,15 @@ struct Settings {
 // What `odelab --world` measures of the run (doc/worlds.md): each kind a
 // metric or a few and a HUD line, computed from the bodies' states after every
 // step, whichever engine stepped them.
-enum class MeasureKind { Energy, Momentum, JointError, Penetration, Tunnelling, Ballistic, Period, Rest };
+enum class MeasureKind { Energy, Momentum, JointError, Penetration, Tunnelling, Ballistic, Period, Rest, Probe };
+
+// A probe reads one number of one body's state (doc/world-format.md,
+// "probe"): what it reads, along which axis, and how the run's readings
+// become one figure.
+// Energy: the world's mechanical energy (as the energy measure's), of no one body.
+enum class ProbeOf { Position, Velocity, Displacement, AngularVelocity, AngularMomentum, Energy };
+enum class ProbeTake { At, Max, Min, FirstCrossing };
+constexpr int MAGNITUDE = 3;  // a probe's axis: |v| rather than a component
 
 struct Measure {
   MeasureKind kind = MeasureKind::Energy;
@@ -128,13 +136,24 @@ struct Measure {
   int axis = 0;          // period: the coordinate timed (0 x, 1 y, 2 z)
   double about = 0.0;    // period: the value whose crossings time the swing
   double expected = 0.0; // period: the analytic period, s
-  double until = INFINITE;  // ballistic: the arc is compared up to this time, s
+  double until = INFINITE;  // ballistic: the arc is compared up to this time, s; probe: the window's end
   double speed = 0.01, angularSpeed = 0.01, hold = 0.5;  // rest: m/s, rad/s, s
   // The analytic answer the world states (the lab grades every engine against
   // it): energy, the energy_drift; tunnelling, the bodies that pass; rest, the
   // time to rest (s). NaN: none stated.
   double expect = std::numeric_limits<double>::quiet_NaN();
   bool expectNever = false;  // rest: the body never comes to rest (it slides on)
+  // probe: what it reads (`axis` 0..2 or MAGNITUDE) and how; `at` NaN: the
+  // run's last state; `value`: the level a first crossing is timed at.
+  ProbeOf of = ProbeOf::Position;
+  ProbeTake take = ProbeTake::At;
+  double at = std::numeric_limits<double>::quiet_NaN();
+  double from = 0.0;  // probe: the window max, min and first_crossing look in, s
+  double value = 0.0;
+  // probe: the absolute tolerance on `expect` (in the reading's unit), or
+  // relative to |expect|; exactly one is set when `expect` is.
+  double tolerance = std::numeric_limits<double>::quiet_NaN();
+  double relativeTolerance = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A timed edit of the world: a body dropped in, or one pushed.
@@ -151,7 +170,9 @@ struct World {
   int version = FORMAT_VERSION;
   std::string scene;    // the program that exported it ("test4"), or the user's name
   std::string title;
+  std::string description;  // what the world shows and its analytic answer, in words
   double time = 0.0;    // simulated seconds when exported
+  double duration = 0.0;  // s: the run a headless run makes without --seconds; 0: the program's default
   Settings settings;
   std::vector<Body> bodies;
   std::vector<Geom> geoms;  // in the order the program made them

@@ -36,6 +36,10 @@ class WorldFileScene : public AbstractWindow {
   bool plotValue(double& value) const override;  // the live plot (L): the total energy when measured
   std::string plotLabel() const override;
   const FileOrigin* fileOrigin() const override { return &origin_; }
+  // Headless without --seconds: the file's duration, where it states one.
+  double defaultHeadlessSeconds() const override {
+    return world_.duration > 0 ? world_.duration : AbstractWindow::defaultHeadlessSeconds();
+  }
 
  private:
   bool droppedLater(int body) const;

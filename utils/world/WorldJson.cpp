@@ -51,7 +51,17 @@ const std::map<MeasureKind, const char*> MEASURES = {
     {MeasureKind::Energy, "energy"},           {MeasureKind::Momentum, "momentum"},
     {MeasureKind::JointError, "joint_error"},  {MeasureKind::Penetration, "penetration"},
     {MeasureKind::Tunnelling, "tunnelling"},   {MeasureKind::Ballistic, "ballistic"},
-    {MeasureKind::Period, "period"},           {MeasureKind::Rest, "rest"}};
+    {MeasureKind::Period, "period"},           {MeasureKind::Rest, "rest"},
+    {MeasureKind::Probe, "probe"}};
+const std::map<ProbeOf, const char*> PROBE_OF = {{ProbeOf::Position, "position"},
+                                                 {ProbeOf::Velocity, "velocity"},
+                                                 {ProbeOf::Displacement, "displacement"},
+                                                 {ProbeOf::AngularVelocity, "angular_velocity"},
+                                                 {ProbeOf::AngularMomentum, "angular_momentum"},
+                                                 {ProbeOf::Energy, "energy"}};
+const std::map<ProbeTake, const char*> PROBE_TAKE = {
+    {ProbeTake::At, "at"}, {ProbeTake::Max, "max"}, {ProbeTake::Min, "min"}, {ProbeTake::FirstCrossing, "first_crossing"}};
+const char* const AXES[] = {"x", "y", "z", "magnitude"};
 
 // Edits (insert, delete, replace) between two short words; 99 for a long one.
 std::size_t editDistance(const std::string& a, const std::string& b) {
@@ -394,6 +404,53 @@ json writeSurface(const Surface& s) {
   return j;
 }
 
+// A probe (doc/world-format.md): what it reads, how the run's readings make
+// one figure, and the answer it is held to. A field that its `take` does not
+// use is refused, naming the take, rather than read and ignored.
+void readProbe(Reader& r, Measure& m, int bodies) {
+  m.of = named(PROBE_OF, r.text("of", "", true), r.at("of"));
+  if (m.of == ProbeOf::Energy) {
+    // The world's energy: one number, of every body together.
+    for (const char* key : {"body", "axis"})
+      if (r.has(key)) Reader::fail(r.at(key), "is not used by of \"energy\" (the world's mechanical energy, of every body)");
+    m.body = -1;
+    m.axis = MAGNITUDE;
+  } else {
+    m.body = r.integer("body", -1, 0, bodies - 1, true);
+    const std::string axis = r.text("axis", "", true);
+    m.axis = -1;
+    for (int k = 0; k < 4; ++k)
+      if (axis == AXES[k]) m.axis = k;
+    if (m.axis < 0) Reader::fail(r.at("axis"), "\"" + axis + "\" is not one of x, y, z, magnitude");
+  }
+  if (m.axis == MAGNITUDE && m.of == ProbeOf::Position)
+    Reader::fail(r.at("axis"), "a position has no magnitude of its own (its distance from the origin): read \"displacement\"");
+  m.take = named(PROBE_TAKE, r.text("take", "at"), r.at("take"));
+  const char* take = PROBE_TAKE.at(m.take);
+  const auto only = [&](const char* key, bool allowed) {
+    if (r.has(key) && !allowed) Reader::fail(r.at(key), std::string("is not used by take \"") + take + "\"");
+  };
+  only("at", m.take == ProbeTake::At);
+  only("from", m.take != ProbeTake::At);
+  only("until", m.take != ProbeTake::At);
+  only("value", m.take == ProbeTake::FirstCrossing);
+  m.at = r.real("at", m.at, 0.0, limits::TIME);
+  m.from = r.real("from", m.from, 0.0, limits::TIME);
+  m.until = r.real("until", m.until, 0.0, limits::TIME);
+  if (r.has("from") && r.has("until") && !(m.until > m.from)) Reader::fail(r.at("until"), "must be after from");
+  m.value = r.real("value", m.value, -limits::READING, limits::READING, m.take == ProbeTake::FirstCrossing);
+  m.expect = r.real("expect", m.expect, -limits::READING, limits::READING);
+  m.tolerance = r.real("tolerance", m.tolerance, 0.0, limits::READING);
+  m.relativeTolerance = r.real("relative_tolerance", m.relativeTolerance, 0.0, limits::RELATIVE_TOLERANCE);
+  const bool tolerance = r.has("tolerance"), relative = r.has("relative_tolerance");
+  if (tolerance && relative) Reader::fail(r.at("relative_tolerance"), "is given with tolerance: state one of them");
+  if (r.has("expect") && !tolerance && !relative)
+    Reader::fail(r.at("expect"), "needs a tolerance (absolute, in the reading's unit) or a relative_tolerance (of |expect|)");
+  if (!r.has("expect") && (tolerance || relative))
+    Reader::fail(r.at(tolerance ? "tolerance" : "relative_tolerance"), "is given without expect");
+  if (relative && m.expect == 0) Reader::fail(r.at("relative_tolerance"), "is relative to expect, which is 0: give tolerance");
+}
+
 Measure readMeasure(const json& j, const std::string& path, const World& w) {
   Reader r(j, path);
   Measure m;
@@ -441,12 +498,13 @@ Measure readMeasure(const json& j, const std::string& path, const World& w) {
         m.expect = r.real("expect", m.expect, 0.0, INFINITE);
       }
       break;
+    case MeasureKind::Probe: readProbe(r, m, bodies); break;
     case MeasureKind::JointError:
     case MeasureKind::Penetration:
       break;
   }
-  if (m.kind == MeasureKind::Ballistic || m.kind == MeasureKind::Period) {
-    m.name = r.text("name", std::string(MEASURES.at(m.kind)) + std::to_string(m.body));
+  if (m.kind == MeasureKind::Ballistic || m.kind == MeasureKind::Period || m.kind == MeasureKind::Probe) {
+    m.name = r.text("name", std::string(MEASURES.at(m.kind)) + (m.body >= 0 ? std::to_string(m.body) : std::string("_energy")));
     if (m.name.empty() || m.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
       Reader::fail(r.at("name"), "must be lower-case letters, digits and _ (it names metrics)");
   }
@@ -492,6 +550,23 @@ json writeMeasure(const Measure& m) {
       j["speed"] = m.speed;
       j["angular_speed"] = m.angularSpeed;
       j["hold"] = m.hold;
+      break;
+    case MeasureKind::Probe:
+      if (m.of != ProbeOf::Energy) {
+        j["body"] = m.body;
+        j["axis"] = AXES[m.axis];
+      }
+      j["name"] = m.name;
+      j["of"] = PROBE_OF.at(m.of);
+      j["take"] = PROBE_TAKE.at(m.take);
+      if (!std::isnan(m.at)) j["at"] = m.at;
+      if (m.take != ProbeTake::At) {
+        if (m.from > 0) j["from"] = m.from;
+        if (!std::isinf(m.until)) j["until"] = m.until;
+      }
+      if (m.take == ProbeTake::FirstCrossing) j["value"] = m.value;
+      if (!std::isnan(m.tolerance)) j["tolerance"] = m.tolerance;
+      if (!std::isnan(m.relativeTolerance)) j["relative_tolerance"] = m.relativeTolerance;
       break;
     case MeasureKind::JointError:
     case MeasureKind::Penetration:
@@ -549,6 +624,8 @@ World worldFromParsed(const json& root) {
   r.text("$schema", "");  // where an editor finds doc/world.schema.json; the reader needs none
   w.scene = r.text("scene", "");
   w.title = r.text("title", "");
+  w.description = r.text("description", "");
+  w.duration = r.real("duration", 0.0, limits::DURATION_MIN, limits::TIME);
   w.time = r.real("time", 0.0, 0.0, INFINITE);
   const json* settings = r.object("settings");
   if (!settings) Reader::fail(r.at("settings"), "is missing");
@@ -782,6 +859,8 @@ std::string worldToJson(const World& world) {
   json root = {{"format", "odelab-world"}, {"version", FORMAT_VERSION}};
   if (!world.scene.empty()) root["scene"] = world.scene;
   if (!world.title.empty()) root["title"] = world.title;
+  if (!world.description.empty()) root["description"] = world.description;
+  if (world.duration > 0) root["duration"] = world.duration;
   root["time"] = world.time;
   root["settings"] = settings;
   root["bodies"] = bodies;

@@ -55,11 +55,61 @@ struct DeepestContact {
 
 double WorldMeasures::Crossings::period() const { return count >= 3 ? 2.0 * (last - first) / (count - 1) : NaN; }
 
+// The probe's quantity now: a component of the body's state, or its magnitude.
+double WorldMeasures::reading(const Measure& m, dBodyID body) const {
+  Vec3 v{0, 0, 0};
+  switch (m.of) {
+    case ProbeOf::Position: v = vec(dBodyGetPosition(body)); break;
+    case ProbeOf::Velocity: v = vec(dBodyGetLinearVel(body)); break;
+    case ProbeOf::Displacement: v = minus(vec(dBodyGetPosition(body)), startPosition_[static_cast<size_t>(m.body)]); break;
+    case ProbeOf::AngularVelocity: v = vec(dBodyGetAngularVel(body)); break;
+    case ProbeOf::AngularMomentum: v = spin(body); break;
+    case ProbeOf::Energy: return last_.energy;
+  }
+  return m.axis == MAGNITUDE ? norm(v.data()) : v[static_cast<size_t>(m.axis)];
+}
+
+// One reading at `time` (s since the body appeared) into the probe's figure.
+// A time between two steps (`at`, a crossing) is interpolated linearly
+// between their readings, so the figure does not move by a step's share.
+void WorldMeasures::Probe::take(const Measure& m, double reading, double time) {
+  // A step's time is a sum of steps, a rounding off the bound a file names
+  // (70 steps of 0.01 s end at 0.7000000000000001 s): a thousandth of the
+  // smallest step keeps a step that lands on a bound inside the window.
+  constexpr double SLACK = 1e-9;  // s
+  const bool inWindow = time >= m.from - SLACK && time <= m.until + SLACK;
+  switch (m.take) {
+    case ProbeTake::At:
+      if (std::isnan(m.at)) {
+        figure = reading;  // the run's last state
+      } else if (std::isnan(figure) && time >= m.at - SLACK) {
+        // On a step (to rounding): its reading; past one: between it and the step before.
+        figure = time <= m.at + SLACK || std::isnan(previous)
+                     ? reading
+                     : previous + (reading - previous) * (m.at - previousTime) / (time - previousTime);
+      }
+      break;
+    case ProbeTake::Max:
+      if (inWindow && !(figure >= reading)) figure = reading;
+      break;
+    case ProbeTake::Min:
+      if (inWindow && !(figure <= reading)) figure = reading;
+      break;
+    case ProbeTake::FirstCrossing:
+      if (inWindow && std::isnan(figure) && !std::isnan(previous) && previousTime >= m.from - SLACK &&
+          (previous - m.value > 0) != (reading - m.value > 0))
+        figure = previousTime + (time - previousTime) * (previous - m.value) / (previous - reading);
+      break;
+  }
+  previous = reading;
+  previousTime = time;
+}
+
 WorldMeasures::WorldMeasures(const World& world, dWorldID odeWorld, dSpaceID space, std::vector<dBodyID> bodies)
     : world_(world), odeWorld_(odeWorld), space_(space), bodies_(std::move(bodies)),
       appeared_(bodies_.size(), 0.0), startPosition_(bodies_.size()), startVelocity_(bodies_.size()),
       side_(bodies_.size(), NaN), tunnelled_(bodies_.size(), false),
-      ballisticError_(world.measures.size(), 0.0), swings_(world.measures.size()),
+      ballisticError_(world.measures.size(), 0.0), swings_(world.measures.size()), probes_(world.measures.size()),
       restingSince_(NaN), timeToRest_(NaN) {
   for (size_t i = 0; i < bodies_.size(); ++i)
     if (bodies_[i]) {
@@ -150,6 +200,10 @@ void WorldMeasures::afterStep(double time) {
   bool resting = true;
   for (size_t i = 0; i < world_.measures.size(); ++i) {
     const Measure& m = world_.measures[i];
+    if (m.kind == MeasureKind::Probe && m.of == ProbeOf::Energy) {
+      probes_[i].take(m, last_.energy, time);
+      continue;
+    }
     const dBodyID body = m.body >= 0 ? bodies_[static_cast<size_t>(m.body)] : nullptr;
     if (!body) continue;
     if (m.kind == MeasureKind::Ballistic) {
@@ -165,6 +219,8 @@ void WorldMeasures::afterStep(double time) {
         error += d * d;
       }
       ballisticError_[i] = std::max(ballisticError_[i], std::sqrt(error));
+    } else if (m.kind == MeasureKind::Probe) {
+      probes_[i].take(m, reading(m, body), time - appeared_[static_cast<size_t>(m.body)]);
     } else if (m.kind == MeasureKind::Period) {
       Crossings& c = swings_[i];
       const double value = dBodyGetPosition(body)[m.axis] - m.about;
@@ -242,6 +298,20 @@ void WorldMeasures::addMetrics(Metrics& m) const {
       case MeasureKind::Rest:  // not measured until the bodies have rested for the measure's hold
         m.set("time_to_rest_s", timeToRest_, !std::isnan(timeToRest_));
         break;
+      case MeasureKind::Probe: {
+        // Not measured when never read (a crossing that did not happen).
+        const double value = probes_[i].figure;
+        const bool read = !std::isnan(value);
+        m.set(measure.name + "_value", value, read);
+        if (std::isnan(measure.expect)) break;
+        const double tolerance =
+            std::isnan(measure.tolerance) ? measure.relativeTolerance * std::abs(measure.expect) : measure.tolerance;
+        m.set(measure.name + "_expected", measure.expect);
+        m.set(measure.name + "_error", value - measure.expect, read);
+        m.set(measure.name + "_tolerance", tolerance);
+        m.set(measure.name + "_within", read && std::abs(value - measure.expect) <= tolerance ? 1.0 : 0.0);
+        break;
+      }
     }
   }
 }
@@ -279,6 +349,12 @@ void WorldMeasures::addHudLines(std::vector<std::string>& lines) const {
         break;
       case MeasureKind::Period:
         s << measure.name << ": period " << swings_[i].period() << " s (expected " << measure.expected << " s)";
+        break;
+      case MeasureKind::Probe:
+        s << measure.name << " " << probes_[i].figure;
+        if (!std::isnan(measure.expect))
+          s << " (expected " << measure.expect << " +- "
+            << (std::isnan(measure.tolerance) ? measure.relativeTolerance * std::abs(measure.expect) : measure.tolerance) << ")";
         break;
       case MeasureKind::Rest:
         s << "at rest " << (std::isnan(timeToRest_) ? std::string("not yet") : "from " + std::to_string(timeToRest_) + " s");

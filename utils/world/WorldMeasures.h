@@ -7,6 +7,7 @@
 
 #include <ode/ode.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,14 @@ class WorldMeasures {
     bool started = false;
     double period() const;
   };
+  // A probe's figure so far, and its last reading (to interpolate a time
+  // between two steps).
+  struct Probe {
+    double figure = std::numeric_limits<double>::quiet_NaN();
+    double previous = std::numeric_limits<double>::quiet_NaN(), previousTime = 0.0;
+    void take(const Measure& m, double reading, double time);
+  };
+  double reading(const Measure& m, dBodyID body) const;
   Totals totals() const;
   double deepestContact();
   void watchJoints();
@@ -83,6 +92,7 @@ class WorldMeasures {
   int crossings_ = 0;
   std::vector<double> ballisticError_;  // per measure
   std::vector<Crossings> swings_;       // per measure
+  std::vector<Probe> probes_;           // per measure
   double restingSince_, timeToRest_;
   double time_ = 0.0;
 };
