@@ -1,7 +1,9 @@
 # ---- MJCF in (doc/world-format.md, "MJCF"): the examples of doc/worlds/mjcf/
 # read by MuJoCo's loader, exported with the MJCF's own figures (1e-9), run
 # on ODE to their physics (the pendulum's period within 1%, the cube held by
-# the pair's larger friction), and the refusals (an ellipsoid, a damped
+# the pair's larger friction), a body's principal inertia turned into its
+# own frame with a jointless child welded to it (checks/worlds/mjcf/
+# tilted_inertia.xml), and the refusals (an ellipsoid, a damped
 # hinge, a file MuJoCo refuses) each status 2 naming what was wrong.
 # Without MuJoCo an MJCF file is refused, saying the build has none.
 if(ODELAB_MJCF)

@@ -10,6 +10,10 @@ the physics the MJCF states:
 - box_on_slope.xml: the cube holds on the 20 degree slope (energy within
   1e-3 of its start over 2 s), which it does only if the pair takes the
   larger friction (1, above tan 20 deg); the slope's 0.3 lets it slide.
+A body whose principal axes are turned from its frame (tilted_inertia.xml)
+exports the full tensor R diag(I) R^T in its own frame, a sphere that touches
+nothing as its geom (it has <inertial> only), and the ball welded to it a
+fixed joint, the bodies in MuJoCo's order.
 And the refusals, each status 2 before anything runs, naming what was wrong:
 an ellipsoid geom, a damped hinge, a file MuJoCo refuses (its text and path).
 Usage: world_mjcf.py ODELAB EXAMPLES_DIR REFUSALS_DIR
@@ -171,6 +175,25 @@ def slope(odelab, examples, folder):
     expect(deviation is not None and deviation < 1e-3, "cube slid: energy_max_deviation %s, bound 1e-3" % deviation)
 
 
+def tilted(odelab, refused, folder):
+    source = os.path.join(refused, "tilted_inertia.xml")
+    _, world = export(odelab, source, folder)
+    counts(world, 2, 2, 1, source)
+    c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
+    d = [0.1, 0.2, 0.3]
+    frame = world["bodies"][0]
+    expect(abs(frame["mass"] - 2) <= TOLERANCE, "tilted body mass %s" % frame["mass"])
+    close(frame["inertia"], [d[0] * c * c + d[1] * s * s, d[0] * s * s + d[1] * c * c, d[2], (d[0] - d[1]) * c * s, 0, 0],
+          "tilted inertia in the body's frame")
+    close(frame["position"], y_up([0, 0, 1]), "tilted body position")
+    close(world["bodies"][1]["position"], y_up([0.5, 0, 1]), "welded ball position")
+    marker = [g for g in world["geoms"] if g["body"] == 0]
+    expect(len(marker) == 1 and marker[0]["shape"] == "sphere" and marker[0].get("collide") == 0
+           and marker[0].get("category") == 0, "tilted body: one sphere that touches nothing, got %s" % marker)
+    joint = world["joints"][0]
+    expect(joint["type"] == "fixed" and {joint["body1"], joint["body2"]} == {0, 1}, "welded ball: fixed joint, got %s" % joint)
+
+
 def refusals(odelab, folder):
     for name, needle in [("ellipsoid.xml", "geom 'egg' is of type ellipsoid"),
                          ("damped_hinge.xml", "joint 'elbow' has damping 0.5"),
@@ -183,11 +206,12 @@ def refusals(odelab, folder):
 
 
 def main():
-    odelab, examples, refused = sys.argv[1:4]
+    odelab, examples, refused = sys.argv[1:4]  # refused: the check's own files, refused or not
     with tempfile.TemporaryDirectory() as folder:
         pendulum(odelab, examples, folder)
         ball(odelab, examples, folder)
         slope(odelab, examples, folder)
+        tilted(odelab, refused, folder)
     refusals(odelab, refused)
     print("%d failure(s)" % len(failures))
     return 1 if failures else 0

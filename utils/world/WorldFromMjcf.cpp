@@ -125,76 +125,80 @@ class Translation {
     }
   }
 
+  // Body by body (MuJoCo keeps each body's geoms together, in body order), so
+  // that a body's first geom comes in the bodies' order: the exporter numbers
+  // bodies as it meets them through their geoms, and keeps MuJoCo's order so.
   void geoms() {
-    std::vector<bool> hasGeom(world_.bodies.size(), false);
-    bool margins = false, higherCondim = false;
-    for (int g = 0; g < m_->ngeom; ++g) {
-      const int mjBody = m_->geom_bodyid[g];
-      const int body = index_[static_cast<size_t>(mjBody)];
-      const mjtNum* size = m_->geom_size + 3 * g;
-      Geom geom;
-      geom.body = body;
-      switch (m_->geom_type[g]) {
-        case mjGEOM_PLANE: geom.shape = ShapeKind::Plane; break;
-        case mjGEOM_SPHERE: geom.shape = ShapeKind::Sphere; geom.size = {size[0], 0, 0}; break;
-        case mjGEOM_BOX: geom.shape = ShapeKind::Box; geom.size = {2 * size[0], 2 * size[1], 2 * size[2]}; break;
-        // MuJoCo's size[1] is the half-length of the cylindrical part, along local z as here.
-        case mjGEOM_CAPSULE: geom.shape = ShapeKind::Capsule; geom.size = {size[0], 2 * size[1], 0}; break;
-        case mjGEOM_CYLINDER: geom.shape = ShapeKind::Cylinder; geom.size = {size[0], 2 * size[1], 0}; break;
-        default: refuse(name(mjOBJ_GEOM, g, "geom") + " is of type " + typeName(m_->geom_type[g]) +
-                        ": this format has box, sphere, plane, capsule and cylinder only");
-      }
-      const mjtNum* xpos = d_->geom_xpos + 3 * g;
-      mjtNum xquat[4];
-      mju_mat2Quat(xquat, d_->geom_xmat + 9 * g);
-      if (geom.shape == ShapeKind::Plane) {
-        if (body >= 0) refuse(name(mjOBJ_GEOM, g, "geom") + " is a plane on a moving body: a plane is static here");
-        // MuJoCo's plane is its geom frame's z = 0, normal along that z.
-        const mjtNum* mat = d_->geom_xmat + 9 * g;
-        const mjtNum normal[3] = {mat[2], mat[5], mat[8]};
-        const Vec3 n = yUp(normal);
-        const Vec3 p = yUp(xpos);
-        geom.plane = {n[0], n[1], n[2], n[0] * p[0] + n[1] * p[1] + n[2] * p[2]};
-      } else if (body < 0) {
-        geom.position = yUp(xpos);
-        geom.orientation = yUpQuat(xquat);
-      } else {
-        // On a body: relative to its centre of mass, in its frame.
-        const mjtNum* bodyMat = d_->xmat + 9 * mjBody;
-        const mjtNum* com = d_->xipos + 3 * mjBody;
-        const mjtNum offset[3] = {xpos[0] - com[0], xpos[1] - com[1], xpos[2] - com[2]};
-        mjtNum local[3];
-        mju_rotVecMatT(local, offset, bodyMat);
-        geom.position = {local[0], local[1], local[2]};
-        mjtNum inverse[4], relative[4];
-        mju_negQuat(inverse, d_->xquat + 4 * mjBody);
-        mju_mulQuat(relative, inverse, xquat);
-        geom.orientation = {relative[0], relative[1], relative[2], relative[3]};
-        hasGeom[static_cast<size_t>(body)] = true;
-      }
-      // MuJoCo's contype/conaffinity rule is ODE's category/collide rule.
-      geom.category = static_cast<std::uint32_t>(m_->geom_contype[g]);
-      geom.collide = static_cast<std::uint32_t>(m_->geom_conaffinity[g]);
-      margins = margins || m_->geom_margin[g] != 0 || m_->geom_gap[g] != 0;
-      higherCondim = higherCondim || m_->geom_condim[g] > 3;
-      mjGeomOf_.push_back(g);
-      world_.geoms.push_back(geom);
-    }
-    // The format finds a body through its geoms: a body MuJoCo gives mass
-    // by <inertial> alone carries a sphere that touches nothing.
-    for (size_t b = 0; b < hasGeom.size(); ++b)
-      if (!hasGeom[b]) {
+    for (int b = 0; b < m_->nbody; ++b) {
+      for (int k = 0; k < m_->body_geomnum[b]; ++k) addGeom(m_->body_geomadr[b] + k);
+      const int body = index_[static_cast<size_t>(b)];
+      if (body >= 0 && m_->body_geomnum[b] == 0) {
+        // The format finds a body through its geoms: a body MuJoCo gives mass
+        // by <inertial> alone carries a sphere that touches nothing.
         Geom marker;
         marker.shape = ShapeKind::Sphere;
         marker.size = {1e-3, 0, 0};
-        marker.body = static_cast<int>(b);
+        marker.body = body;
         marker.category = 0;
         marker.collide = 0;
         mjGeomOf_.push_back(-1);
         world_.geoms.push_back(marker);
       }
-    if (margins) note("geom margin and gap not carried: contacts start at touching");
-    if (higherCondim) note("condim 4 and 6 (torsional and rolling friction) not carried: contacts have sliding friction only");
+    }
+    if (margins_) note("geom margin and gap not carried: contacts start at touching");
+    if (higherCondim_) note("condim 4 and 6 (torsional and rolling friction) not carried: contacts have sliding friction only");
+  }
+
+  void addGeom(int g) {
+    const int mjBody = m_->geom_bodyid[g];
+    const int body = index_[static_cast<size_t>(mjBody)];
+    const mjtNum* size = m_->geom_size + 3 * g;
+    Geom geom;
+    geom.body = body;
+    switch (m_->geom_type[g]) {
+      case mjGEOM_PLANE: geom.shape = ShapeKind::Plane; break;
+      case mjGEOM_SPHERE: geom.shape = ShapeKind::Sphere; geom.size = {size[0], 0, 0}; break;
+      case mjGEOM_BOX: geom.shape = ShapeKind::Box; geom.size = {2 * size[0], 2 * size[1], 2 * size[2]}; break;
+      // MuJoCo's size[1] is the half-length of the cylindrical part, along local z as here.
+      case mjGEOM_CAPSULE: geom.shape = ShapeKind::Capsule; geom.size = {size[0], 2 * size[1], 0}; break;
+      case mjGEOM_CYLINDER: geom.shape = ShapeKind::Cylinder; geom.size = {size[0], 2 * size[1], 0}; break;
+      default: refuse(name(mjOBJ_GEOM, g, "geom") + " is of type " + typeName(m_->geom_type[g]) +
+                      ": this format has box, sphere, plane, capsule and cylinder only");
+    }
+    const mjtNum* xpos = d_->geom_xpos + 3 * g;
+    mjtNum xquat[4];
+    mju_mat2Quat(xquat, d_->geom_xmat + 9 * g);
+    if (geom.shape == ShapeKind::Plane) {
+      if (body >= 0) refuse(name(mjOBJ_GEOM, g, "geom") + " is a plane on a moving body: a plane is static here");
+      // MuJoCo's plane is its geom frame's z = 0, normal along that z.
+      const mjtNum* mat = d_->geom_xmat + 9 * g;
+      const mjtNum normal[3] = {mat[2], mat[5], mat[8]};
+      const Vec3 n = yUp(normal);
+      const Vec3 p = yUp(xpos);
+      geom.plane = {n[0], n[1], n[2], n[0] * p[0] + n[1] * p[1] + n[2] * p[2]};
+    } else if (body < 0) {
+      geom.position = yUp(xpos);
+      geom.orientation = yUpQuat(xquat);
+    } else {
+      // On a body: relative to its centre of mass, in its frame.
+      const mjtNum* bodyMat = d_->xmat + 9 * mjBody;
+      const mjtNum* com = d_->xipos + 3 * mjBody;
+      const mjtNum offset[3] = {xpos[0] - com[0], xpos[1] - com[1], xpos[2] - com[2]};
+      mjtNum local[3];
+      mju_rotVecMatT(local, offset, bodyMat);
+      geom.position = {local[0], local[1], local[2]};
+      mjtNum inverse[4], relative[4];
+      mju_negQuat(inverse, d_->xquat + 4 * mjBody);
+      mju_mulQuat(relative, inverse, xquat);
+      geom.orientation = {relative[0], relative[1], relative[2], relative[3]};
+    }
+    // MuJoCo's contype/conaffinity rule is ODE's category/collide rule.
+    geom.category = static_cast<std::uint32_t>(m_->geom_contype[g]);
+    geom.collide = static_cast<std::uint32_t>(m_->geom_conaffinity[g]);
+    margins_ = margins_ || m_->geom_margin[g] != 0 || m_->geom_gap[g] != 0;
+    higherCondim_ = higherCondim_ || m_->geom_condim[g] > 3;
+    mjGeomOf_.push_back(g);
+    world_.geoms.push_back(geom);
   }
 
   static const char* typeName(int type) {
@@ -324,6 +328,7 @@ class Translation {
   World world_;
   std::vector<int> index_;     // per MuJoCo body: its index in world_.bodies, -1 static
   std::vector<int> mjGeomOf_;  // per world geom: its MuJoCo geom, -1 a marker sphere
+  bool margins_ = false, higherCondim_ = false;  // noted once, after every geom
 };
 
 }  // namespace
