@@ -7,6 +7,9 @@ the physics the MJCF states:
 - hinge_pendulum.xml: the exported world with a `period` measure added swings
   within 1% of the compound pendulum's period, 2 pi sqrt(I / (m g L)), with
   the 5 degree start's correction (1 + theta^2 / 16);
+  with a hinge range (written into a copy), its stops are MuJoCo's and hold
+  on the same side: a range of [-0.01, 60] degrees holds the pendulum where
+  gravity pulls it to -5 degrees (it never swings), [-60, 0.01] does not;
 - box_on_slope.xml: the cube holds on the 20 degree slope (energy within
   1e-3 of its start over 2 s), which it does only if the pair takes the
   larger friction (1, above tan 20 deg); the slope's 0.3 lets it slide.
@@ -126,6 +129,28 @@ def pendulum(odelab, examples, folder):
     error = metric(metrics, "swing_period_error")
     print("hinge_pendulum: period %s s, expected %.6f s, error %s" % (metric(metrics, "swing_period_s"), expected, error))
     expect(error is not None and abs(error) < 0.01, "pendulum period error %s, bound 1%%" % error)
+    limited(odelab, source, folder)
+
+
+def limited(odelab, source, folder):
+    """The hinge's range on both sides: MuJoCo's qpos and ODE's hinge angle
+    must grow the same way, or the stop holds the wrong swing."""
+    with open(source) as f:
+        text = f.read()
+    hinge = '<joint name="pivot" type="hinge" axis="0 1 0"/>'
+    expect(hinge in text, "hinge_pendulum.xml: no %s to limit" % hinge)
+    for low, high, swings in [(-0.01, 60, False), (-60, 0.01, True)]:
+        copy = os.path.join(folder, "limited_%s.xml" % swings)
+        with open(copy, "w") as f:
+            f.write(text.replace(hinge, hinge[:-2] + ' limited="true" range="%s %s"/>' % (low, high)))
+        path, world = export(odelab, copy, folder)
+        joint = world["joints"][0]
+        close([joint["low_stop"], joint["high_stop"]], [math.radians(low), math.radians(high)], "hinge stops")
+        world["measures"] = [{"kind": "period", "body": 0, "axis": "x", "about": 0.0, "expected": 2.0, "name": "swing"}]
+        with open(path, "w") as f:
+            json.dump(world, f)
+        swung = metric(metrics_of(odelab, path, folder, 3), "swing_period_s") is not None
+        expect(swung == swings, "hinge range [%s, %s] deg: swings %s, MuJoCo's stop gives %s" % (low, high, swung, swings))
 
 
 def ball(odelab, examples, folder):
