@@ -2,7 +2,8 @@
 // classes, degrees, inertia from geoms), mj_forward places every body at
 // qpos0, and this file reads the compiled mjModel and mjData into a World.
 // MuJoCo's z-up frame is turned to this format's y-up one: (x, y, z) ->
-// (x, z, -y), a rotation of -90 degrees about x, exact in floating point.
+// (x, z, -y), a rotation of -90 degrees about x: exact for every vector,
+// orientations turned by its quaternion.
 #include "WorldFromMjcf.h"
 
 #include <mujoco/mujoco.h>
