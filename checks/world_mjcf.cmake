@@ -12,6 +12,6 @@ if(ODELAB_MJCF)
                    ${CMAKE_SOURCE_DIR}/doc/worlds/mjcf ${CMAKE_CURRENT_SOURCE_DIR}/worlds/mjcf)
   set_tests_properties(world_mjcf_examples_and_refusals PROPERTIES TIMEOUT 300 LABELS peers)
 else()
-  odelab_refusals(odelab refuses_mjcf_without_mujoco headless 2 NEEDLE "MJCF needs MuJoCo (libmujoco-dev); this build has none"
+  odelab_refusals(odelab refuses_mjcf_without_mujoco headless 2 NEEDLE "MJCF needs MuJoCo (libmujoco-dev)"
                   --world=${CMAKE_SOURCE_DIR}/doc/worlds/mjcf/ball_on_plane.xml)
 endif()
