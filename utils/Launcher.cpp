@@ -28,7 +28,8 @@ constexpr const char* USAGE =
     "usage: odelab [window options]        (opens on test1; Page Down / Page Up or the panel's list switch scenes)\n"
     "       odelab --list\n"
     "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n"
-    "       odelab --world FILE [options]  a world file (doc/world-format.md; testN --export-world writes one)\n"
+    "       odelab --world FILE [options]  a world file (doc/world-format.md; testN --export-world writes one),\n"
+    "                                      or a MuJoCo MJCF model (FILE.xml), translated to one\n"
     "In the window, every scene shown reports in --metrics-json as visit<N>.<scene>.<metric> once the\n"
     "window has switched, --record numbers frames over the whole window, and --seconds must be at\n"
     "least one step of every scene.\n";
@@ -114,6 +115,8 @@ int runWorldFile(const std::string& path, std::vector<char*>& arguments) {
     std::cerr << "error: --world: " << error.what() << '\n';
     return odelab::exit_code::USAGE;
   }
+  // Said once, before any figure: what an imported file (MJCF) had that the world does not carry.
+  for (const std::string& note : world->notes) std::cerr << "odelab: --world: note: " << note << '\n';
   const auto make = [world, path]() -> std::unique_ptr<odelab::AbstractWindow> {
     auto scene = std::make_unique<odelab::world::WorldFileScene>(*world);
     scene->identify("world", scene->fileTitle(path));

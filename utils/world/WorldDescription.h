@@ -182,6 +182,9 @@ struct World {
   std::vector<PairSurface> pairSurfaces;
   std::vector<Measure> measures;
   std::vector<Event> events;  // in time order
+  // In memory only: what an imported file (MJCF) has that this format does
+  // not carry, one line each, said before the run and in the metrics.
+  std::vector<std::string> notes;
 
   // The surface two geoms (indices) touch with.
   const Surface& surfaceBetween(int geom1, int geom2) const;

@@ -205,6 +205,11 @@ void WorldFileScene::afterStep() { measures_->afterStep(simulatedTime()); }
 
 void WorldFileScene::addMetrics(Metrics& metrics) const {
   if (measures_) measures_->addMetrics(metrics);
+  // What an imported file (MJCF) had that the world does not carry.
+  if (!world_.notes.empty()) {
+    metrics.set("world_note_count", static_cast<double>(world_.notes.size()));
+    metrics.setTexts("world_notes", world_.notes);
+  }
 }
 
 // Bodies that start inside one another are pushed apart by the first step's

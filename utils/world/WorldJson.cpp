@@ -14,6 +14,7 @@
 #include "FormatRanges.h"
 #include "JsonLines.h"
 #include "SafeFile.h"
+#include "WorldFromMjcf.h"
 #include "WorldSettings.h"
 
 namespace odelab::world {
@@ -908,6 +909,7 @@ World readWorldFile(const std::string& path) {
   } catch (const ReadRefused& error) {
     throw WorldFileError(error.what());
   }
+  if (looksLikeMjcf(path, text)) return worldFromMjcf(path);
   try {
     return worldFromJson(text);
   } catch (const WorldFileError& error) {
