@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <SDL2/SDL_ttf.h>
+#include <stdlib.h>
 
 #include <filesystem>
 #include <memory>
@@ -48,8 +49,13 @@ class HudFit : public ::testing::TestWithParam<Window> {
 
   // test2's compact HUD lines as its window shows them (paused or running).
   static std::vector<std::string> test2Hud(bool paused) {
-    const fs::path folder = fs::temp_directory_path() / "odelab-hud-fit";
-    fs::create_directories(folder);
+    // A folder of this run's own: CTest runs each case as its own process, side by side.
+    std::string pattern = (fs::temp_directory_path() / "odelab-hud-fit-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) {
+      ADD_FAILURE() << "cannot make a folder like " << pattern;
+      return {};
+    }
+    const fs::path folder = pattern;
     const SceneEntry* entry = findScene("test2");
     EXPECT_NE(entry, nullptr);
     std::unique_ptr<AbstractWindow> scene = entry->make();

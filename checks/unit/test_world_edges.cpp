@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdlib.h>
+
 #include <filesystem>
 #include <string>
 
@@ -35,8 +37,9 @@ const char* const STACK = R"({
 })";
 
 TEST(WorldEdges, EveryBodyAndStaticBoxIsEdgedAndThePlaneIsNot) {
-  const fs::path folder = fs::temp_directory_path() / "odelab-world-edges";
-  fs::create_directories(folder);
+  std::string pattern = (fs::temp_directory_path() / "odelab-world-edges-XXXXXX").string();
+  ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+  const fs::path folder = pattern;
   world::WorldFileScene scene(world::worldFromJson(STACK));
   RunOptions options;
   options.headless = true;
