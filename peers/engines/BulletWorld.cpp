@@ -147,8 +147,11 @@ void BulletWorld::applySettings() {
   btCollisionObjectArray& objects = dynamics_.getCollisionObjectArray();
   for (int i = 0; i < objects.size(); ++i) objects[i]->setContactProcessingThreshold(processing);
   if (rules_.bounces() && !exactBounce)
-    notes_.add("Bullet's default speculative contacts (solved before the shapes touch) take most of a bounce "
-               "away; the best setting turns them off");
+    // What they do to a bounce is measured, not said here: the atlas's
+    // bounce cases (doc/atlas-report/) have Bullet's default rising higher
+    // than e^2 h, not lower.
+    notes_.add("Bullet's default speculative contacts (solved before the shapes touch) change how high a body "
+               "bounces (measured: doc/atlas-report/ATLAS.md); the best setting turns them off");
   noteSettings();
 }
 

@@ -37,11 +37,14 @@ def heat_map(out_dir, stem, family, rows):
                 line.append(min(max(value, FLOOR), CEILING))
         grid.append(line)
     fig, ax = new_figure(width=max(8.0, 0.32 * len(columns) + 4), height=max(3.0, 0.45 * len(cases) + 2.2))
-    image = ax.imshow(grid, cmap="RdYlGn_r", norm=colors.LogNorm(vmin=FLOOR, vmax=CEILING), aspect="auto")
+    # Bins with the tolerance as an edge: greens within it, oranges and reds past it.
+    edges = [FLOOR, 0.1, 0.5, 1.0, 2.0, 10.0, 100.0, CEILING]
+    palette = colors.ListedColormap(["#1a9850", "#66bd63", "#a6d96a", "#fdae61", "#f46d43", "#d73027", "#a50026"])
+    image = ax.imshow(grid, cmap=palette, norm=colors.BoundaryNorm(edges, palette.N), aspect="auto")
     for j, i in crosses:
         ax.plot(j, i, "x", color="black", markersize=8)
     ax.set_yticks(range(len(cases)), cases, fontsize=8)
     ax.set_xticks(range(len(columns)), [f"{e} {s[0]} {h}" for e, s, h in columns], rotation=90, fontsize=7)
     ax.set_title(f"{family}: worst probe error in tolerances (x: no figure; d default, b best; step in s)")
-    fig.colorbar(image, ax=ax, label="|error| / tolerance (1: the tolerance)")
+    fig.colorbar(image, ax=ax, label="|error| / tolerance (1: the tolerance)", format="%g")
     return save(fig, out_dir, stem)
