@@ -7,6 +7,7 @@
 #include <string>
 
 #include "world/WorldJson.h"
+#include "world_file_error_of.h"
 
 namespace {
 
@@ -56,14 +57,7 @@ World twoBodies() {
   return w;
 }
 
-std::string errorOf(const std::string& text) {
-  try {
-    worldFromJson(text);
-  } catch (const WorldFileError& error) {
-    return error.what();
-  }
-  return "(accepted)";
-}
+std::string errorOf(const std::string& text) { return worldFileErrorOf(text); }
 
 std::string withField(const std::string& field) {
   std::string text = worldToJson(twoBodies());

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "world/WorldJson.h"
+#include "world_file_error_of.h"
 
 namespace {
 
@@ -20,14 +21,7 @@ std::string worldWith(const std::string& joint, const std::string& measures = "[
     "joints": [)" + joint + R"(], "surfaces": [{"mu": 0.5}], "measures": )" + measures + "}";
 }
 
-std::string errorOf(const std::string& text) {
-  try {
-    worldFromJson(text);
-  } catch (const WorldFileError& error) {
-    return error.what();
-  }
-  return "(accepted)";
-}
+std::string errorOf(const std::string& text) { return worldFileErrorOf(text); }
 
 TEST(WorldFileJoints, HingeAndSliderOwnErpCfmAreRefused) {
   const std::string hinge = R"({"type": "hinge", "body1": 0, "body2": -1, "anchor": [0, 1, 0], "axis": [0, 0, 1], )";

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "world/WorldJson.h"
+#include "world_file_error_of.h"
 
 namespace {
 
@@ -21,14 +22,7 @@ std::string worldWith(const std::string& measures, const std::string& top = "") 
          measures + "}";
 }
 
-std::string errorOf(const std::string& text) {
-  try {
-    worldFromJson(text);
-  } catch (const WorldFileError& error) {
-    return error.what();
-  }
-  return "(accepted)";
-}
+std::string errorOf(const std::string& text) { return worldFileErrorOf(text); }
 
 TEST(WorldProbe, ReadsBackAsWritten) {
   const World w = worldFromJson(worldWith(
