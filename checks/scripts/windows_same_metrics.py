@@ -24,7 +24,7 @@ import tempfile
 
 # Readings of the clock, not of the simulation: they differ from run to run.
 CLOCK = re.compile(r"^(wall_seconds|real_time_factor|ms_per_step|cpu_ms_per_step|collide_step_seconds|engine_wall_seconds|"
-                   r"longest_frame_ms)$")
+                   r"link_wall_seconds|longest_frame_ms)$")
 TIMEOUT_S = 300
 
 
