@@ -288,7 +288,7 @@ def measured_rows():
                 {"a": q("limit-test10.csv", "max_velocity", step_s=0.01),
                  "b": q("limit-test10.csv", "max_velocity", step_s=0.001),
                  "c": q("limit-test10.csv", "max_velocity", step_s=0.0001)}, "a < b < c")],
-         None, peer_cell("test10", True, "{v:k2} m/s over random phases")),
+         None, peer_cell("test10", True, "{v:k2} m/s (phase scan)")),
     ]
 
 
