@@ -16,3 +16,13 @@ add_test(NAME lab_atlas_committed_report_made_from_its_csvs
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_atlas_report.py
                  ${CMAKE_SOURCE_DIR}/doc/atlas-report)
 set_tests_properties(lab_atlas_committed_report_made_from_its_csvs PROPERTIES LABELS lab)
+# What the programs and the docs say of each engine is what the atlas measured:
+# --list-engines prints the committed atlas-notes.csv (compiled in), and every
+# [atlas: ...] tag in a hand-written note holds to atlas.csv.
+add_test(NAME list_engines_prints_the_committed_atlas_notes
+         COMMAND ${Python3_EXECUTABLE} ${ODELAB_CHECK_SCRIPTS}/list_engines_atlas_notes.py $<TARGET_FILE:odelab>
+                 ${CMAKE_SOURCE_DIR}/doc/atlas-report/atlas-notes.csv)
+set_tests_properties(list_engines_prints_the_committed_atlas_notes PROPERTIES LABELS lab)
+add_test(NAME engine_notes_hold_to_the_atlas
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/lab/check_engine_claims.py ${CMAKE_SOURCE_DIR})
+set_tests_properties(engine_notes_hold_to_the_atlas PROPERTIES LABELS lab)

@@ -1,5 +1,6 @@
 #include "CommandLine.h"
 
+#include "world/AtlasNotes.h"
 #include "world/EngineCatalog.h"
 
 #include <sys/stat.h>
@@ -93,7 +94,11 @@ std::string enginesText() {
     out << '\n';
     if (!engine.available) out << "  missing: " << engine.missing << '\n';
     if (!engine.bestSettings.empty()) out << "  best settings: " << engine.bestSettings << '\n';
+    out << world::atlasNoteLines(engine.name);
   }
+  if (*world::atlasNotesMade())
+    out << "(measured: the accuracy atlas of " << world::atlasNotesMade()
+        << ", doc/atlas-report/ATLAS.md; each case's answer is analytic, doc/atlas.md)\n";
   return out.str();
 }
 

@@ -95,6 +95,39 @@ def engine_sentences(rows, engine):
     return " ".join(out)
 
 
+NOTE_COLUMNS = ("engine", "setting", "step", "right", "cases", "not_right")
+
+
+def _not_right_text(row):
+    """"bounce-v1-e0p25 off 3 tol": a case and how it ended, with no comma,
+    so a program can read atlas-notes.csv by splitting its lines."""
+    worst = _number(row["worst_tolerances"])
+    text = f"{row['case']} {row['mark']}"
+    if row["mark"] == "off" and worst is not None:
+        text += f" {md.num(worst, 2)} tol"
+    elif row["mark"] == "no figure" and row["worst_probe"]:
+        text += f" ({row['worst_probe']})"
+    if "," in text:
+        raise ValueError(f"atlas-notes.csv: a comma in '{text}' (case and probe names have none)")
+    return text
+
+
+def note_rows(rows):
+    """atlas-notes.csv: per engine and setting at the shown step, how many
+    cases it gets right and which it does not. Programs compile it in and
+    print it with --list-engines (cmake/AtlasNotes.cmake), so what an engine
+    is said to do comes from its measurement."""
+    out = []
+    at = [r for r in rows if r["step"] == SHOWN_STEP]
+    for engine in _engines(at):
+        for setting in dict.fromkeys(r["setting"] for r in at if r["engine"] == engine):
+            mine = [r for r in at if r["engine"] == engine and r["setting"] == setting]
+            out.append(dict(engine=engine, setting=setting, step=SHOWN_STEP,
+                            right=sum(r["mark"] == "right" for r in mine), cases=len(mine),
+                            not_right="; ".join(_not_right_text(r) for r in mine if r["mark"] != "right")))
+    return out
+
+
 def markdown(rows, engine_rows, files):
     """The atlas's part of the report from atlas.csv's rows and
     atlas-engines.csv's (which engines ran here, and why not)."""

@@ -116,7 +116,7 @@ class Surfaces(unittest.TestCase):
 
 
 LIST_ENGINES = """ode: available, double
-  best settings: the scene's own settings (ODE is the reference)
+  best settings: the scene's own settings (--engine-setting is for the other engines; the atlas's ODE best is --solver step)
 bullet: available, version 3.24, double
   best settings: at least 100 solver iterations
 mujoco: not available, version 2.2.2, double

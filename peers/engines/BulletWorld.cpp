@@ -189,10 +189,12 @@ int BulletWorld::contactCount() const {
 
 std::string BulletWorld::bestSettingsText() {
   return "at least " + std::to_string(BEST_ITERATIONS) +
-         " solver iterations (sequential impulses converge slowly across large mass ratios); joint ERP " +
+         " solver iterations (sequential impulses converge slowly across large mass ratios "
+         "[atlas: bullet default heavy-on-light-10 off; bullet best heavy-on-light-10 right]); joint ERP " +
          number(BEST_JOINT_ERP) +
          " on every joint, its own ERP included (Bullet's drift correction at 0.2 lets joints drift and feeds "
-         "energy into a pendulum); "
+         "energy into a pendulum [atlas: bullet default double-pendulum-energy off; bullet best "
+         "double-pendulum-energy right]); "
          "when a surface bounces, exact bounce: contact processing threshold 0 (no speculative contacts) and "
          "contact ERP 0 (no penetration recovery); continuous collision on every moving body (motion threshold " +
          number(CCD_MOTION_FRACTION) + " and swept sphere " + number(CCD_SPHERE_FRACTION) +

@@ -110,7 +110,7 @@ std::vector<std::string> notesOf(const SurfaceLosses& losses, world::EngineSetti
   }
   if (!losses.bounceVelocities.empty())
     notes.push_back("the bounce threshold bounce_velocity " + span(losses.bounceVelocities, " m/s") +
-                    " is not applied: MuJoCo's spring contact rebounds at every impact speed");
+                    " is not applied: MuJoCo's spring contact has no threshold");
   if (losses.softness)
     notes.push_back("a surface's own ERP or CFM (soft_erp, soft_cfm) has no MuJoCo equivalent: the contact is "
                     "softened by MuJoCo's solref and solimp instead");

@@ -18,7 +18,7 @@ std::vector<EngineInfo> knownEngines() {
   ode.name = "ode";
   ode.available = true;
   ode.precision = sizeof(dReal) == 8 ? "double" : "single";
-  ode.bestSettings = "the scene's own settings (ODE is the reference)";
+  ode.bestSettings = "the scene's own settings (--engine-setting is for the other engines; the atlas's ODE best is --solver step)";
   std::vector<EngineInfo> engines{ode};
   if (installed().list)
     for (EngineInfo& info : installed().list()) engines.push_back(std::move(info));

@@ -99,6 +99,9 @@ def atlas_outcome(ctx, files):
     from ..plots import atlas as plots
     rows = read_csv(ctx.out_dir / files[0])[2]
     engine_rows = read_csv(ctx.out_dir / files[1])[2]
+    files = files + [ctx.write_csv("atlas-notes", list(atlas_text.NOTE_COLUMNS), atlas_text.note_rows(rows), notes=[
+        f"what odelab --list-engines says each engine does, from atlas.csv: at step {atlas_text.SHOWN_STEP} s, "
+        "per setting, the cases it gets right out of all, and the others with their mark"])]
     for family in dict.fromkeys(r["family"] for r in rows):
         ctx.register_files(plots.heat_map(ctx.out_dir, atlas_text.family_stem(family), family,
                                           [r for r in rows if r["family"] == family]))

@@ -24,7 +24,7 @@ function commonNotes(world, notes, engine, has = {}) {
     if (sf.softCfm !== undefined) notes.add(`a surface's soft CFM ${fmt(sf.softCfm)} has no counterpart in ${engine}: its contacts are rigid`);
     if (sf.approx1) notes.add(`ODE's friction pyramid (friction_pyramid) is not chosen in ${engine}, which uses its own friction model`);
     if (sf.bounce && sf.bounceVelocity > 0 && !has.bounceVelocity)
-      notes.add(`${engine} applies restitution at every impact speed: ODE's bounce velocity ${fmt(sf.bounceVelocity)} m/s (no bounce below it) is not applied`);
+      notes.add(`${engine} has no bounce threshold: ODE's bounce velocity ${fmt(sf.bounceVelocity)} m/s (no bounce below it) is not applied`);
   }
   const caps = world.bodies.filter((b) => b.maxAngularSpeed !== Infinity);
   if (caps.length && !has.maxAngularSpeed)
