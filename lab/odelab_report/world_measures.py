@@ -13,6 +13,13 @@ Every measurement has a scale, and a run's deviation is
 - "count": a count of events (bodies through a wall): any difference is one
   event or more, so the scale is 1 and only an equal count is within 1%.
 
+A `probe` (one number of a body's state, doc/world-format.md) is relative to
+its `expect` where the world states one other than 0, so "within 1%" is
+within 1% of the analytic answer; an `expect` of 0 has no size of its own,
+so the probe's own stated tolerance counts as 1% of one (scale: 100
+tolerances), and "within 1%" is within the tolerance the world states;
+without `expect` it is relative to the finer run's value.
+
 A world without `measures` (or an odelab that does not know the field yet)
 gives no measurement of its own: then the run's own numeric metrics that
 describe the physics (contacts, sleeping bodies) are compared, as counts."""
@@ -112,9 +119,24 @@ def measurements(world):
                     continue  # nothing moving has a size: no length to compare with
                 scale, text = length, f"{length:.3g} m, the smallest geom on a body"
             found.append(Measurement(name, kind, rule, scale, text, measure))
+        if kind == "probe":
+            found.append(probe_measurement(measure))
     if not found:
         found = [Measurement(name, "run", COUNT, 1.0, "1") for name in FALLBACK]
     return found
+
+
+def probe_measurement(measure):
+    """A probe's `<name>_value`, scaled as the module's docstring says."""
+    name = f"{measure.get('name') or 'probe' + str(measure.get('body', 0))}_value"
+    expect = measure.get("expect")
+    if isinstance(expect, (int, float)) and expect == 0:
+        tolerance = measure.get("tolerance")
+        if isinstance(tolerance, (int, float)) and tolerance > 0:
+            return Measurement(name, "probe", ABSOLUTE, 100 * float(tolerance),
+                               f"{100 * tolerance:g}: its expect is 0, so its own tolerance {tolerance:g} "
+                               "counts as 1%", measure)
+    return Measurement(name, "probe", RELATIVE, None, "", measure)
 
 
 def from_metrics(world, metrics):

@@ -144,6 +144,9 @@ def reference_of(world, measurement):
     if name == "energy_drift" and "expect" in measure:
         return Reference(ANALYTIC, f"an energy drift of {measure['expect']:g} (the world's expect)",
                          float(measure["expect"]))
+    if kind == "probe" and isinstance(measure.get("expect"), (int, float)):
+        return Reference(ANALYTIC, f"{measure['expect']:g}, the answer the world states for the probe "
+                                   f"{measure.get('name', name)}", float(measure["expect"]))
     if kind == "energy":
         conserved, why = energy_conserved(world)
         if conserved:
@@ -162,6 +165,8 @@ def step_resolution(world, measurement, step):
     measure = measurement.measure or {}
     if measurement.name.endswith("_period_s") or measurement.name == "time_to_rest_s":
         return step
+    if measurement.kind == "probe" and measure.get("take") == "first_crossing":
+        return step  # a probe's first crossing is a time
     if measurement.kind == "ballistic" and math.isfinite(measure.get("until", math.inf)):
         return _fastest_speed(world, measure["body"], measure["until"]) * step
     return None

@@ -75,6 +75,41 @@ class References(unittest.TestCase):
         self.assertAlmostEqual(dev, 0.02)
 
 
+class Probes(unittest.TestCase):
+    def test_a_probe_with_expect_is_graded_against_the_worlds_answer(self):
+        w = world("head_on_probes")
+        ms = {m.name: m for m in wm.measurements(w)}
+        self.assertEqual(list(ms), ["v0_after_value", "v1_after_value", "passes_value"])
+        self.assertEqual({n: wr.reference_of(w, m).kind for n, m in ms.items()}, dict.fromkeys(ms, wr.ANALYTIC))
+        # An answer other than 0: relative to it (1% of 2 m/s is 0.02 m/s).
+        m = ms["v1_after_value"]
+        self.assertAlmostEqual(wr.grade(w, m, wr.reference_of(w, m), 1.98, None, 0.001)[0], 0.01)
+        # An answer of 0 has no size: the probe's own tolerance counts as 1% (half of it: 0.5%).
+        m = ms["v0_after_value"]
+        self.assertAlmostEqual(wr.grade(w, m, wr.reference_of(w, m), 0.005, None, 0.001)[0], 0.005)
+        # A crossing time within one step of the answer is the step's timing, not an error.
+        m = ms["passes_value"]
+        self.assertEqual(wr.grade(w, m, wr.reference_of(w, m), 0.6508, None, 0.001), (0.0, True))
+        # A probe that never read (the crossing never came) is as far as can be.
+        self.assertEqual(wr.grade(w, m, wr.reference_of(w, m), None, None, 0.001), (math.inf, False))
+
+    def test_a_probe_without_expect_is_its_engines_own_finer_run(self):
+        w = world("head_on_probes")
+        del w["measures"][1]["expect"], w["measures"][1]["tolerance"]
+        m = [m for m in wm.measurements(w) if m.name == "v1_after_value"][0]
+        self.assertEqual(wr.reference_of(w, m).kind, wr.SELF)
+        self.assertAlmostEqual(wr.grade(w, m, wr.reference_of(w, m), 1.9, 2.0, 0.001)[0], 0.05)
+
+    def test_exact_velocities_outrank_a_lossy_collision(self):
+        w = world("head_on_probes")
+        exact = dict(v0_after_value=0.0, v1_after_value=2.0, passes_value=0.6504)
+        lossy = dict(v0_after_value=0.001, v1_after_value=1.997, passes_value=0.6511)  # 0.15% lost
+        devs = {"lossy": graded(w, lossy, lossy, 0.001), "exact": graded(w, exact, exact, 0.001)}
+        self.assertEqual(devs["exact"], 0.0)
+        self.assertAlmostEqual(devs["lossy"], 0.0017, places=4)  # the crossing 1.1 ms late, out of 0.65 s
+        self.assertEqual(ranking(devs), ["exact"])
+
+
 class ExactIsNeverRankedBelow(unittest.TestCase):
     def test_elastic_collision(self):
         w = world("elastic_unequal_spheres")
