@@ -45,7 +45,10 @@ def pct(fraction, digits=2):
     if value == 0:
         return "0%"
     whole = int(math.floor(math.log10(abs(value)))) + 1
-    return f"{value:.{max(digits, whole)}g}%"
+    text = f"{value:.{max(digits, whole)}g}"
+    if "e" in text:  # rounding carried into a new digit (99.5 -> 1e+02): one more digit
+        text = f"{value:.{max(digits, whole + 1)}g}"
+    return text + "%"
 
 
 def table(columns, rows):

@@ -125,5 +125,12 @@ class EverySentenceARule(unittest.TestCase):
         self.assertEqual(check_report.check_rules(self.folder), [])
 
 
+class Percentages(unittest.TestCase):
+    def test_a_share_that_rounds_up_to_a_new_digit_is_still_a_plain_percentage(self):
+        from odelab_report import markdown as md
+        self.assertEqual([md.pct(0.995), md.pct(0.5), md.pct(0.00123), md.pct(123.4)],
+                         ["99.5%", "50%", "0.12%", "12340%"])
+
+
 if __name__ == "__main__":
     unittest.main()
