@@ -78,8 +78,22 @@ const std::vector<std::string> VALID = {
     R"({"key with spaces": 1, "": 2, "k\u0065y": 3})", "[1,2,3,4,5,6,7,8,9,10]",
 };
 
+// Numbers at the very end of the text are left to nlohmann (the C library
+// needs a character after the number to stop at): each also in an array and
+// before a line break, which the table reads itself.
+std::vector<std::string> validTexts() {
+  std::vector<std::string> texts = VALID;
+  for (const std::string& text : VALID)
+    if (!text.empty() && (text[0] == '-' || (text[0] >= '0' && text[0] <= '9'))) {
+      texts.push_back("[" + text + "]");
+      texts.push_back(text + "\n");
+      texts.push_back("{\"n\": " + text + "}");
+    }
+  return texts;
+}
+
 TEST(JsonDocument, HoldsWhatNlohmannReads) {
-  for (const std::string& text : VALID) {
+  for (const std::string& text : validTexts()) {
     const JsonDocument document(text);
     ASSERT_FALSE(document.problems().tooDeep) << text;
     ASSERT_TRUE(document.root()) << text;
