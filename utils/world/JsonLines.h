@@ -7,6 +7,8 @@
 // after it; this one pass over the text does all three, in time and memory
 // linear in the text: the stack of open arrays and objects is bounded by
 // MAX_JSON_DEPTH, and a path is spelt out only when something is reported.
+// The world reader makes this pass only for a text it refuses: a text that
+// reads needs no line (JsonDocument.h reads it, and notes what this pass places).
 
 #include <string>
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "FormatRanges.h"
+#include "JsonDocument.h"
 #include "JsonLines.h"
 #include "SafeFile.h"
 #include "WorldFromMjcf.h"
@@ -91,49 +93,53 @@ bool nearly(const std::string& typed, const std::string& meant) {
 // otherwise be a default silently taken).
 class Reader {
  public:
-  Reader(const json& object, std::string path) : object_(object), path_(std::move(path)) {
-    if (!object_.is_object()) fail(path_, "must be an object");
+  Reader(JsonValue object, std::string path) : object_(object), path_(std::move(path)) {
+    if (!object_.isObject()) fail(path_, "must be an object");
   }
   ~Reader() noexcept(false) {
     if (std::uncaught_exceptions()) return;
-    for (const auto& item : object_.items())
-      if (!used(item.key())) {
-        std::string meant;
-        for (const std::string_view field : used_)
-          if (nearly(item.key(), std::string(field))) meant = ": did you mean \"" + std::string(field) + "\"?";
-        fail(path_ + "." + item.key(), "is not a field of this format (doc/world-format.md lists them)" + meant);
-      }
+    // The first unknown field in the order of the keys' spelling, as it was
+    // when the document was nlohmann's (a sorted map): the same file, the same message.
+    const std::string_view unknown = firstKey([&](std::string_view key) { return !used(key); });
+    if (unknown.data()) {
+      std::string meant;
+      used_.any([&](std::string_view field) {
+        if (nearly(std::string(unknown), std::string(field))) meant = ": did you mean \"" + std::string(field) + "\"?";
+        return false;  // the last one near, as before
+      });
+      fail(path_ + "." + std::string(unknown), "is not a field of this format (doc/world-format.md lists them)" + meant);
+    }
   }
 
-  bool has(const char* key) const { return object_.contains(key); }
+  bool has(const char* key) const { return bool(object_.find(key)); }
   std::string at(const char* key) const { return path_ + "." + key; }
 
   double real(const char* key, double fallback, double low, double high, bool required = false) {
-    const json* value = find(key, required);
-    return value ? realValue(*value, [&] { return at(key); }, low, high) : fallback;
+    const JsonValue value = find(key, required);
+    return value ? realValue(value, [&] { return at(key); }, low, high) : fallback;
   }
   int integer(const char* key, int fallback, int low, int high, bool required = false) {
-    const json* value = find(key, required);
+    const JsonValue value = find(key, required);
     if (!value) return fallback;
-    if (!value->is_number_integer()) fail(at(key), "must be a whole number");
+    if (!value.isInteger()) fail(at(key), "must be a whole number");
     // Above 2^63 a signed read would wrap: refuse it as out of range.
-    if (value->is_number_unsigned() && value->get<unsigned long long>() > static_cast<unsigned long long>(high))
-      fail(at(key), "must be in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " + value->dump());
-    const long long v = value->get<long long>();
+    if (value.isUnsigned() && value.whole() > static_cast<unsigned long long>(high))
+      fail(at(key), "must be in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " + value.dump());
+    const long long v = value.integer();
     if (v < low || v > high) fail(at(key), "must be in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " + std::to_string(v));
     return static_cast<int>(v);
   }
   bool flag(const char* key, bool fallback) {
-    const json* value = find(key, false);
+    const JsonValue value = find(key, false);
     if (!value) return fallback;
-    if (!value->is_boolean()) fail(at(key), "must be true or false");
-    return value->get<bool>();
+    if (!value.isBoolean()) fail(at(key), "must be true or false");
+    return value.boolean();
   }
   std::string text(const char* key, const std::string& fallback, bool required = false) {
-    const json* value = find(key, required);
+    const JsonValue value = find(key, required);
     if (!value) return fallback;
-    if (!value->is_string()) fail(at(key), "must be a string");
-    return value->get<std::string>();
+    if (!value.isString()) fail(at(key), "must be a string");
+    return std::string(value.text());
   }
   // Every item finite and within [-bound, bound] (JSON Schema's "number": no "infinity" here).
   template <size_t N>
@@ -142,32 +148,29 @@ class Reader {
   }
   template <size_t N>
   std::array<double, N> reals(const char* key, const std::array<double, N>& fallback, bool required, double low, double high) {
-    const json* value = find(key, required);
+    const JsonValue value = find(key, required);
     if (!value) return fallback;
-    if (!value->is_array() || value->size() != N) fail(at(key), "must be an array of " + std::to_string(N) + " numbers");
+    if (!value.isArray() || value.size() != N) fail(at(key), "must be an array of " + std::to_string(N) + " numbers");
     std::array<double, N> out{};
     for (size_t i = 0; i < N; ++i)
-      out[i] = realValue((*value)[i], [&] { return at(key) + "[" + std::to_string(i) + "]"; }, low, high);
+      out[i] = realValue(value[i], [&] { return at(key) + "[" + std::to_string(i) + "]"; }, low, high);
     return out;
   }
   std::uint32_t bits(const char* key) {
-    const json* value = find(key, false);
+    const JsonValue value = find(key, false);
     if (!value) return 0xffffffffu;
-    if (!value->is_number_unsigned() || value->get<unsigned long long>() > 0xffffffffull)
-      fail(at(key), "must be a whole number in [0, 4294967295]");
-    return static_cast<std::uint32_t>(value->get<unsigned long long>());
+    if (!value.isUnsigned() || value.whole() > 0xffffffffull) fail(at(key), "must be a whole number in [0, 4294967295]");
+    return static_cast<std::uint32_t>(value.whole());
   }
-  const json* list(const char* key, bool required) {
-    const json* value = find(key, required);
-    if (value && !value->is_array()) fail(at(key), "must be an array");
-    if (value && value->size() > limits::ITEMS)
-      fail(at(key), "holds " + std::to_string(value->size()) + " items; the format allows " + std::to_string(limits::ITEMS));
+  JsonValue list(const char* key, bool required) {
+    const JsonValue value = find(key, required);
+    if (value && !value.isArray()) fail(at(key), "must be an array");
+    if (value && value.size() > limits::ITEMS)
+      fail(at(key), "holds " + std::to_string(value.size()) + " items; the format allows " + std::to_string(limits::ITEMS));
     return value;
   }
-  const json* object(const char* key) {
-    const json* value = find(key, false);
-    return value;
-  }
+  JsonValue object(const char* key) { return find(key, false); }
+  JsonValue value(const char* key) const { return object_.find(key); }
 
   [[noreturn]] static void fail(const std::string& where, const std::string& what) {
     throw WorldFileError(where.rfind("world.", 0) == 0 ? where.substr(6) : where, what);
@@ -177,14 +180,14 @@ class Reader {
   // `where()` spells the value's path, only when it is wrong (a string built per number read would
   // be most of a large file's reading time).
   template <class Where>
-  static double realValue(const json& value, const Where& where, double low, double high) {
+  static double realValue(JsonValue value, const Where& where, double low, double high) {
     const bool unbounded = std::isinf(low) || std::isinf(high);
     double v;
-    if (value.is_string() && (value == "infinity" || value == "-infinity")) {
+    if (value.textIs("infinity") || value.textIs("-infinity")) {
       if (!unbounded) fail(where(), "must be a finite number in [" + shortNumber(low) + ", " + shortNumber(high) + "], got " + value.dump());
-      v = value == "infinity" ? INFINITE : -INFINITE;
-    } else if (value.is_number()) {
-      v = value.get<double>();
+      v = value.textIs("infinity") ? INFINITE : -INFINITE;
+    } else if (value.isNumber()) {
+      v = value.real();
     } else {
       fail(where(), unbounded ? "must be a number (or \"infinity\")" : "must be a number");
     }
@@ -198,32 +201,65 @@ class Reader {
   }
 
  private:
-  const json* find(const char* key, bool required) {
+  JsonValue find(const char* name, bool required) {
+    const std::string_view key = name;  // its length measured once
     if (!used(key)) used_.push_back(key);
-    const auto found = object_.find(key);
-    if (found != object_.end()) return &*found;
+    const JsonValue found = object_.find(key);
+    if (found) return found;
     if (required) {
       // A misspelt field is both missing and unknown: say both.
-      for (const auto& item : object_.items())
-        if (!used(item.key()) && nearly(item.key(), key))
-          fail(at(key), "is missing; the object has \"" + item.key() + "\", which is not a field of this format: did you mean \"" +
-                            key + "\"?");
-      fail(at(key), "is missing");
+      const std::string_view typed = firstKey([&](std::string_view k) { return !used(k) && nearly(std::string(k), name); });
+      if (typed.data())
+        fail(at(name), "is missing; the object has \"" + std::string(typed) + "\", which is not a field of this format: did you mean \"" +
+                           name + "\"?");
+      fail(at(name), "is missing");
     }
-    return nullptr;
+    return {};
   }
 
-  const json& object_;
-  std::string path_;
-  // The fields asked for (a dozen at most: a list searched beats a set's
-  // allocations), with their lengths: comparing with a bare char pointer
-  // measured its length each time, for every field of every object.
-  bool used(std::string_view key) const {
-    for (const std::string_view field : used_)
-      if (key == field) return true;
-    return false;
+  // The first of the object's keys, in the order of their spelling, for which
+  // `wanted` holds; a view with no data when none does. One pass.
+  template <class Wanted>
+  std::string_view firstKey(const Wanted& wanted) const {
+    std::string_view first;
+    for (std::size_t i = 0; i < object_.size(); ++i) {
+      const std::string_view key = object_.key(i);
+      if ((!first.data() || key < first) && wanted(key)) first = key;
+    }
+    return first;
   }
-  std::vector<std::string_view> used_;
+
+  JsonValue object_;
+  std::string path_;
+  // The fields asked for (a dozen or so: a list searched beats a set's
+  // allocations), with their lengths: comparing with a bare char pointer
+  // measured its length each time, for every field of every object. Held in
+  // the Reader itself up to FIELDS of them (a world's largest object asks 17),
+  // so that reading an object allocates nothing.
+  bool used(std::string_view key) const {
+    return used_.any([&](std::string_view field) { return key == field; });
+  }
+  static constexpr std::size_t FIELDS = 24;
+  class Fields {
+   public:
+    void push_back(std::string_view field) {
+      if (count_ < FIELDS) fields_[count_++] = field;
+      else more_.push_back(field);
+    }
+    template <class F>
+    bool any(const F& f) const {
+      for (std::size_t i = 0; i < count_; ++i)
+        if (f(fields_[i])) return true;
+      for (const std::string_view field : more_)
+        if (f(field)) return true;
+      return false;
+    }
+   private:
+    std::array<std::string_view, FIELDS> fields_;
+    std::size_t count_ = 0;
+    std::vector<std::string_view> more_;  // past FIELDS: none in today's format
+  };
+  Fields used_;
 };
 
 Quat unitQuat(Reader& r, const char* key) {
@@ -259,7 +295,7 @@ bool positiveDefinite(const std::array<double, 6>& i) {
   return xx > 0 && minor2 > 0 && det > 0;
 }
 
-Settings readSettings(const json& j) {
+Settings readSettings(JsonValue j) {
   Reader r(j, "settings");
   Settings s;
   // The knobs' ranges (utils/WorldSettings.cpp): what a file sets, a knob can show and move.
@@ -285,7 +321,7 @@ Settings readSettings(const json& j) {
   return s;
 }
 
-Body readBody(const json& j, const std::string& path) {
+Body readBody(JsonValue j, const std::string& path) {
   Reader r(j, path);
   Body b;
   b.mass = r.real("mass", b.mass, limits::MASS_MIN, limits::MASS_MAX, true);
@@ -301,8 +337,8 @@ Body readBody(const json& j, const std::string& path) {
   b.kinematic = r.flag("kinematic", false);
   b.gravity = r.flag("gravity", true);
   b.maxAngularSpeed = r.real("max_angular_speed", INFINITE, 0.0, INFINITE);
-  if (const json* a = r.object("auto_disable")) {
-    Reader ad(*a, path + ".auto_disable");
+  if (const JsonValue a = r.object("auto_disable")) {
+    Reader ad(a, path + ".auto_disable");
     b.autoDisable.on = ad.flag("on", false);
     b.autoDisable.linearThreshold = ad.real("linear_threshold", b.autoDisable.linearThreshold, 0.0, INFINITE);
     b.autoDisable.angularThreshold = ad.real("angular_threshold", b.autoDisable.angularThreshold, 0.0, INFINITE);
@@ -313,7 +349,7 @@ Body readBody(const json& j, const std::string& path) {
   return b;
 }
 
-Geom readGeom(const json& j, const std::string& path, int bodies) {
+Geom readGeom(JsonValue j, const std::string& path, int bodies) {
   Reader r(j, path);
   Geom g;
   g.shape = named(SHAPES, r.text("shape", "", true), r.at("shape"));
@@ -345,7 +381,7 @@ Geom readGeom(const json& j, const std::string& path, int bodies) {
   return g;
 }
 
-Joint readJoint(const json& j, const std::string& path, int bodies) {
+Joint readJoint(JsonValue j, const std::string& path, int bodies) {
   Reader r(j, path);
   Joint k;
   k.kind = named(JOINTS, r.text("type", "", true), r.at("type"));
@@ -377,7 +413,7 @@ Joint readJoint(const json& j, const std::string& path, int bodies) {
   return k;
 }
 
-Surface readSurface(const json& j, const std::string& path) {
+Surface readSurface(JsonValue j, const std::string& path) {
   Reader r(j, path);
   Surface s;
   s.mu = r.real("mu", s.mu, 0.0, INFINITE, true);
@@ -452,7 +488,7 @@ void readProbe(Reader& r, Measure& m, int bodies) {
   if (relative && m.expect == 0) Reader::fail(r.at("relative_tolerance"), "is relative to expect, which is 0: give tolerance");
 }
 
-Measure readMeasure(const json& j, const std::string& path, const World& w) {
+Measure readMeasure(JsonValue j, const std::string& path, const World& w) {
   Reader r(j, path);
   Measure m;
   m.kind = named(MEASURES, r.text("kind", "", true), r.at("kind"));
@@ -491,7 +527,7 @@ Measure readMeasure(const json& j, const std::string& path, const World& w) {
       m.speed = r.real("speed", m.speed, 0.0, INFINITE);
       m.angularSpeed = r.real("angular_speed", m.angularSpeed, 0.0, INFINITE);
       m.hold = r.real("hold", m.hold, 0.0, INFINITE);
-      if (r.has("expect") && j.at("expect").is_string()) {
+      if (r.has("expect") && r.value("expect").isString()) {
         if (r.text("expect", "") != "never")
           Reader::fail(r.at("expect"), "must be a time to rest (s) or \"never\" (the body keeps moving)");
         m.expectNever = true;
@@ -512,7 +548,7 @@ Measure readMeasure(const json& j, const std::string& path, const World& w) {
   return m;
 }
 
-Event readEvent(const json& j, const std::string& path, const World& w) {
+Event readEvent(JsonValue j, const std::string& path, const World& w) {
   Reader r(j, path);
   Event e;
   e.at = r.real("at", 0.0, 0.0, INFINITE, true);
@@ -613,7 +649,7 @@ bool World::mayTouch(int geom1, int geom2) const {
 
 namespace {
 
-World worldFromParsed(const json& root) {
+World worldFromParsed(JsonValue root) {
   World w;
   Reader r(root, "world");
   const std::string format = r.text("format", "", true);
@@ -628,32 +664,32 @@ World worldFromParsed(const json& root) {
   w.description = r.text("description", "");
   w.duration = r.real("duration", 0.0, limits::DURATION_MIN, limits::TIME);
   w.time = r.real("time", 0.0, 0.0, INFINITE);
-  const json* settings = r.object("settings");
+  const JsonValue settings = r.object("settings");
   if (!settings) Reader::fail(r.at("settings"), "is missing");
-  w.settings = readSettings(*settings);
-  if (const json* bodies = r.list("bodies", false)) {
-    w.bodies.reserve(bodies->size());
-    for (size_t i = 0; i < bodies->size(); ++i) w.bodies.push_back(readBody((*bodies)[i], "bodies[" + std::to_string(i) + "]"));
+  w.settings = readSettings(settings);
+  if (const JsonValue bodies = r.list("bodies", false)) {
+    w.bodies.reserve(bodies.size());
+    for (size_t i = 0; i < bodies.size(); ++i) w.bodies.push_back(readBody(bodies[i], "bodies[" + std::to_string(i) + "]"));
   }
   const int bodyCount = static_cast<int>(w.bodies.size());
-  const json* geoms = r.list("geoms", true);
-  w.geoms.reserve(geoms->size());
-  for (size_t i = 0; i < geoms->size(); ++i)
-    w.geoms.push_back(readGeom((*geoms)[i], "geoms[" + std::to_string(i) + "]", bodyCount));
-  if (const json* joints = r.list("joints", false))
-    for (size_t i = 0; i < joints->size(); ++i)
-      w.joints.push_back(readJoint((*joints)[i], "joints[" + std::to_string(i) + "]", bodyCount));
-  const json* surfaces = r.list("surfaces", true);
-  if (surfaces->empty()) Reader::fail(r.at("surfaces"), "needs at least one surface");
-  for (size_t i = 0; i < surfaces->size(); ++i)
-    w.surfaces.push_back(readSurface((*surfaces)[i], "surfaces[" + std::to_string(i) + "]"));
+  const JsonValue geoms = r.list("geoms", true);
+  w.geoms.reserve(geoms.size());
+  for (size_t i = 0; i < geoms.size(); ++i)
+    w.geoms.push_back(readGeom(geoms[i], "geoms[" + std::to_string(i) + "]", bodyCount));
+  if (const JsonValue joints = r.list("joints", false))
+    for (size_t i = 0; i < joints.size(); ++i)
+      w.joints.push_back(readJoint(joints[i], "joints[" + std::to_string(i) + "]", bodyCount));
+  const JsonValue surfaces = r.list("surfaces", true);
+  if (surfaces.size() == 0) Reader::fail(r.at("surfaces"), "needs at least one surface");
+  for (size_t i = 0; i < surfaces.size(); ++i)
+    w.surfaces.push_back(readSurface(surfaces[i], "surfaces[" + std::to_string(i) + "]"));
   const int surfaceCount = static_cast<int>(w.surfaces.size());
   w.defaultSurface = r.integer("default_surface", 0, 0, surfaceCount - 1);
   const int geomCount = static_cast<int>(w.geoms.size());
-  if (const json* pairs = r.list("pair_surfaces", false))
-    for (size_t i = 0; i < pairs->size(); ++i) {
+  if (const JsonValue pairs = r.list("pair_surfaces", false))
+    for (size_t i = 0; i < pairs.size(); ++i) {
       const std::string where = "pair_surfaces[" + std::to_string(i) + "]";
-      Reader p((*pairs)[i], where);
+      Reader p(pairs[i], where);
       const std::array<double, 2> g = p.reals<2>("geoms", {0, 0}, true, limits::ITEMS);
       PairSurface pair;
       for (int k = 0; k < 2; ++k)
@@ -665,22 +701,22 @@ World worldFromParsed(const json& root) {
       pair.surface = p.integer("surface", 0, 0, surfaceCount - 1, true);
       w.pairSurfaces.push_back(pair);
     }
-  if (const json* measures = r.list("measures", false)) {
+  if (const JsonValue measures = r.list("measures", false)) {
     std::set<std::string> kinds;
-    for (size_t i = 0; i < measures->size(); ++i) {
+    for (size_t i = 0; i < measures.size(); ++i) {
       const std::string where = "measures[" + std::to_string(i) + "]";
-      w.measures.push_back(readMeasure((*measures)[i], where, w));
+      w.measures.push_back(readMeasure(measures[i], where, w));
       const Measure& m = w.measures.back();
       // Two of a kind would write the same metrics (ballistic and period: the same name).
       const std::string key = m.name.empty() ? measureName(m.kind) : m.name;
       if (!kinds.insert(key).second) Reader::fail(where, "measures \"" + key + "\" a second time: its metrics would clash");
     }
   }
-  if (const json* events = r.list("events", false)) {
+  if (const JsonValue events = r.list("events", false)) {
     std::set<int> dropped;
-    for (size_t i = 0; i < events->size(); ++i) {
+    for (size_t i = 0; i < events.size(); ++i) {
       const std::string where = "events[" + std::to_string(i) + "]";
-      w.events.push_back(readEvent((*events)[i], where, w));
+      w.events.push_back(readEvent(events[i], where, w));
       const Event& e = w.events.back();
       if (i > 0 && e.at < w.events[i - 1].at) Reader::fail(where + ".at", "events must be in time order");
       if (e.kind == EventKind::Drop && !dropped.insert(e.body).second)
@@ -735,20 +771,35 @@ std::string untagged(const char* message) {
   return tag == std::string::npos ? text : text.substr(tag + 2);
 }
 
-}  // namespace
-
-World worldFromJson(const std::string& text) {
-  // One linear pass first: nesting beyond any world's is refused before
-  // nlohmann builds it, and what nlohmann takes silently (a key given twice:
-  // the last wins) or says late (a missing comma: at the next token) is said here.
-  const JsonShape shape = scanJsonShape(text);
+// The text's shape refused (nested too deep, a key given twice, a missing
+// comma), with its line: JsonLines' scan, a second linear pass, made only
+// when the text is refused, since a text that reads needs no line.
+[[noreturn]] void refuseShape(const JsonShape& shape) {
   if (shape.tooDeepLine)
     throw WorldFileError("line " + std::to_string(shape.tooDeepLine) + ": arrays and objects nested deeper than " +
                          std::to_string(MAX_JSON_DEPTH) + " (a world file needs 4)");
-  json root;
+  throw WorldFileError("line " + std::to_string(shape.duplicateLine) + ": " + shape.duplicatePath +
+                       ": is given twice in one object (which one was meant?)");
+}
+
+}  // namespace
+
+World worldFromJson(const std::string& text) {
+  // The bound the table's offsets rest on: a world text is at most a world file's size.
+  if (text.size() > limits::BYTES)
+    throw WorldFileError("the world text holds " + std::to_string(text.size()) + " bytes; the format allows " +
+                         std::to_string(limits::BYTES));
+  // One pass: nlohmann's lexer into a flat table (JsonDocument.h), which
+  // stops at nesting beyond any world's and notes a key given twice (which
+  // nlohmann would take silently: the last wins). What is refused is then
+  // placed by one more linear pass (JsonLines.h), which also says a missing
+  // comma where it is (nlohmann says it at the next token).
+  std::optional<JsonDocument> document;
   try {
-    root = json::parse(text);
+    document.emplace(text);
   } catch (const json::parse_error& error) {
+    const JsonShape shape = scanJsonShape(text);
+    if (shape.tooDeepLine) refuseShape(shape);
     // Where the scan saw a value followed by neither ',' nor a closer, and
     // nlohmann stopped there too, the mistake is at the end of that value.
     if (shape.missingLine && error.byte >= shape.missingAt)
@@ -756,14 +807,22 @@ World worldFromJson(const std::string& text) {
                            "' is missing after " + shape.missingAfter);
     throw WorldFileError(std::string("not JSON: ") + untagged(error.what()));
   } catch (const json::exception& error) {
+    const JsonShape shape = scanJsonShape(text);
+    if (shape.tooDeepLine) refuseShape(shape);
     // A number beyond a double's range: nlohmann gives no position, so the line is the number's.
     throw WorldFileError(std::string("not a usable number: ") + untagged(error.what()) + numberLine(text, error.what()));
   }
-  if (shape.duplicateLine)
-    throw WorldFileError("line " + std::to_string(shape.duplicateLine) + ": " + shape.duplicatePath +
-                         ": is given twice in one object (which one was meant?)");
+  const JsonDocumentProblems& problems = document->problems();
+  if (problems.tooDeep || problems.duplicateKey) {
+    const JsonShape shape = scanJsonShape(text);
+    if (shape.tooDeepLine || shape.duplicateLine) refuseShape(shape);
+    // The scan compares keys as written; nlohmann's, read with their escapes ("\u0061" is "a").
+    if (problems.tooDeep)
+      throw WorldFileError("arrays and objects nested deeper than " + std::to_string(MAX_JSON_DEPTH) + " (a world file needs 4)");
+    throw WorldFileError("\"" + problems.duplicate + "\": is given twice in one object (which one was meant?)");
+  }
   try {
-    return worldFromParsed(root);
+    return worldFromParsed(document->root());
   } catch (const WorldFileError& error) {
     if (error.field().empty()) throw;
     const int line = lineOfPath(text, error.field());
