@@ -1,6 +1,6 @@
-// The world reader's JSON table (utils/world/JsonDocument.h) reads plain
-// text itself and leaves the rest to nlohmann: whichever way a text goes,
-// what it holds must be exactly what nlohmann::json::parse makes of it (the
+// The world reader's JSON table (utils/world/JsonDocument.h), filled from
+// nlohmann's SAX events: what it holds must be exactly what
+// nlohmann::json::parse makes of it (the
 // same kinds of number, the same doubles, the same keys in the same places),
 // and a text nlohmann refuses must be refused with nlohmann's own exception
 // and message. Also its bounds: nesting past MAX_JSON_DEPTH stops the
@@ -63,8 +63,8 @@ void expectSame(const json& expected, const json& got, const std::string& where)
   }
 }
 
-// Plain texts (read by the table itself) and texts only nlohmann reads
-// (escapes, letters past ASCII, a byte-order mark): both ways, nlohmann's values.
+// Plain texts and texts with escapes, letters past ASCII, a byte-order mark:
+// nlohmann's values, each.
 const std::vector<std::string> VALID = {
     R"({"format": "odelab-world", "version": 1, "settings": {"step": 0.001, "gravity": [0, -9.81, 0]},
         "bodies": [{"mass": 1, "inertia": [0.1667, 0.1667, 0.1667, 0, 0, 0], "position": [0, 1e-3, -2.5E+2]}],

@@ -8,12 +8,12 @@
 // buffer, and an array's or object's items are a run of indices in another:
 // a handful of allocations for the whole text, time and memory linear in it.
 //
-// Who reads the text: plain JSON (what exporters write and people type:
-// ASCII strings without escapes, numbers, literals) is read here directly;
-// any other text, valid or not, is read again from its start by nlohmann's
-// SAX parser, so that what is accepted, each number's value, and each
+// Who reads the text: nlohmann's SAX parser, whose events fill the table as
+// they come, so that what is accepted, each number's value, and each
 // refusal's exception and message are nlohmann's (checks/unit/test_json_document.cpp
-// holds the two ways to the same values and messages).
+// holds the table to json::parse's values and messages). Its lexer is most
+// of what is left of the time; a lexer of our own would be faster and would
+// be a second JSON reader to keep right.
 //
 // Bounds, each checked as the text is read: arrays and objects nested at most
 // MAX_JSON_DEPTH deep (JsonLines.h); a key given twice in one object is found
