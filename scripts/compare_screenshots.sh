@@ -10,7 +10,10 @@
 # {running,paused}.png, each frame 20 (--frames), and its help (H) over it,
 # compare_test2_<size>_help.png; and a world file on every engine, one view
 # each, its bodies edged in each engine's colour:
-# compare_world_tumbling_brick_1280x720.png. Reduced to 256 colours with
+# compare_world_tumbling_brick_1280x720.png; and an atlas case with its
+# analytic ghost (doc/world-format.md, "ghost") on every engine, the ball
+# risen from its first bounce, at both sizes:
+# compare_world_bounce-v5-e0p5_ghost_<size>.png. Reduced to 256 colours with
 # pngquant where it is installed.
 #
 #   scripts/compare_screenshots.sh [OUT_DIR]   (default: doc/screenshots)
@@ -89,3 +92,16 @@ done
 # these sizes, so its views would show the ground alone.)
 engines=$all_engines shot compare_world_tumbling_brick_1280x720 1280x720 odelab --world "$root/doc/worlds/tumbling_brick.json" \
   --frames 20 --events "$work/views_paused.events"
+
+# An atlas case with its ghost on every engine: bounce-v5-e0p5 at 0.7 s, the
+# ball 0.19 s after its first impact (t = v/g = 0.51 s) on its way to the
+# apex e^2 h (t = 0.76 s), where the engines' bounces have parted from the
+# analytic one the dark grey ghost draws. The panel hidden for room; at
+# 1024x768 the text a size smaller, so that six of the seven views' labels
+# fit at their tops, clear of the ball.
+for size in 1280x720 1024x768; do
+  text=()
+  if [ "$size" = 1024x768 ]; then text=(--text-size 13); fi
+  engines=$all_engines shot "compare_world_bounce-v5-e0p5_ghost_$size" "$size" odelab \
+    --world "$root/doc/atlas/bounce-v5-e0p5.json" --seconds 0.7 --no-panel "${text[@]}"
+done

@@ -20,6 +20,10 @@ class App;
 
 namespace odelab {
 
+namespace world {
+class GhostMotion;
+}
+
 // The base of every test: the fixed-step loop and the hooks a scene fills
 // in. It holds its parts as members, each with one job: WorldRun (world,
 // space, objects, counters, blow-up test; creates and destroys the world),
@@ -114,6 +118,10 @@ class AbstractWindow {
   // compact HUD's), or "" when it has none.
   std::string headline() const;
   virtual SceneBounds bounds() const { return {{0, 0, 0}, 12.0}; }
+  // A world file's ghost (world/GhostLaw.h): one body's analytic motion,
+  // which the window draws at run().simulatedTime() beside the engines'
+  // bodies; null where the scene states none.
+  virtual const world::GhostMotion* ghost() const { return nullptr; }
   bool handleKey(SDL_Keycode key, bool shift);  // false if unbound
   // The panel's change of knob `index` (in tuning().knobs()), recorded for rewind.
   void changeKnob(int index, double value);

@@ -18,6 +18,7 @@ const Entry ENGINE_COLOURS[] = {
     {"physx", {230, 40, 40, "red"}},
 };
 const EngineColour OTHER_COLOUR = {240, 240, 240, "white"};
+const EngineColour GHOST_COLOUR = {45, 45, 45, "dark grey"};
 
 const Entry* find(const std::string& engine) {
   for (const Entry& e : ENGINE_COLOURS)
@@ -31,6 +32,8 @@ const EngineColour& engineColour(const std::string& engine) {
   const Entry* e = find(engine);
   return e ? e->colour : OTHER_COLOUR;
 }
+
+const EngineColour& ghostColour() { return GHOST_COLOUR; }
 
 bool hasOwnColour(const std::string& engine) { return find(engine) != nullptr; }
 

@@ -22,6 +22,11 @@ const EngineColour& engineColour(const std::string& engine);
 // Whether the table has `engine` (false: it is drawn in the fallback white).
 bool hasOwnColour(const std::string& engine);
 
+// The analytic ghost's colour (GhostDraw.h): a neutral dark grey, no
+// engine's (at least as far from each engine's colour and the fallback white
+// as the engines are from one another), dark on the sky and the ground alike.
+const EngineColour& ghostColour();
+
 // The plot's legend: "ode blue, bullet orange, ..." for `engines` in order.
 std::string colourLegend(const std::vector<std::string>& engines);
 

@@ -21,6 +21,7 @@
 #include "DebugDraw.h"
 #include "EventPlayer.h"
 #include "FrameProfile.h"
+#include "GhostDraw.h"
 #include "GlWindow.h"
 #include "HelpOverlay.h"
 #include "HudText.h"
@@ -93,6 +94,7 @@ struct Views {
         debug(shaderDir),
         plot(shaderDir),
         compare(shaderDir),
+        ghost(shaderDir),
         panel(window.sdlWindow(), window.glContext(), fontPath,
               textPixelsFor(options.textSize, window.height()),
               options.panel) {}
@@ -101,6 +103,7 @@ struct Views {
   DebugDraw debug;
   LivePlot plot;
   CompareViews compare;
+  GhostDraw ghost;
   ControlPanel panel;
   HelpOverlay help;
   TextBlock notice{200};
@@ -296,6 +299,9 @@ void FrameLoop::draw() {
   if (lanes_ && scene_.session().hudMode() != HudMode::Off) {
     insertCompareLines(hud, oneRow, lanes_->timingLine(), views_.compare.hudLine());
   }
+  // A world file's ghost says what it draws (every view draws it, so the one HUD line serves them all).
+  if (scene_.ghost() && scene_.session().hudMode() != HudMode::Off)
+    insertGhostLine(hud, oneRow, GhostDraw::hudLine(*scene_.ghost()));
   hudStrip_ = views_.text.layoutHud(hud, width, height * HUD_MAX_PERCENT / 100, scene_.session().hudMode() == HudMode::Full,
                                     oneRow);
   const int sceneHeight = std::max(1, height - hudStrip_);
@@ -308,6 +314,7 @@ void FrameLoop::draw() {
     const bool dragging = input_.dragLine(scene_, grabbed, target);
     views_.compare.drawEdges(scene_, scene_.engine().active() ? scene_.engine().engineName() : "ode",
                              views_.renderer.viewProjection());
+    views_.ghost.draw(scene_, views_.renderer.viewProjection());
     views_.debug.draw(scene_, views_.renderer.viewProjection(), dragging, grabbed, target);
     views_.renderer.present();
   }
@@ -349,6 +356,7 @@ void FrameLoop::drawCompare(int width, int height, int sceneHeight) {
     }
     views_.renderer.renderView(lane, scene_.camera(), r.x, height - r.y - r.height, r.width, r.height);
     views_.compare.drawEdges(lane, lanes_->lanes()[r.lane].engine, views_.renderer.viewProjection());
+    views_.ghost.draw(lane, views_.renderer.viewProjection());
     views_.debug.draw(lane, views_.renderer.viewProjection(), dragging && r.lane == 0, grabbed, target);
     if (views_.compare.merged()) views_.compare.drawOutlines(*lanes_, views_.renderer.viewProjection());
     views_.renderer.present();

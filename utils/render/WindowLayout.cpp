@@ -23,6 +23,13 @@ int panelCoveredWidth(int windowWidth, int textPixels) {
   return static_cast<int>(width) + 2 * PANEL_MARGIN;
 }
 
+void insertGhostLine(std::vector<std::string>& hud, std::vector<bool>& oneRow, const std::string& line) {
+  const long at = std::min<long>(1, static_cast<long>(hud.size()));
+  hud.insert(hud.begin() + at, line);
+  oneRow.resize(hud.size() - 1, false);
+  oneRow.insert(oneRow.begin() + at, false);
+}
+
 void insertCompareLines(std::vector<std::string>& hud, std::vector<bool>& oneRow, const std::string& timing,
                         const std::string& layout) {
   const long at = std::min<long>(3, static_cast<long>(hud.size()));

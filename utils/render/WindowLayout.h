@@ -25,6 +25,10 @@ int textPixelsFor(int requested, int windowHeight);
 // wide with text `textPixels` high, its margins included (while it shows).
 int panelCoveredWidth(int windowWidth, int textPixels);
 
+// A world file's ghost line (GhostDraw::hudLine) put after the scene's
+// headline, so it shows near the top in the compact HUD as in the full one.
+void insertGhostLine(std::vector<std::string>& hud, std::vector<bool>& oneRow, const std::string& line);
+
 // A compare window's two HUD lines (each engine's ms/step, the layout and
 // its key) put after the scene's first three lines, with their oneRow marks:
 // both are broken between items rather than cut, so every engine's figure

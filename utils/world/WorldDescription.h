@@ -166,6 +166,18 @@ struct Event {
   Vec3 impulse{0, 0, 0};  // push: N s, at the centre of mass
 };
 
+// A body's analytic motion, drawn as a ghost beside what the engines make of
+// it (doc/world-format.md, "ghost"): every figure of the law comes from the
+// world itself (the body's start state, gravity, the ground's surface), so
+// the file states only which body and which law. GhostLaw.h computes it.
+enum class GhostLaw { Ballistic, Bounce, Pendulum };
+
+struct Ghost {
+  bool on = false;  // false: the file states none
+  int body = -1;    // index in bodies
+  GhostLaw law = GhostLaw::Ballistic;
+};
+
 struct World {
   int version = FORMAT_VERSION;
   std::string scene;    // the program that exported it ("test4"), or the user's name
@@ -182,6 +194,7 @@ struct World {
   std::vector<PairSurface> pairSurfaces;
   std::vector<Measure> measures;
   std::vector<Event> events;  // in time order
+  Ghost ghost;
   // In memory only: what an imported file (MJCF) has that this format does
   // not carry, one line each, said before the run and in the metrics.
   std::vector<std::string> notes;
@@ -195,5 +208,6 @@ struct World {
 const char* shapeName(ShapeKind kind);
 const char* jointName(JointKind kind);
 const char* measureName(MeasureKind kind);
+const char* ghostLawName(GhostLaw law);
 
 }  // namespace odelab::world

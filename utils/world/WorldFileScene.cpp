@@ -57,6 +57,7 @@ WorldFileScene::WorldFileScene(World world) : AbstractWindow(settingsFrom(world)
     const auto found = jointIndex_.find(j);
     return found == jointIndex_.end() ? -1 : found->second;
   };
+  if (world_.ghost.on) ghost_ = std::make_unique<GhostMotion>(world_);
   fileMu_ = world_.surfaces[world_.defaultSurface].mu;
   useContactChoices(fileMu_);
   for (Knob& knob : tuning().knobs())
@@ -353,6 +354,26 @@ void WorldFileScene::initialCamera(Camera& camera) const {
     for (size_t k = 0; k < 3; ++k) {
       low[k] = std::min(low[k], j.anchor[k] - reach);
       high[k] = std::max(high[k], j.anchor[k] + reach);
+    }
+  }
+  // A ghost's path over the run (its law's poses), so that the answer and
+  // the bodies following it stay in view: a dropped ball's fall to the ground.
+  if (ghost_) {
+    const double run = world_.duration > 0 ? world_.duration : defaultHeadlessSeconds();
+    const int samples = 64;
+    for (int i = 0; i <= samples; ++i) {
+      const GhostPose pose = ghost_->at(run * i / samples);
+      for (const Geom& g : ghost_->shapes()) {
+        const double reach = std::sqrt(g.position[0] * g.position[0] + g.position[1] * g.position[1] +
+                                       g.position[2] * g.position[2]) +
+                             (g.shape == ShapeKind::Box ? std::sqrt(g.size[0] * g.size[0] + g.size[1] * g.size[1] +
+                                                                     g.size[2] * g.size[2]) / 2
+                                                        : g.size[0] + g.size[1] / 2);
+        for (size_t k = 0; k < 3; ++k) {
+          low[k] = std::min(low[k], pose.position[k] - reach);
+          high[k] = std::max(high[k], pose.position[k] + reach);
+        }
+      }
     }
   }
   if (low[0] > high[0]) return AbstractWindow::initialCamera(camera);

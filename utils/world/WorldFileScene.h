@@ -10,6 +10,7 @@
 
 #include "AbstractWindow.h"
 #include "EngineLink.h"
+#include "GhostLaw.h"
 #include "WorldDescription.h"
 #include "WorldMeasures.h"
 
@@ -21,6 +22,7 @@ class WorldFileScene : public AbstractWindow {
   explicit WorldFileScene(World world);
   ~WorldFileScene() override;
   SceneBounds bounds() const override;
+  const GhostMotion* ghost() const override { return ghost_.get(); }
   // The window's title: the file's own, or its exporting program's, or the file name.
   std::string fileTitle(const std::string& path) const;
 
@@ -58,6 +60,7 @@ class WorldFileScene : public AbstractWindow {
   FileOrigin origin_;
   std::vector<AbstractObject*> bodyOwner_;  // per body: the object whose body it is, null until dropped in
   std::unique_ptr<WorldMeasures> measures_;
+  std::unique_ptr<GhostMotion> ghost_;  // null: the file states none
   size_t nextEvent_ = 0;
   bool warned_ = false;  // overlaps are said once, not again on R
 };

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "FormatRanges.h"
+#include "GhostLaw.h"
 #include "JsonDocument.h"
 #include "JsonLines.h"
 #include "SafeFile.h"
@@ -56,6 +57,8 @@ const std::map<MeasureKind, const char*> MEASURES = {
     {MeasureKind::Tunnelling, "tunnelling"},   {MeasureKind::Ballistic, "ballistic"},
     {MeasureKind::Period, "period"},           {MeasureKind::Rest, "rest"},
     {MeasureKind::Probe, "probe"}};
+const std::map<GhostLaw, const char*> GHOST_LAWS = {
+    {GhostLaw::Ballistic, "ballistic"}, {GhostLaw::Bounce, "bounce"}, {GhostLaw::Pendulum, "pendulum"}};
 const std::map<ProbeOf, const char*> PROBE_OF = {{ProbeOf::Position, "position"},
                                                  {ProbeOf::Velocity, "velocity"},
                                                  {ProbeOf::Displacement, "displacement"},
@@ -626,6 +629,7 @@ bool Surface::operator==(const Surface& o) const {
 const char* shapeName(ShapeKind kind) { return SHAPES.at(kind); }
 const char* jointName(JointKind kind) { return JOINTS.at(kind); }
 const char* measureName(MeasureKind kind) { return MEASURES.at(kind); }
+const char* ghostLawName(GhostLaw law) { return GHOST_LAWS.at(law); }
 
 const Surface& World::surfaceBetween(int geom1, int geom2) const {
   if (geom1 > geom2) std::swap(geom1, geom2);
@@ -751,6 +755,15 @@ World worldFromParsed(JsonValue root) {
       Reader::fail("bodies[" + std::to_string(b) + "]",
                    "has no geom: every body needs one (a body held only by a joint can carry a small sphere that collides "
                    "with nothing, \"collide\": 0)");
+  // Last: whether the law fits asks of the bodies, geoms, joints, surfaces and events.
+  if (const JsonValue ghost = r.object("ghost")) {
+    Reader g(ghost, "ghost");
+    w.ghost.on = true;
+    w.ghost.body = g.integer("body", -1, 0, bodyCount - 1, true);
+    w.ghost.law = named(GHOST_LAWS, g.text("law", "", true), g.at("law"));
+    const GhostRefusal refusal = ghostRefusal(w);
+    if (!refusal.field.empty()) Reader::fail(g.at(refusal.field.c_str()), refusal.reason);
+  }
   return w;
 }
 
@@ -956,6 +969,8 @@ std::string worldToJson(const World& world) {
     }
     root["events"] = events;
   }
+  if (world.ghost.on && bodyRef(world.ghost.body) >= 0)
+    root["ghost"] = {{"body", bodyRef(world.ghost.body)}, {"law", ghostLawName(world.ghost.law)}};
   // 17 significant digits: every double comes back as the same double.
   return root.dump(1) + "\n";
 }
