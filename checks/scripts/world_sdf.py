@@ -25,7 +25,7 @@ refused with status 2 saying why; its notes are printed once each.
 same ODE state_hash as the SDF file itself after 2 s (but box_on_slope.sdf,
 whose turned static slope ODE holds as a matrix: see NOT_BIT_FOR_BIT).
 And the refusals, each status 2 before anything runs, naming what was wrong
-and the path: a file SDFormat refuses (not well-formed), a mesh collision,
+and the path: a file SDFormat refuses (not well-formed: its line), a mesh collision,
 a negative mass, a damped hinge.
 Usage: world_sdf.py ODELAB EXAMPLES_DIR CHECK_DIR ENGINES SKIPPED
 (ENGINES, SKIPPED: the engines here and those missing, ';'-separated)
@@ -299,9 +299,10 @@ def engines(odelab, examples, here, skipped):
 
 
 def refusals(odelab, checks):
-    for name, needle in [("broken.sdf", "SDFormat refused it"),
+    for name, needle in [("broken.sdf", "SDFormat refused it: Unable to read file"),
+                         ("broken.sdf", "Line number=5: XMLElement name=model"),
                          ("mesh.sdf", "collision 'shell' of link 'statue::body' is a <mesh>"),
-                         ("negative_mass.sdf", "weightless"),
+                         ("negative_mass.sdf", "A link named weightless has invalid inertia"),
                          ("damped_hinge.sdf", "joint 'arm::elbow' has damping 0.5")]:
         source = os.path.join(checks, name)
         done = run(odelab, "--world", source, "--headless", "--seconds", "0.01")

@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -467,15 +468,53 @@ class Translation {
   int selfBits_ = 0;  // category bits given to models without <self_collide>
 };
 
+// SDFormat's console, made once: on its making it opens a log file under
+// $HOME/.sdformat, which a program that writes only the files it is asked
+// for must not do; with HOME at a folder that cannot exist it logs nothing.
+// Its messages (an XML parse error's line, which its Errors do not carry)
+// go to `messages` rather than to stderr, for the refusal to quote.
+std::ostringstream& sdformatMessages() {
+  static std::ostringstream messages;
+  static const bool made = [] {
+    const char* home = std::getenv("HOME");
+    const std::string saved = home ? home : "";
+    setenv("HOME", "/nonexistent/odelab-no-sdformat-log", 1);
+    sdf::Console::Instance()->GetMsgStream().SetStream(&messages);
+    if (home) setenv("HOME", saved.c_str(), 1); else unsetenv("HOME");
+    return true;
+  }();
+  (void)made;
+  return messages;
+}
+
+// SDFormat's console text, its colour codes and line breaks taken out.
+std::string plain(const std::string& text) {
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\x1b') {
+      while (i < text.size() && text[i] != 'm') ++i;
+      continue;
+    }
+    const char c = text[i] == '\n' || text[i] == '\r' ? ' ' : text[i];
+    if (!(c == ' ' && !out.empty() && out.back() == ' ')) out += c;
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
 }  // namespace
 
 World worldFromSdf(const std::string& path) {
-  // SDFormat prints its errors too; they come back in `errors`, and the
-  // refusal names them once.
-  sdf::Console::Instance()->SetQuiet(true);
+  std::ostringstream& messages = sdformatMessages();
+  messages.str("");
   sdf::Root root;
   const sdf::Errors errors = root.Load(path);
-  if (!errors.empty()) throw WorldFileError(path + ": SDFormat refused it: " + errors[0].Message());
+  if (!errors.empty()) {
+    std::string said;
+    for (const sdf::Error& error : errors) said += (said.empty() ? "" : "; ") + error.Message();
+    const std::string console = plain(messages.str());
+    throw WorldFileError(path + ": SDFormat refused it: " + said + (console.empty() ? "" : " (" + console + ")"));
+  }
   if (root.WorldCount() != 1)
     throw WorldFileError(path + ": SDF: " + std::to_string(root.WorldCount()) +
                          " <world>s: this reader takes a file of one <world> (doc/world-format.md, \"SDF\")");
