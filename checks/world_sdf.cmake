@@ -4,7 +4,9 @@
 # rest at its radius within 1 mm, the cube's slide by the pair's smaller
 # friction within 3%, the pendulum's period within 1% and its <limit> on the
 # side SDF puts it), a model's links kept apart without <self_collide>
-# (checks/worlds/sdf/stacked_links.sdf), each example run on every engine
+# (checks/worlds/sdf/stacked_links.sdf), every joint kind and shape in a
+# turned model exported to the SDF's figures (joints_and_shapes.sdf), each
+# example run on every engine
 # here or refused with status 2 saying why, --export-world ending on the
 # SDF's own state_hash, and the refusals (a file SDFormat refuses, a mesh, a
 # negative mass, a damped hinge) each status 2 naming what was wrong.

@@ -16,6 +16,8 @@ rule), and a run on ODE must show the physics the SDF states:
   (written into a copy) of [-0.01, 1] rad it is held where gravity pulls it
   back (it never swings), [-1, 0.01] rad does not hold it: SDF's joint
   position and ODE's hinge angle grow the same way.
+Every joint kind and shape the reader takes, in a turned model
+(checks/worlds/sdf/joints_and_shapes.sdf), exports to the SDF's figures.
 A model of two unjoined links (checks/worlds/sdf/stacked_links.sdf): without
 <self_collide> the upper cube falls through the lower to the plane (centre
 at 0.1 m within 1 mm), with it the upper rests on the lower (0.3 m).
@@ -253,6 +255,40 @@ def stacked(odelab, checks, folder):
                % (self_collide, metric(metrics, "upper_value"), height))
 
 
+def kinds(odelab, checks, folder):
+    """Every joint and shape, in a model turned 90 degrees about z at (1, 0, 2):
+    the model's x is the world's y, y-up's -z; its y the world's -x."""
+    source = os.path.join(checks, "joints_and_shapes.sdf")
+    _, world = export(odelab, source, folder)
+    counts(world, 4, 4, 4, source)
+    h = math.sqrt(0.5)
+    bodies = world["bodies"]
+    for body, where in zip(bodies, [[1, 0, 2], [1, 0, 1.5], [1, 0, 1], [1, 0.5, 2]]):
+        close(body["position"], y_up(where), "rig body position")
+        close(body["orientation"], [h, 0, h, 0], "rig body orientation: 90 degrees about z is about y here")
+    close(bodies[0]["inertia"], [0.1, 0.3, 0.2, 0, 0, 0], "carriage inertia, relabelled as the world is")
+    expect(bodies[1].get("gravity") is False and bodies[0].get("gravity", True) is True, "drum <gravity>false</gravity>")
+    shapes = [(g["shape"], g["body"], g.get("radius"), g.get("length")) for g in world["geoms"]]
+    expect(shapes == [("capsule", 0, 0.05, 0.3), ("cylinder", 1, 0.1, 0.2), ("sphere", 2, 0.001, None), ("sphere", 3, 0.05, None)],
+           "rig geoms %s" % shapes)
+    drum, marker = world["geoms"][1], world["geoms"][2]
+    expect(drum.get("category") == 3 and drum.get("collide") == 3, "drum collide_bitmask 0x03: %s" % drum)
+    expect(marker.get("category") == 0 and marker.get("collide") == 0, "the weight (no collision) carries a sphere that touches nothing")
+    close(drum["orientation"], [h, -h, 0, 0], "cylinder's z, along the link's z, is the body's y here")
+    joints = {j["type"]: j for j in world["joints"]}
+    expect(sorted(joints) == ["ball", "fixed", "hinge", "slider"], "rig joints %s" % sorted(joints))
+    if len(joints) == 4:
+        rail, swivel, axle, weld = joints["slider"], joints["ball"], joints["hinge"], joints["fixed"]
+        close(rail["axis"], y_up([0, 1, 0]), "prismatic axis: the model's x")
+        close([rail["low_stop"], rail["high_stop"]], [-0.2, 0.3], "prismatic limits")
+        expect((rail["body1"], rail["body2"]) == (0, -1), "prismatic: the carriage on the world")
+        close(swivel["anchor"], y_up([1, 0, 2]), "ball anchor: its pose in the drum's frame")
+        expect((swivel["body1"], swivel["body2"]) == (1, 0), "ball: the drum on the carriage")
+        close(axle["axis"], y_up([-1, 0, 0]), "continuous axis: the model's y")
+        expect("low_stop" not in axle and "high_stop" not in axle, "continuous: no stops")
+        expect((weld["body1"], weld["body2"]) == (2, 1), "fixed: the weight on the drum")
+
+
 def hash_of(metrics):
     return metric(metrics, "state_hash")
 
@@ -321,7 +357,7 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         # A part whose run wrote nothing fails alone; the others still run.
         for part, source in [(ball, examples), (slope, examples), (pendulum, examples), (stacked, checks),
-                             (round_trip, examples)]:
+                             (kinds, checks), (round_trip, examples)]:
             try:
                 part(odelab, source, folder)
             except (OSError, ValueError, KeyError, IndexError, TypeError) as error:
