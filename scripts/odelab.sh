@@ -24,8 +24,9 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 # jsonschema for the check of doc/world.schema.json.
 # The peer engines (peers/, doc/peers.md): Bullet and MuJoCo (whose CMake
 # package needs qhull); SDFormat for SDF world files (doc/world-format.md,
-# "SDF"). The lab on a cluster (doc/cluster.md): Dask, and Slurm with munge for the single-node check (the check starts and stops
-# the daemons itself). debootstrap for the check that runs `run` in a fresh
+# "SDF"). The lab on a cluster (doc/cluster.md): Dask, and Slurm with
+# munge for the single-node check (the check starts and stops the daemons
+# itself). debootstrap for the check that runs `run` in a fresh
 # Debian root (checks/fresh.cmake).
 packages=(
   g++ make cmake pkg-config
