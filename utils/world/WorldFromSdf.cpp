@@ -105,8 +105,7 @@ struct Placed {
 
 class Translation {
  public:
-  Translation(const sdf::World& world, const sdf::ElementPtr& root, std::string path)
-      : sdf_(world), root_(root), path_(std::move(path)) {}
+  Translation(const sdf::World& world, std::string path) : sdf_(world), path_(std::move(path)) {}
 
   World run() {
     refuseWholeWorldParts();
@@ -175,6 +174,8 @@ class Translation {
     if (model.ModelCount() > 0) refuse(name + " has nested <model>s: this reader takes one level of models");
     if (model.InterfaceModelCount() > 0) refuse(name + " includes a model through a custom parser");
     if (has(model.Element(), "plugin")) note("<plugin>s not carried: nothing drives the joints or links");
+    if (!model.Static() && model.AllowAutoDisable())
+      note("<allow_auto_disable> not carried: no body is put to sleep (Gazebo's thresholds are its own)");
     Pose placed;
     const sdf::Errors errors = model.SemanticPose().Resolve(placed);
     if (!errors.empty()) refuse(name + "'s pose: " + errors[0].Message());
@@ -459,7 +460,6 @@ class Translation {
   }
 
   const sdf::World& sdf_;
-  sdf::ElementPtr root_;
   std::string path_;
   World world_;
   std::map<std::string, Pose> placements_;  // per model name: its pose in the world
@@ -518,7 +518,7 @@ World worldFromSdf(const std::string& path) {
   if (root.WorldCount() != 1)
     throw WorldFileError(path + ": SDF: " + std::to_string(root.WorldCount()) +
                          " <world>s: this reader takes a file of one <world> (doc/world-format.md, \"SDF\")");
-  World world = Translation(*root.WorldByIndex(0), root.Element(), path).run();
+  World world = Translation(*root.WorldByIndex(0), path).run();
   // Through this format's own reader: its ranges and physics checks
   // (positive-definite inertia, unit normals) hold the translation too.
   const std::vector<std::string> notes = world.notes;
