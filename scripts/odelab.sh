@@ -23,9 +23,10 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 # report (lab/odelab-report) Debian's Python with matplotlib and tqdm, and
 # jsonschema for the check of doc/world.schema.json.
 # The peer engines (peers/, doc/peers.md): Bullet and MuJoCo (whose CMake
-# package needs qhull). The lab on a cluster (doc/cluster.md): Dask, and
-# Slurm with munge for the single-node check (the check starts and stops
-# the daemons itself). debootstrap for the check that runs `run` in a fresh
+# package needs qhull); SDFormat for SDF world files (doc/world-format.md,
+# "SDF"). The lab on a cluster (doc/cluster.md): Dask, and Slurm with
+# munge for the single-node check (the check starts and stops the daemons
+# itself). debootstrap for the check that runs `run` in a fresh
 # Debian root (checks/fresh.cmake).
 packages=(
   g++ make cmake pkg-config
@@ -34,7 +35,7 @@ packages=(
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
   python3 python3-matplotlib python3-tqdm python3-jsonschema
-  libbullet-dev libmujoco-dev libqhull-dev
+  libbullet-dev libmujoco-dev libqhull-dev libsdformat-dev
   python3-distributed munge slurmctld slurmd slurm-client
   debootstrap
 )

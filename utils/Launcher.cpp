@@ -29,7 +29,8 @@ constexpr const char* USAGE =
     "       odelab --list\n"
     "       odelab --scene NAME [the options of NAME's program; odelab --scene NAME --help lists them]\n"
     "       odelab --world FILE [options]  a world file (doc/world-format.md; testN --export-world writes one),\n"
-    "                                      or a MuJoCo MJCF model (FILE.xml), translated to one\n"
+    "                                      or a MuJoCo MJCF model (FILE.xml) or an SDF world (FILE.sdf),\n"
+    "                                      translated to one\n"
     "In the window, every scene shown reports in --metrics-json as visit<N>.<scene>.<metric> once the\n"
     "window has switched, --record numbers frames over the whole window, and --seconds must be at\n"
     "least one step of every scene.\n";

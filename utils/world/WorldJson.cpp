@@ -18,6 +18,7 @@
 #include "JsonLines.h"
 #include "SafeFile.h"
 #include "WorldFromMjcf.h"
+#include "WorldFromSdf.h"
 #include "WorldSettings.h"
 
 namespace odelab::world {
@@ -983,6 +984,7 @@ World readWorldFile(const std::string& path) {
   } catch (const ReadRefused& error) {
     throw WorldFileError(error.what());
   }
+  if (looksLikeSdf(path, text)) return worldFromSdf(path);
   if (looksLikeMjcf(path, text)) return worldFromMjcf(path);
   try {
     return worldFromJson(text);
