@@ -48,11 +48,13 @@ endif()
 # The engines' side of the protocol (peers/wasm/src/session.js), which the
 # Node.js server and the page share: replies, an error told in the next
 # reply, a number that is not finite sent as null, quit (node's test runner);
-# and 100 sessions per engine on one module, each freeing its world at quit.
+# 100 sessions per engine on one module, each freeing its world at quit; and
+# an engine's step time that holds none of the clock's own CPU reading.
 if("rapier" IN_LIST ODELAB_CHECK_ENGINES)
   add_test(NAME engine_protocol_session
            COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/session.test.js
-                   ${CMAKE_SOURCE_DIR}/peers/wasm/test/sessions_free_their_worlds.test.js)
+                   ${CMAKE_SOURCE_DIR}/peers/wasm/test/sessions_free_their_worlds.test.js
+                   ${CMAKE_SOURCE_DIR}/peers/wasm/test/step_clock.test.js)
   set_tests_properties(engine_protocol_session PROPERTIES LABELS engines TIMEOUT 300)
 endif()
 # The PhysX adapter on cases with a known answer (peers/wasm/test/physx.test.js):
