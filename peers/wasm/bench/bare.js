@@ -5,7 +5,7 @@
 // lab's adapter code around it (no session, no protocol, no world model, no
 // material planning, no contact callbacks, no step clock).
 //
-//   node peers/wasm/bench/bare.js ENGINE WORLD.json [--steps N] [--repeats R]
+//   node peers/wasm/bench/bare.js ENGINE WORLD.json [--steps N] [--repeats R] [--states]
 //
 // ENGINE: havok, jolt or rapier. It builds the world with the engine's own
 // JS API, then times STEPS steps (default 2000), each one the engine's own
@@ -15,7 +15,10 @@
 // (what an adapter has to do too). Each repeat builds the world afresh.
 // It prints one JSON line: engine, world, steps, repeats, bodies,
 // step_seconds (median per step over the repeats, with min and max) and
-// loop_seconds (the whole loop, reads and drops included, per step).
+// loop_seconds (the whole loop, reads and drops included, per step);
+// with --states, `states`: each body's last position and orientation
+// ([x, y, z, w, qx, qy, qz], null for one not yet dropped in), to hold
+// the harness's world against the adapter's (odelab_engine_step).
 //
 // Only what test1, test2 and test5 need is built: spheres, boxes and a
 // y-up plane; ball and hinge joints to the static world or another body;
@@ -51,18 +54,20 @@ const ALL_BITS = 0xffffffff;
 class Refused extends Error {}
 
 function usage() {
-  return 'usage: node bare.js havok|jolt|rapier WORLD.json [--steps N] [--repeats R]';
+  return 'usage: node bare.js havok|jolt|rapier WORLD.json [--steps N] [--repeats R] [--states]';
 }
 
 function parseArgs(argv) {
   const positional = [];
-  const options = { steps: 2000, repeats: 5 };
+  const options = { steps: 2000, repeats: 5, states: false };
   for (let i = 0; i < argv.length; ++i) {
     const a = argv[i];
     if (a === '--steps' || a === '--repeats') {
       const v = Number(argv[++i]);
       if (!Number.isInteger(v) || v < 1) throw new Refused(`${a}: a whole number >= 1, got ${JSON.stringify(argv[i])}`);
       options[a.slice(2)] = v;
+    } else if (a === '--states') {
+      options.states = true;
     } else if (a.startsWith('--')) {
       throw new Refused(`unknown option ${a}`);
     } else {
@@ -451,7 +456,8 @@ function run(makeWorld, w, steps) {
   const loop = Number(process.hrtime.bigint() - start) / 1e9;
   for (const x of out) if (!Number.isFinite(x)) throw new Error('a body\'s state is not finite: the world blew up');
   sim.free();
-  return { step: Number(stepped) / 1e9 / steps, loop: loop / steps, bodies: live.length };
+  const states = w.bodies.map((b, i) => (live.includes(i) ? Array.from(out.subarray(7 * i, 7 * i + 7)) : null));
+  return { step: Number(stepped) / 1e9 / steps, loop: loop / steps, bodies: live.length, states };
 }
 
 async function main() {
@@ -473,6 +479,7 @@ async function main() {
     engine: options.engine, world: path.basename(options.world), steps: options.steps, repeats: options.repeats,
     bodies: results[0].bodies, step_seconds: median(steps), step_seconds_min: Math.min(...steps),
     step_seconds_max: Math.max(...steps), loop_seconds: median(results.map((x) => x.loop)),
+    ...(options.states ? { states: results[results.length - 1].states } : {}),
   })}\n`);
   return 0;
 }
