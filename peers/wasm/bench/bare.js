@@ -5,7 +5,7 @@
 // lab's adapter code around it (no session, no protocol, no world model, no
 // material planning, no contact callbacks, no step clock).
 //
-//   node peers/wasm/bench/bare.js ENGINE WORLD.json [--steps N] [--repeats R] [--states]
+//   node peers/wasm/bench/bare.js ENGINE WORLD.json [--steps N] [--repeats R] [--warmup W] [--states]
 //
 // ENGINE: havok, jolt or rapier. It builds the world with the engine's own
 // JS API, then times STEPS steps (default 2000), each one the engine's own
@@ -13,8 +13,15 @@
 // and after each step reads every dynamic body's position and orientation
 // into one preallocated array, the cheapest per-body read each API offers
 // (what an adapter has to do too). Each repeat builds the world afresh.
+// W warm-up repeats (default 1) run first, untimed but for the first one:
+// V8 runs a WebAssembly module's code first from its baseline compiler and
+// swaps in optimised code while it runs, so a fresh process's first
+// thousands of steps are slower (measured: several times slower for Rapier
+// on a loaded machine), and the floor is the engine's steady state.
 // It prints one JSON line: engine, world, steps, repeats, bodies,
-// step_seconds (median per step over the repeats, with min and max) and
+// cold_step_seconds (the first warm-up's per step: what a fresh process
+// gets, as an adapter's run does), step_seconds (median per step over the
+// timed repeats, with min and max) and
 // loop_seconds (the whole loop, reads and drops included, per step);
 // with --states, `states`: each body's last position and orientation
 // ([x, y, z, w, qx, qy, qz], null for one not yet dropped in), to hold
@@ -54,17 +61,18 @@ const ALL_BITS = 0xffffffff;
 class Refused extends Error {}
 
 function usage() {
-  return 'usage: node bare.js havok|jolt|rapier WORLD.json [--steps N] [--repeats R] [--states]';
+  return 'usage: node bare.js havok|jolt|rapier WORLD.json [--steps N] [--repeats R] [--warmup W] [--states]';
 }
 
 function parseArgs(argv) {
   const positional = [];
-  const options = { steps: 2000, repeats: 5, states: false };
+  const options = { steps: 2000, repeats: 5, warmup: 1, states: false };
   for (let i = 0; i < argv.length; ++i) {
     const a = argv[i];
-    if (a === '--steps' || a === '--repeats') {
+    if (a === '--steps' || a === '--repeats' || a === '--warmup') {
       const v = Number(argv[++i]);
-      if (!Number.isInteger(v) || v < 1) throw new Refused(`${a}: a whole number >= 1, got ${JSON.stringify(argv[i])}`);
+      const least = a === '--warmup' ? 0 : 1;
+      if (!Number.isInteger(v) || v < least) throw new Refused(`${a}: a whole number >= ${least}, got ${JSON.stringify(argv[i])}`);
       options[a.slice(2)] = v;
     } else if (a === '--states') {
       options.states = true;
@@ -471,13 +479,15 @@ async function main() {
     return 2;
   }
   const makeWorld = await { havok, jolt, rapier }[options.engine]();
+  const warm = [];
+  for (let r = 0; r < options.warmup; ++r) warm.push(run(makeWorld, w, options.steps));
   const results = [];
   for (let r = 0; r < options.repeats; ++r) results.push(run(makeWorld, w, options.steps));
   const median = (xs) => { const s = [...xs].sort((a, b) => a - b); const k = s.length >> 1; return s.length % 2 ? s[k] : (s[k - 1] + s[k]) / 2; };
   const steps = results.map((x) => x.step);
   process.stdout.write(`${JSON.stringify({
     engine: options.engine, world: path.basename(options.world), steps: options.steps, repeats: options.repeats,
-    bodies: results[0].bodies, step_seconds: median(steps), step_seconds_min: Math.min(...steps),
+    warmup: options.warmup, bodies: results[0].bodies, cold_step_seconds: warm.length ? warm[0].step : null, step_seconds: median(steps), step_seconds_min: Math.min(...steps),
     step_seconds_max: Math.max(...steps), loop_seconds: median(results.map((x) => x.loop)),
     ...(options.states ? { states: results[results.length - 1].states } : {}),
   })}\n`);
