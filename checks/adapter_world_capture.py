@@ -20,7 +20,11 @@ import os
 import shutil
 import stat
 import subprocess
+import sys
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "lab"))
+from odelab_report import files  # noqa: E402
 
 REPLAYABLE = {"build", "add", "step", "quit", "reset"}
 
@@ -31,7 +35,7 @@ def tee_node(folder, log):
     if not node:
         raise RuntimeError("node is not on PATH: the Node.js engines cannot run")
     wrapper = Path(folder) / "tee-node.sh"
-    wrapper.write_text(f'#!/bin/sh\ntee "{log}" | "{node}" "$@"\n')
+    files.write_atomically(wrapper, f'#!/bin/sh\ntee "{log}" | "{node}" "$@"\n')
     wrapper.chmod(wrapper.stat().st_mode | stat.S_IXUSR)
     return str(wrapper)
 
