@@ -48,12 +48,20 @@ endif()
 # The engines' side of the protocol (peers/wasm/src/session.js), which the
 # Node.js server and the page share: replies, an error told in the next
 # reply, a number that is not finite sent as null, quit (node's test runner);
-# and 100 sessions per engine on one module, each freeing its world at quit.
+# 100 sessions per engine on one module, each freeing its world at quit; and
+# an engine's step time that holds none of the clock's own CPU reading.
 if("rapier" IN_LIST ODELAB_CHECK_ENGINES)
   add_test(NAME engine_protocol_session
            COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/session.test.js
-                   ${CMAKE_SOURCE_DIR}/peers/wasm/test/sessions_free_their_worlds.test.js)
+                   ${CMAKE_SOURCE_DIR}/peers/wasm/test/sessions_free_their_worlds.test.js
+                   ${CMAKE_SOURCE_DIR}/peers/wasm/test/step_clock.test.js)
   set_tests_properties(engine_protocol_session PROPERTIES LABELS engines TIMEOUT 300)
+  # The bare harness (peers/wasm/bench/bare.js, the floor of
+  # bench_engine_overhead.py) builds the adapter's world: its bodies end
+  # where the Rapier adapter's do; what it cannot build it refuses, named.
+  add_test(NAME engine_bare_harness_same_world
+           COMMAND ${ODELAB_NODE} --test ${CMAKE_SOURCE_DIR}/peers/wasm/test/bare_harness.test.js)
+  set_tests_properties(engine_bare_harness_same_world PROPERTIES LABELS engines TIMEOUT 300)
 endif()
 # The PhysX adapter on cases with a known answer (peers/wasm/test/physx.test.js):
 # a dropped ball's fall against 1/2 g t^2, a hinged pendulum's energy, a
