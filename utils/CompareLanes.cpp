@@ -115,7 +115,7 @@ std::vector<std::string> CompareLanes::label(const Lane& lane) const {
   const AbstractWindow& scene = *lane.scene;
   std::string first = lane.engine + (lane.version.empty() ? "" : " " + lane.version);
   if (&lane == &lanes_.front()) {
-    first += " (the reference)";
+    first += " (the scene's own settings)";
   } else {
     first += scene.engine().setting() == world::EngineSetting::Best ? " best" : " default";
     const size_t notes = scene.engine().translationNotes().size();

@@ -148,7 +148,7 @@ struct SceneCommandLine {
                  "print every engine --engine takes: whether it is here, its version and precision, what its best "
                  "settings change, and how to install a missing one; then exit");
     app.add_option("--engine", options.engine,
-                   "the engine that steps the scene: ode (the reference), bullet, mujoco, havok, jolt, rapier or physx; the "
+                   "the engine that steps the scene: ode (the default), bullet, mujoco, havok, jolt, rapier or physx; the "
                    "scene's own code measures it (doc/peers.md)")
         ->capture_default_str();
     app.add_option("--engine-setting", engineSetting,

@@ -4,7 +4,7 @@
   engine_metrics.py ENGINE PROGRAM ARGS...
 
 Runs `PROGRAM --headless ARGS... --metrics-json m.json` twice, each in a fresh
-folder of its own under the working folder: once on ode (the reference) and
+folder of its own under the working folder: once on ode and
 once with `--engine ENGINE` (its default setting). The engine's run must:
   - end with status 0;
   - report the same metric names as the ODE run, plus only those an engine
