@@ -1,10 +1,6 @@
 #include "JsonDocument.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <clocale>
-#include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <limits>
 
