@@ -27,7 +27,7 @@
 // ([x, y, z, w, qx, qy, qz], null for one not yet dropped in), to hold
 // the harness's world against the adapter's (odelab_engine_step).
 //
-// Only what test1, test2 and test5 need is built: spheres, boxes and a
+// Only what the benchmarked worlds need is built (checks/bench_engine_overhead.py): spheres, boxes and a
 // y-up plane; ball and hinge joints to the static world or another body;
 // diagonal inertia; "drop" events (a body appears at its time). Anything
 // else is refused, naming it, before an engine is loaded (status 2).
