@@ -53,6 +53,7 @@
 //   shifted so that its origin is the world's centre of mass.
 const fs = require('fs');
 const path = require('path');
+const { STATIC, MOVING, joltInterface } = require('../src/engines/jolt_interface');
 
 const LARGEST_FRICTION = 1e6;
 const PLANE_SIDE = 1000, PLANE_DEPTH = 10;
@@ -334,19 +335,7 @@ async function jolt() {
   const { default: init } = await import('jolt-physics/wasm-compat');
   const J = await init();
   return (w) => {
-    const STATIC = 0, MOVING = 1;
-    const settings = new J.JoltSettings();
-    const pairs = new J.ObjectLayerPairFilterTable(2);
-    pairs.EnableCollision(STATIC, MOVING);
-    pairs.EnableCollision(MOVING, MOVING);
-    const layers = new J.BroadPhaseLayerInterfaceTable(2, 2);
-    layers.MapObjectToBroadPhaseLayer(STATIC, new J.BroadPhaseLayer(0));
-    layers.MapObjectToBroadPhaseLayer(MOVING, new J.BroadPhaseLayer(1));
-    settings.mObjectLayerPairFilter = pairs;
-    settings.mBroadPhaseLayerInterface = layers;
-    settings.mObjectVsBroadPhaseLayerFilter = new J.ObjectVsBroadPhaseLayerFilterTable(layers, 2, pairs, 2);
-    const iface = new J.JoltInterface(settings);
-    J.destroy(settings);
+    const iface = joltInterface(J);
     const system = iface.GetPhysicsSystem();
     const bi = system.GetBodyInterface();
     system.SetGravity(new J.Vec3(...w.gravity));

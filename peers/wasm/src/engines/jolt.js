@@ -28,6 +28,7 @@ const { World } = require('./world');
 const { Notes, fmt } = require('./notes');
 const m = require('./math');
 const { commonNotes, frictionValue } = require('./translate');
+const { STATIC, MOVING, joltInterface } = require('./jolt_interface');
 
 const PACKAGE = 'jolt-physics';
 const NO_SPEED_LIMIT = 1e9;
@@ -35,7 +36,6 @@ const CONVEX_RADIUS = 0.05;  // Jolt's default
 const BEST_VELOCITY_STEPS = 50, BEST_POSITION_STEPS = 10;
 const LARGEST_FRICTION = 1e6;
 const PLANE_HALF_EXTENT = 1000;
-const STATIC = 0, MOVING = 1;  // object layers
 
 class JoltEngine {
   constructor(J, best) {
@@ -71,18 +71,7 @@ class JoltEngine {
     const J = this.J;
     for (const r of removed) this.removedSet.add(r);
     this.world = new World(json, [...this.removedSet]);
-    const settings = new J.JoltSettings();
-    const pairs = new J.ObjectLayerPairFilterTable(2);
-    pairs.EnableCollision(STATIC, MOVING);
-    pairs.EnableCollision(MOVING, MOVING);
-    const layers = new J.BroadPhaseLayerInterfaceTable(2, 2);
-    layers.MapObjectToBroadPhaseLayer(STATIC, new J.BroadPhaseLayer(0));
-    layers.MapObjectToBroadPhaseLayer(MOVING, new J.BroadPhaseLayer(1));
-    settings.mObjectLayerPairFilter = pairs;
-    settings.mBroadPhaseLayerInterface = layers;
-    settings.mObjectVsBroadPhaseLayerFilter = new J.ObjectVsBroadPhaseLayerFilterTable(layers, 2, pairs, 2);
-    this.jolt = new J.JoltInterface(settings);
-    J.destroy(settings);
+    this.jolt = joltInterface(J);
     this.system = this.jolt.GetPhysicsSystem();
     this.bi = this.system.GetBodyInterface();
     this.installListener();
